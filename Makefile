@@ -1,0 +1,60 @@
+# loft: make builds bin/ and libloft.a; make check runs every test;
+# make demo fits the bundled insole; make install PREFIX=... installs.
+
+CC      = cc
+CFLAGS  = -O2 -g
+LOFT_CFLAGS = -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Ilib
+LDLIBS  = -lm
+PREFIX  = /usr/local
+DESTDIR =
+
+PROGS   = splinefit sample
+LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
+          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o
+BINS    = bin/splinefit bin/sample
+TESTS   = bin/test/unit bin/test/paper
+LIB     = bin/libloft.a
+MAN1    = man/splinefit.1 man/sample.1
+MAN5    = man/loft.5
+
+all: $(BINS) $(LIB)
+
+bin/obj/.dir bin/test/.dir:
+	mkdir -p $(@D) && touch $@
+
+bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+$(LIB): $(LIBOBJ)
+	rm -f $@
+	ar rcs $@ $(LIBOBJ)
+
+bin/%: cmd/%.c $(LIB) lib/loft.h
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+check: all $(TESTS)
+	@sh tests/run.sh
+
+demo: all
+	bin/splinefit man/figures/insole.knots | bin/sample -n 20 > bin/insole.pts
+	@echo "demo: wrote bin/insole.pts ($$(grep -c . bin/insole.pts) points" \
+	    "on the curve through the 22 knots of man/figures/insole.knots)"
+
+install: all
+	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
+	    $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/share/man/man1 \
+	    $(DESTDIR)$(PREFIX)/share/man/man5
+	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
+	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
+	cp lib/loft.h $(DESTDIR)$(PREFIX)/include/
+	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
+	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
+
+clean:
+	rm -rf bin
+
+.PHONY: all check demo install clean
+.SECONDARY:

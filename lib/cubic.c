@@ -1,0 +1,77 @@
+/*
+ * cubic.c: one parametric cubic segment and its intrinsic properties
+ * (Manning 1973, sections 2 and 4).
+ */
+#include "internal.h"
+
+/*
+ * Eq. 7:
+ *   P(u) = P_A + u P'_A + u^2 (3(P_B - P_A) - 2P'_A - P'_B)
+ *              + u^3 (P'_A + P'_B - 2(P_B - P_A)),
+ * evaluated as R0 + u(R1 + u(R2 + u R3)) with the R_k of eq. 6.
+ */
+void
+loft_cubic_eval(const double *seg, int dim, double u,
+    double *p, double *d1, double *d2)
+{
+	const double *pa = seg, *pb = seg + dim, *ta = seg + 2 * dim,
+	    *tb = seg + 3 * dim;
+
+	for (int k = 0; k < dim; k++) {
+		double c = pb[k] - pa[k];
+		double r2 = 3 * c - 2 * ta[k] - tb[k];
+		double r3 = ta[k] + tb[k] - 2 * c;
+
+		if (p != NULL)
+			p[k] = pa[k] + u * (ta[k] + u * (r2 + u * r3));
+		if (d1 != NULL)
+			d1[k] = ta[k] + u * (2 * r2 + u * 3 * r3);
+		if (d2 != NULL)
+			d2[k] = 2 * r2 + 6 * u * r3;
+	}
+}
+
+/*
+ * Eq. 2: d2P/ds2 = P''/(P'.P') - (P'.P'') P' / (P'.P')^2.
+ */
+int
+loft_curvature_vector(const double *d1, const double *d2, int dim, double *kn)
+{
+	double dd = vdot(d1, d1, dim), dq = vdot(d1, d2, dim);
+
+	if (!(dd > 0))
+		return LOFT_EGEOM;
+	for (int k = 0; k < dim; k++)
+		kn[k] = (d2[k] - dq / dd * d1[k]) / dd;
+	return 0;
+}
+
+/*
+ * Eq. 9, with cos(theta_A) = T_A . c/|c| and cos(theta_B) = T_B . c/|c|:
+ *   |P'_A| = 2W / (1 + alpha cos(theta_B) + (1 - alpha) cos(theta_A))
+ *   |P'_B| = 2W / (1 + alpha cos(theta_A) + (1 - alpha) cos(theta_B))
+ * Eq. 11 is this with alpha = 2/3, P'_A = r_i T_i and P'_B = l_{i+1} T_{i+1}.
+ * A denominator below NORMALISE_MIN means both tangents turn back along
+ * the chord (theta near 180 degrees at both ends): the magnitude would be
+ * beyond any sensible multiple of the chord.
+ */
+#define NORMALISE_MIN 1e-9
+
+int
+loft_normalise(const double *chord, const double *ta, const double *tb,
+    int dim, double alpha, double *ma, double *mb)
+{
+	double w = vnorm(chord, dim), ca, cb, da, db;
+
+	if (!(w > 0))
+		return LOFT_EGEOM;
+	ca = vdot(ta, chord, dim) / w;
+	cb = vdot(tb, chord, dim) / w;
+	da = 1 + alpha * cb + (1 - alpha) * ca;
+	db = 1 + alpha * ca + (1 - alpha) * cb;
+	if (!(da > NORMALISE_MIN) || !(db > NORMALISE_MIN))
+		return LOFT_EGEOM;
+	*ma = 2 * w / da;
+	*mb = 2 * w / db;
+	return 0;
+}

@@ -1,0 +1,87 @@
+/*
+ * curve.c: curve records of every type behind one interface, so that the
+ * programs that evaluate curves (sample, and later plot) learn a new type
+ * in one place: a row in the table below.
+ */
+#include <string.h>
+
+#include "internal.h"
+
+struct curve_type {
+	const char *name;
+	int rows_per_point;     /* numbers in a row, per coordinate */
+	void (*eval)(const double *piece, int dim, double u,
+	    double *p, double *d1, double *d2);
+};
+
+static const struct curve_type types[] = {
+	{ "cubic", 4, loft_cubic_eval },
+};
+
+/* Parse an optional 0/1 attribute; -1 when it is something else. */
+static int
+flag_attr(const struct loft_record *rec, const char *key)
+{
+	const char *v = loft_attr(rec, key);
+
+	if (v == NULL || strcmp(v, "0") == 0)
+		return 0;
+	return strcmp(v, "1") == 0 ? 1 : -1;
+}
+
+int
+loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
+    struct loft_error *err)
+{
+	const struct curve_type *t = NULL;
+
+	if (rec->type == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "a point record is no "
+		    "curve to evaluate (fit one with splinefit first)");
+	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
+		if (strcmp(rec->type, types[i].name) == 0)
+			t = &types[i];
+	if (t == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1,
+		    "unknown record type '%s'", rec->type);
+	if (rec->nrows == 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "%s record has no rows",
+		    t->name);
+	if (rec->ncols % t->rows_per_point != 0 ||
+	    rec->ncols / t->rows_per_point < 2 ||
+	    rec->ncols / t->rows_per_point > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, 0, "%s rows need %d or %d "
+		    "numbers, not %d", t->name, 2 * t->rows_per_point,
+		    3 * t->rows_per_point, rec->ncols);
+	c->type = t->name;
+	c->coef = rec->num;
+	c->npieces = rec->nrows;
+	c->dim = rec->ncols / t->rows_per_point;
+	c->rowlen = rec->ncols;
+	c->eval = t->eval;
+	c->closed = flag_attr(rec, "closed");
+	if (c->closed < 0)
+		return loft_fail(err, LOFT_EINPUT, -1,
+		    "attribute closed=%s: want 0 or 1", loft_attr(rec, "closed"));
+	return 0;
+}
+
+void
+loft_curve_eval(const struct loft_curve *c, size_t i, double u,
+    double *p, double *d1, double *d2)
+{
+	c->eval(c->coef + i * c->rowlen, c->dim, u, p, d1, d2);
+}
+
+int
+loft_curvature(const double *d1, const double *d2, int dim, double *k)
+{
+	double kn[LOFT_MAXDIM];
+
+	if (loft_curvature_vector(d1, d2, dim, kn) != 0)
+		return LOFT_EGEOM;
+	*k = vnorm(kn, dim);
+	if (dim == 2 && d1[0] * d2[1] - d1[1] * d2[0] < 0)
+		*k = -*k;
+	return 0;
+}

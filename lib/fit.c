@@ -1,0 +1,407 @@
+/*
+ * fit.c: a spline through knots, continuous in tangent direction and in
+ * the curvature vector, with normalised tangent magnitudes (Manning 1973,
+ * sections 5, 6 and 9); checks of the knots every method shares.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/*
+ * Knots closer than COINCIDENT_REL times the size of the knot set are one
+ * point: a segment between them has no direction to speak of.  Near the
+ * rounding error of coordinates of that size, and far below any spacing a
+ * designer means.
+ */
+#define COINCIDENT_REL 1e-12
+
+/* Knots that stray less than this, relative to the set's size, from a
+ * line lie on it. */
+#define COLLINEAR_REL 1e-12
+
+void
+loft_fit_defaults(struct loft_fit_opts *o)
+{
+	memset(o, 0, sizeof *o);
+	o->method = LOFT_MANNING;
+	o->sign = LOFT_SIGN_POSITIVE;
+	o->alpha = 2.0 / 3;
+	o->tol = 1e-12;
+	o->maxiter = 1000;
+	o->closed = 1;
+}
+
+/* The largest distance of a knot from p[0]: the size of the set. */
+static double
+knot_extent(const double *p, size_t n, int dim, size_t *far)
+{
+	double big = 0;
+
+	*far = 0;
+	for (size_t i = 1; i < n; i++) {
+		double d = vdist(p + i * dim, p, dim);
+		if (d > big) {
+			big = d;
+			*far = i;
+		}
+	}
+	return big;
+}
+
+static int
+collinear(const double *p, size_t n, int dim, double size, size_t far)
+{
+	double e[LOFT_MAXDIM], v[LOFT_MAXDIM];
+
+	vsub(e, p + far * dim, p, dim);
+	vunit(e, dim);
+	for (size_t i = 1; i < n; i++) {
+		vsub(v, p + i * dim, p, dim);
+		vaxpy(v, -vdot(v, e, dim), e, dim);
+		if (vnorm(v, dim) > COLLINEAR_REL * size)
+			return 0;
+	}
+	return 1;
+}
+
+int
+loft__check_knots(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, struct loft_error *err)
+{
+	size_t need = o->closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN, far;
+	size_t nseg = o->closed ? n : n - 1;
+	double size;
+
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1,
+		    "knots have %d coordinates; 2 or 3 are needed", dim);
+	if (n < need)
+		return loft_fail(err, LOFT_EGEOM, -1,
+		    "%zu knot%s: a%s curve needs at least %zu", n,
+		    n == 1 ? "" : "s", o->closed ? " closed" : "n open", need);
+	size = knot_extent(p, n, dim, &far);
+	for (size_t i = 0; i < nseg; i++) {
+		size_t j = (i + 1) % n;
+
+		if (!(vdist(p + j * dim, p + i * dim, dim) > COINCIDENT_REL *
+		    size))
+			return loft_fail(err, LOFT_EGEOM, (long)j,
+			    "knot %zu coincides with knot %zu%s", j + 1, i + 1,
+			    j == 0 ? " (closing the curve: drop the repeated "
+			    "first knot, or fit with -o)" : "");
+	}
+	if (o->closed && collinear(p, n, dim, size, far))
+		return loft_fail(err, LOFT_EGEOM, -1,
+		    "all knots lie on one line: no closed curve goes through "
+		    "them");
+	return 0;
+}
+
+int
+loft_end_tangent(const double *a, const double *b, const double *c, int dim,
+    double *t, struct loft_error *err)
+{
+	double ab[LOFT_MAXDIM], ac[LOFT_MAXDIM], perp[LOFT_MAXDIM];
+
+	vsub(ab, b, a, dim);
+	vcopy(t, ab, dim);
+	if (c != NULL) {
+		vsub(ac, c, a, dim);
+		vcopy(perp, ac, dim);
+		vaxpy(perp, -vdot(ac, ab, dim) / vdot(ab, ab, dim), ab, dim);
+		if (vnorm(perp, dim) > COLLINEAR_REL * vnorm(ac, dim)) {
+			/* The tangent at a of the circle through a, b, c:
+			 * inversion about a maps the circle to the line
+			 * through the images of b and c, whose direction
+			 * (b-a)/|b-a|^2 - (c-a)/|c-a|^2 the tangent takes. */
+			vscale(t, vdot(ac, ac, dim), ab, dim);
+			vaxpy(t, -vdot(ab, ab, dim), ac, dim);
+		}
+	}
+	if (!(vunit(t, dim) > 0) || !isfinite(t[0]))
+		return loft_fail(err, LOFT_EGEOM, -1,
+		    "cannot estimate an end tangent: knots coincide");
+	return 0;
+}
+
+/* The unit end tangents of an open curve: given, or estimated. */
+int
+loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *t0, double *tn, struct loft_error *err)
+{
+	const double *last = p + (n - 1) * dim;
+
+	if (o->have_start) {
+		vcopy(t0, o->start, dim);
+		if (!(vunit(t0, dim) > 0))
+			return loft_fail(err, LOFT_EGEOM, -1,
+			    "start tangent is zero");
+	} else if (loft_end_tangent(p, p + dim, n > 2 ? p + 2 * dim : NULL,
+	    dim, t0, err) != 0) {
+		return LOFT_EGEOM;
+	}
+	if (o->have_end) {
+		vcopy(tn, o->end, dim);
+		if (!(vunit(tn, dim) > 0))
+			return loft_fail(err, LOFT_EGEOM, -1,
+			    "end tangent is zero");
+	} else {
+		if (loft_end_tangent(last, last - dim, n > 2 ? last - 2 * dim :
+		    NULL, dim, tn, err) != 0)
+			return LOFT_EGEOM;
+		vscale(tn, -1, tn, dim);
+	}
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Manning's method */
+
+struct manning {
+	const double *p;
+	size_t n;               /* knots */
+	size_t nseg;
+	int dim, closed;
+	double alpha;
+	double *t, *tnew;       /* unit tangents, n * dim */
+	double *r, *l;          /* r[i]: |P'| leaving knot i; l[i]: arriving */
+};
+
+static const double *
+knot(const struct manning *m, size_t i)
+{
+	return m->p + (i % m->n) * m->dim;
+}
+
+/* Step 1 of section 6: T_i parallel to P_{i+1} - P_{i-1}; where that
+ * vanishes (the curve doubles back), the sum of the unit chords. */
+static int
+initial_tangents(struct manning *m, struct loft_error *err)
+{
+	int dim = m->dim;
+	size_t lo = m->closed ? 0 : 1, hi = m->closed ? m->n : m->n - 1;
+
+	for (size_t i = lo; i < hi; i++) {
+		double *t = m->t + i * dim, a[LOFT_MAXDIM], b[LOFT_MAXDIM];
+		const double *prev = knot(m, i + m->n - 1), *next = knot(m, i + 1);
+
+		vsub(t, next, prev, dim);
+		if (vunit(t, dim) > 0)
+			continue;
+		vsub(a, knot(m, i), prev, dim);
+		vsub(b, next, knot(m, i), dim);
+		vunit(a, dim);
+		vunit(b, dim);
+		vsub(t, b, a, dim);
+		if (!(vunit(t, dim) > 0))
+			return loft_fail(err, LOFT_EGEOM, (long)i,
+			    "the curve doubles back on itself at knot %zu", i + 1);
+	}
+	return 0;
+}
+
+/* Step 2: the magnitudes l_i and r_i of eq. 11 for every segment. */
+static int
+magnitudes(struct manning *m, struct loft_error *err)
+{
+	int dim = m->dim;
+
+	for (size_t i = 0; i < m->nseg; i++) {
+		size_t j = (i + 1) % m->n;
+		double c[LOFT_MAXDIM];
+
+		vsub(c, knot(m, j), knot(m, i), dim);
+		if (loft_normalise(c, m->t + i * dim, m->t + j * dim, dim,
+		    m->alpha, &m->r[i], &m->l[j]) != 0)
+			return loft_fail(err, LOFT_EGEOM, (long)j,
+			    "tangents at knots %zu and %zu both turn back along "
+			    "the chord between them", i + 1, j + 1);
+	}
+	return 0;
+}
+
+/*
+ * Step 3: the right-hand side of eq. 10 at knot i,
+ *   K_i T_i = 3{r_i^2 (P_i - P_{i-1}) + l_i^2 (P_{i+1} - P_i)}
+ *             - r_{i-1} r_i^2 T_{i-1} - l_i^2 l_{i+1} T_{i+1},
+ * scaled to a unit vector with the sign of K_i the rule asks for.
+ * Returns the change |T~_i - T_i|, or -1 where the side vanishes.
+ */
+static double
+new_tangent(struct manning *m, size_t i, enum loft_sign sign)
+{
+	int dim = m->dim;
+	size_t h = (i + m->n - 1) % m->n, j = (i + 1) % m->n;
+	double v[LOFT_MAXDIM], d[LOFT_MAXDIM];
+	double *t = m->tnew + i * dim, ri = m->r[i], li = m->l[i];
+
+	vsub(d, knot(m, i), knot(m, h), dim);
+	vscale(v, 3 * ri * ri, d, dim);
+	vsub(d, knot(m, j), knot(m, i), dim);
+	vaxpy(v, 3 * li * li, d, dim);
+	vaxpy(v, -m->r[h] * ri * ri, m->t + h * dim, dim);
+	vaxpy(v, -li * li * m->l[j], m->t + j * dim, dim);
+	if (!(vunit(v, dim) > 0))
+		return -1;
+	if (sign == LOFT_SIGN_TURN && vdot(v, m->t + i * dim, dim) < 0)
+		vscale(v, -1, v, dim);
+	vcopy(t, v, dim);
+	return vdist(t, m->t + i * dim, dim);
+}
+
+/* Steps 2 to 5: iterate to the solution of eq. 10 and 11. */
+static int
+iterate(struct manning *m, const struct loft_fit_opts *o,
+    struct loft_fit_info *info, struct loft_error *err)
+{
+	size_t lo = m->closed ? 0 : 1, hi = m->closed ? m->n : m->n - 1;
+	double change = 0;
+	int it = 0;
+
+	for (;;) {
+		if (magnitudes(m, err) != 0)
+			return LOFT_EGEOM;
+		if (lo >= hi || (it > 0 && change < o->tol))
+			break;
+		if (it == o->maxiter) {
+			info->iterations = it;
+			info->change = change;
+			return loft_fail(err, LOFT_ENOCONV, -1,
+			    "no convergence in %d iterations: tangents still "
+			    "move by %.3g", it, change);
+		}
+		change = 0;
+		for (size_t i = lo; i < hi; i++) {
+			double c = new_tangent(m, i, o->sign);
+
+			if (c < 0)
+				return loft_fail(err, LOFT_EGEOM, (long)i,
+				    "eq. 10 gives no tangent at knot %zu", i + 1);
+			if (c > change)
+				change = c;
+		}
+		memcpy(m->t + lo * m->dim, m->tnew + lo * m->dim,
+		    (hi - lo) * m->dim * sizeof *m->t);
+		it++;
+	}
+	info->iterations = it;
+	info->change = change;
+	info->converged = 1;
+	return 0;
+}
+
+static void
+write_segments(const struct manning *m, double *seg)
+{
+	int dim = m->dim;
+
+	for (size_t i = 0; i < m->nseg; i++) {
+		size_t j = (i + 1) % m->n;
+		double *s = seg + i * 4 * dim;
+
+		vcopy(s, knot(m, i), dim);
+		vcopy(s + dim, knot(m, j), dim);
+		vscale(s + 2 * dim, m->r[i], m->t + i * dim, dim);
+		vscale(s + 3 * dim, m->l[j], m->t + j * dim, dim);
+	}
+}
+
+static int
+fit_manning(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
+    double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	struct manning m = { p, n, o->closed ? n : n - 1, dim, o->closed,
+	    o->alpha, NULL, NULL, NULL, NULL };
+	double *mem = malloc((2 * n * dim + 2 * n) * sizeof *mem);
+	int rc;
+
+	if (mem == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	m.t = mem;
+	m.tnew = m.t + n * dim;
+	m.r = m.tnew + n * dim;
+	m.l = m.r + n;
+	rc = initial_tangents(&m, err);
+	if (rc == 0 && !o->closed)
+		rc = loft__open_ends(o, p, n, dim, m.t, m.t + (n - 1) * dim,
+		    err);
+	if (rc == 0)
+		rc = iterate(&m, o, info, err);
+	if (rc == 0)
+		write_segments(&m, seg);
+	free(mem);
+	return rc;
+}
+
+int
+loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
+    double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	struct loft_fit_info dummy;
+	int rc;
+
+	if (info == NULL)
+		info = &dummy;
+	memset(info, 0, sizeof *info);
+	if ((rc = loft__check_knots(o, p, n, dim, err)) != 0)
+		return rc;
+	if (o->method == LOFT_MANNING)
+		return fit_manning(o, p, n, dim, seg, info, err);
+	info->converged = 1;
+	return loft__fit_cspline(o, p, n, dim, seg, err);
+}
+
+/* ------------------------------------------------------------------ */
+/* Measures of a fit */
+
+double
+loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed)
+{
+	double jump = 0, big = 0;
+
+	for (size_t i = 0; i < nseg; i++) {
+		const double *a = seg + i * 4 * dim;
+		double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], ka[LOFT_MAXDIM],
+		    kb[LOFT_MAXDIM];
+
+		loft_cubic_eval(a, dim, 0, NULL, d1, d2);
+		if (loft_curvature_vector(d1, d2, dim, ka) == 0 &&
+		    vnorm(ka, dim) > big)
+			big = vnorm(ka, dim);
+		if (i + 1 == nseg && !closed)
+			break;
+		/* the end of this segment against the start of the next */
+		loft_cubic_eval(a, dim, 1, NULL, d1, d2);
+		if (loft_curvature_vector(d1, d2, dim, ka) != 0)
+			continue;
+		if (vnorm(ka, dim) > big)
+			big = vnorm(ka, dim);
+		loft_cubic_eval(seg + ((i + 1) % nseg) * 4 * dim, dim, 0,
+		    NULL, d1, d2);
+		if (loft_curvature_vector(d1, d2, dim, kb) == 0 &&
+		    vdist(ka, kb, dim) > jump)
+			jump = vdist(ka, kb, dim);
+	}
+	return big > 0 ? jump / big : 0;
+}
+
+double
+loft_tangent_distance(const double *a, const double *b, size_t nseg, int dim)
+{
+	double most = 0;
+
+	for (size_t i = 0; i < nseg; i++) {
+		for (int end = 2; end <= 3; end++) {
+			double ta[LOFT_MAXDIM], tb[LOFT_MAXDIM];
+
+			vcopy(ta, a + (4 * i + end) * dim, dim);
+			vcopy(tb, b + (4 * i + end) * dim, dim);
+			vunit(ta, dim);
+			vunit(tb, dim);
+			if (vdist(ta, tb, dim) > most)
+				most = vdist(ta, tb, dim);
+		}
+	}
+	return most;
+}

@@ -1,0 +1,95 @@
+/*
+ * internal.h: helpers shared by the modules of libloft and not part of
+ * its interface (never installed).  Vectors have dim <= LOFT_MAXDIM.
+ */
+#ifndef LOFT_INTERNAL_H
+#define LOFT_INTERNAL_H
+
+#include <math.h>
+#include <stddef.h>
+
+#include "loft.h"
+
+static inline double
+vdot(const double *a, const double *b, int dim)
+{
+	double s = 0;
+
+	for (int k = 0; k < dim; k++)
+		s += a[k] * b[k];
+	return s;
+}
+
+static inline double
+vnorm(const double *a, int dim)
+{
+	return sqrt(vdot(a, a, dim));
+}
+
+/* d = a - b */
+static inline void
+vsub(double *d, const double *a, const double *b, int dim)
+{
+	for (int k = 0; k < dim; k++)
+		d[k] = a[k] - b[k];
+}
+
+/* d += s * a */
+static inline void
+vaxpy(double *d, double s, const double *a, int dim)
+{
+	for (int k = 0; k < dim; k++)
+		d[k] += s * a[k];
+}
+
+static inline void
+vscale(double *d, double s, const double *a, int dim)
+{
+	for (int k = 0; k < dim; k++)
+		d[k] = s * a[k];
+}
+
+static inline void
+vcopy(double *d, const double *a, int dim)
+{
+	for (int k = 0; k < dim; k++)
+		d[k] = a[k];
+}
+
+/* |a - b| */
+static inline double
+vdist(const double *a, const double *b, int dim)
+{
+	double d[LOFT_MAXDIM];
+
+	vsub(d, a, b, dim);
+	return vnorm(d, dim);
+}
+
+/* Scale a to unit length; returns its former length (0: left alone). */
+static inline double
+vunit(double *a, int dim)
+{
+	double n = vnorm(a, dim);
+
+	if (n > 0)
+		vscale(a, 1 / n, a, dim);
+	return n;
+}
+
+/* fit.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
+int loft__check_knots(const struct loft_fit_opts *o, const double *p,
+    size_t n, int dim, struct loft_error *err);
+
+/* fit.c: unit end tangents t0, tn of an open curve, given or estimated. */
+int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *t0, double *tn, struct loft_error *err);
+
+/* cspline.c: the Ferguson and chord-length baselines of loft_fit. */
+int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
+    size_t n, int dim, double *seg, struct loft_error *err);
+
+/* Grow *buf to hold at least need elements of size sz; 0 or -1. */
+int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
+
+#endif

@@ -1,0 +1,127 @@
+/*
+ * run.c: the read-compute-write loop every program shares, and its
+ * manners: one message per bad record, output whole records only, go on
+ * after a bad record or an unreadable file, fail on a write error.
+ */
+#include <errno.h>
+#include <string.h>
+
+#include "internal.h"
+
+#define STDIN_NAME "<stdin>"
+
+void
+loft_report(struct loft_run *run, const struct loft_record *rec,
+    const struct loft_error *err)
+{
+	long line = err->line ? err->line : loft_row_line(rec, err->row);
+
+	fprintf(run->msg, "%s: %s:%ld: %s\n", run->prog, rec->file, line,
+	    err->msg);
+	run->status = 1;
+}
+
+/* Write what the handler made; 0, or -1 on a write error. */
+static int
+commit(struct loft_run *run)
+{
+	struct loft_writer *w = &run->w;
+
+	if (w->len > 0 && fwrite(w->buf, 1, w->len, run->out) != w->len)
+		return -1;
+	return 0;
+}
+
+/* Handle every record of one open stream; -1 when output failed. */
+static int
+run_stream(struct loft_run *run, FILE *fp, const char *name)
+{
+	struct loft_reader *rd = loft_reader_new(fp, name);
+	struct loft_record rec = { 0 };
+	struct loft_error err;
+	int r, out = 0;
+
+	if (rd == NULL) {
+		fprintf(run->msg, "%s: %s: out of memory\n", run->prog, name);
+		run->status = 1;
+		return 0;
+	}
+	while ((r = loft_read(rd, &rec, &err)) != 0) {
+		if (r == LOFT_READ_FAIL) {
+			fprintf(run->msg, "%s: %s:%ld: %s\n", run->prog, name,
+			    err.line, err.msg);
+			run->status = 1;
+			break;
+		}
+		if (r == LOFT_READ_BAD) {
+			loft_report(run, &rec, &err);
+			continue;
+		}
+		run->w.len = 0;
+		run->w.bad = 0;
+		run->w.col = 0;
+		err.line = 0;
+		err.row = -1;
+		if (run->handle(run, &rec, &err) != 0) {
+			loft_report(run, &rec, &err);
+		} else if (run->w.bad) {
+			err.row = -1;
+			snprintf(err.msg, sizeof err.msg, "%s", run->w.bad ==
+			    LOFT_ENOMEM ? "out of memory" :
+			    "result is not finite (the input is too extreme)");
+			loft_report(run, &rec, &err);
+		} else if (commit(run) != 0) {
+			out = -1;
+			break;
+		}
+	}
+	loft_record_free(&rec);
+	loft_reader_free(rd);
+	return out;
+}
+
+/* Report a failed write, quietly for a closed pipe; returns 1. */
+static int
+write_failed(struct loft_run *run)
+{
+	if (errno != EPIPE)
+		fprintf(run->msg, "%s: write error: %s\n", run->prog,
+		    strerror(errno ? errno : EIO));
+	return 1;
+}
+
+int
+loft_run_files(struct loft_run *run, int nfiles, char **files)
+{
+	static char *stdin_only[] = { "-" };
+
+	if (nfiles == 0) {
+		nfiles = 1;
+		files = stdin_only;
+	}
+	for (int i = 0; i < nfiles; i++) {
+		int is_stdin = strcmp(files[i], "-") == 0;
+		FILE *fp = is_stdin ? stdin : fopen(files[i], "r");
+		int rc;
+
+		if (fp == NULL) {
+			fprintf(run->msg, "%s: %s: %s\n", run->prog, files[i],
+			    strerror(errno));
+			run->status = 1;
+			continue;
+		}
+		errno = 0;
+		rc = run_stream(run, fp, is_stdin ? STDIN_NAME : files[i]);
+		if (!is_stdin)
+			fclose(fp);
+		if (rc != 0) {
+			loft_writer_free(&run->w);
+			return write_failed(run);
+		}
+	}
+	loft_writer_free(&run->w);
+	errno = 0;
+	if (fflush(run->out) != 0 || ferror(run->out))
+		return write_failed(run);
+	return run->status;
+}

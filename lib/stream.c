@@ -1,0 +1,428 @@
+/*
+ * stream.c: the one reader and the one writer of loft streams (loft.5).
+ *
+ * A stream is lines; '#' starts a comment; a line that is empty or white
+ * space ends a record; a line whose first word begins with a letter (and
+ * is not nan or inf) is a header, type word then key=value attributes,
+ * and may only be a record's first line; any other line is a row of
+ * numbers.  A comment-only line is ignored.
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "internal.h"
+
+struct loft_reader {
+	FILE *fp;
+	const char *name;
+	long lineno;
+	char *line;             /* the current line, NUL-terminated */
+	size_t linecap;
+	size_t linelen;
+	int eof;
+};
+
+struct loft_reader *
+loft_reader_new(FILE *fp, const char *name)
+{
+	struct loft_reader *rd = calloc(1, sizeof *rd);
+
+	if (rd != NULL) {
+		rd->fp = fp;
+		rd->name = name;
+	}
+	return rd;
+}
+
+void
+loft_reader_free(struct loft_reader *rd)
+{
+	if (rd != NULL)
+		free(rd->line);
+	free(rd);
+}
+
+void
+loft_record_free(struct loft_record *rec)
+{
+	free(rec->attr);
+	free(rec->num);
+	free(rec->rowline);
+	free(rec->text);
+	memset(rec, 0, sizeof *rec);
+}
+
+const char *
+loft_attr(const struct loft_record *rec, const char *key)
+{
+	for (size_t i = 0; i < rec->nattr; i++)
+		if (strcmp(rec->attr[i].key, key) == 0)
+			return rec->attr[i].val;
+	return NULL;
+}
+
+long
+loft_row_line(const struct loft_record *rec, long row)
+{
+	if (row >= 0 && (size_t)row < rec->nrows)
+		return rec->rowline[row];
+	return rec->line;
+}
+
+static int
+is_space(int c)
+{
+	return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+static int
+is_letter(int c)
+{
+	return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+/* A name: a letter, then letters, digits, '-' or '_'. */
+static int
+is_name(const char *s, size_t len)
+{
+	if (len == 0 || !is_letter((unsigned char)s[0]))
+		return 0;
+	for (size_t i = 1; i < len; i++) {
+		int c = (unsigned char)s[i];
+		if (!is_letter(c) && !(c >= '0' && c <= '9') && c != '-' &&
+		    c != '_')
+			return 0;
+	}
+	return 1;
+}
+
+/* Whether s[0..len) is all printable ASCII (no space). */
+static int
+is_printable(const char *s, size_t len)
+{
+	for (size_t i = 0; i < len; i++)
+		if ((unsigned char)s[i] <= ' ' || (unsigned char)s[i] >= 0x7f)
+			return 0;
+	return 1;
+}
+
+/* Whether s starts with the word nan, inf or infinity, in any case. */
+static int
+looks_nonfinite(const char *s)
+{
+	static const char *const words[] = { "nan", "infinity", "inf" };
+
+	for (int i = 0; i < 3; i++) {
+		size_t n = strlen(words[i]);
+
+		if (strncasecmp(s, words[i], n) == 0 &&
+		    (s[n] == '\0' || is_space((unsigned char)s[n])))
+			return 1;
+	}
+	return 0;
+}
+
+/* Kinds of line. */
+enum { L_EOF, L_BLANK, L_COMMENT, L_HEADER, L_ROW, L_FAIL };
+
+/*
+ * Read the next line into rd->line, strip its comment, and classify it.
+ * A NUL byte is reported as a bad line through *bad.
+ */
+static int
+next_line(struct loft_reader *rd, struct loft_error *err, int *bad)
+{
+	ssize_t n;
+	char *hash;
+	size_t i;
+
+	errno = 0;
+	n = getline(&rd->line, &rd->linecap, rd->fp);
+	if (n < 0) {
+		if (ferror(rd->fp) || errno == ENOMEM) {
+			err->line = rd->lineno;
+			return loft_fail(err, LOFT_EIO, -1, "read error: %s",
+			    strerror(errno ? errno : EIO)), L_FAIL;
+		}
+		rd->eof = 1;
+		return L_EOF;
+	}
+	rd->lineno++;
+	rd->linelen = (size_t)n;
+	*bad = memchr(rd->line, '\0', (size_t)n) != NULL;
+	hash = memchr(rd->line, '#', (size_t)n);
+	if (hash != NULL)
+		rd->linelen = (size_t)(hash - rd->line);
+	rd->line[rd->linelen] = '\0';
+	if (rd->linelen > 0 && rd->line[rd->linelen - 1] == '\n')
+		rd->line[--rd->linelen] = '\0';
+	for (i = 0; i < rd->linelen && is_space((unsigned char)rd->line[i]); i++)
+		;
+	if (i == rd->linelen)
+		return hash != NULL ? L_COMMENT : L_BLANK;
+	return is_letter((unsigned char)rd->line[i]) &&
+	    !looks_nonfinite(rd->line + i) ? L_HEADER : L_ROW;
+}
+
+/* Next whitespace-separated word of s at *pos; its length, 0 at end. */
+static size_t
+next_word(const char *s, size_t len, size_t *pos, const char **word)
+{
+	size_t i = *pos, j;
+
+	while (i < len && is_space((unsigned char)s[i]))
+		i++;
+	for (j = i; j < len && !is_space((unsigned char)s[j]); j++)
+		;
+	*word = s + i;
+	*pos = j;
+	return j - i;
+}
+
+static int
+bad_line(struct loft_reader *rd, struct loft_error *err, const char *fmt,
+    const char *arg, int len)
+{
+	err->line = rd->lineno;
+	loft_fail(err, LOFT_EINPUT, -1, fmt, len, arg);
+	return LOFT_EINPUT;
+}
+
+/* Parse the header in rd->line into rec. */
+static int
+parse_header(struct loft_reader *rd, struct loft_record *rec,
+    struct loft_error *err)
+{
+	size_t len = rd->linelen, pos = 0, wl;
+	const char *w;
+	char *t;
+
+	if (loft__grow((void **)&rec->text, &rec->textcap, len + 1, 1) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	memcpy(rec->text, rd->line, len + 1);
+	t = rec->text;
+	wl = next_word(t, len, &pos, &w);
+	if (!is_name(w, wl))
+		return bad_line(rd, err, "bad record type '%.*s'", w,
+		    (int)(wl > 40 ? 40 : wl));
+	rec->type = (char *)w;
+	rec->type[wl] = '\0';   /* the word's end was white space or the end */
+	pos = pos < len ? pos + 1 : pos;
+	rec->nattr = 0;
+	while ((wl = next_word(t, len, &pos, &w)) > 0) {
+		char *key = (char *)w, *eq = memchr(key, '=', wl);
+		size_t klen = eq ? (size_t)(eq - key) : 0;
+
+		if (eq == NULL || !is_name(key, klen) || klen + 1 == wl ||
+		    !is_printable(eq + 1, wl - klen - 1))
+			return bad_line(rd, err, "bad attribute '%.*s' (want "
+			    "key=value, the value printable ASCII)", key,
+			    (int)(wl > 40 ? 40 : wl));
+		key[klen] = '\0';
+		key[wl] = '\0';
+		pos = pos < len ? pos + 1 : pos;
+		if (loft_attr(rec, key) != NULL)
+			return bad_line(rd, err, "attribute '%.*s' given twice",
+			    key, (int)klen);
+		if (loft__grow((void **)&rec->attr, &rec->attrcap,
+		    rec->nattr + 1, sizeof *rec->attr) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		rec->attr[rec->nattr].key = key;
+		rec->attr[rec->nattr].val = eq + 1;
+		rec->nattr++;
+	}
+	return 0;
+}
+
+/* Parse the row of numbers in rd->line and append it to rec. */
+static int
+parse_row(struct loft_reader *rd, struct loft_record *rec,
+    struct loft_error *err)
+{
+	size_t len = rd->linelen, pos = 0, wl, base = rec->nrows * rec->ncols;
+	int k = 0;
+	const char *w;
+
+	while ((wl = next_word(rd->line, len, &pos, &w)) > 0) {
+		if (loft__grow((void **)&rec->num, &rec->numcap, base + k + 1,
+		    sizeof *rec->num) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		if (loft_parse_num(w, wl, &rec->num[base + k], err) != 0) {
+			err->line = rd->lineno;
+			return LOFT_EINPUT;
+		}
+		k++;
+		if (rec->nrows > 0 && k > rec->ncols)
+			break;
+	}
+	if (rec->nrows > 0 && k != rec->ncols) {
+		err->line = rd->lineno;
+		return loft_fail(err, LOFT_EINPUT, -1,
+		    "row has %s%d numbers where the record's first row "
+		    "(line %ld) has %d", k > rec->ncols ? "more than " : "",
+		    k > rec->ncols ? rec->ncols : k, rec->rowline[0],
+		    rec->ncols);
+	}
+	if (loft__grow((void **)&rec->rowline, &rec->rowcap, rec->nrows + 1,
+	    sizeof *rec->rowline) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	rec->ncols = k;
+	rec->rowline[rec->nrows++] = rd->lineno;
+	return 0;
+}
+
+/* Skip the rest of a bad record: up to a blank line or the end. */
+static void
+skip_record(struct loft_reader *rd)
+{
+	struct loft_error ignored;
+	int kind, bad;
+
+	do
+		kind = next_line(rd, &ignored, &bad);
+	while (kind != L_BLANK && kind != L_EOF && kind != L_FAIL);
+}
+
+int
+loft_read(struct loft_reader *rd, struct loft_record *rec,
+    struct loft_error *err)
+{
+	int kind, bad = 0, started = 0, rc = 0;
+
+	rec->type = NULL;
+	rec->nattr = rec->nrows = 0;
+	rec->ncols = 0;
+	rec->file = rd->name;
+	err->line = 0;
+	err->row = -1;
+	for (;;) {
+		kind = rd->eof ? L_EOF : next_line(rd, err, &bad);
+		if (kind == L_FAIL)
+			return LOFT_READ_FAIL;
+		if (kind == L_EOF || (kind == L_BLANK && started))
+			return started ? 1 : 0;
+		if (kind == L_BLANK || kind == L_COMMENT)
+			continue;
+		if (!started)
+			rec->line = rd->lineno;
+		if (bad) {
+			err->line = rd->lineno;
+			rc = loft_fail(err, LOFT_EINPUT, -1, "NUL byte in line");
+		} else if (kind == L_HEADER && started) {
+			err->line = rd->lineno;
+			rc = loft_fail(err, LOFT_EINPUT, -1, "header line inside "
+			    "a record (a blank line must end the record before)");
+		} else if (kind == L_HEADER) {
+			rc = parse_header(rd, rec, err);
+		} else {
+			rc = parse_row(rd, rec, err);
+		}
+		started = 1;
+		if (rc == LOFT_ENOMEM)
+			return LOFT_READ_FAIL;
+		if (rc != 0) {
+			skip_record(rd);
+			return LOFT_READ_BAD;
+		}
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* The writer */
+
+static void
+put(struct loft_writer *w, const char *s, size_t n)
+{
+	if (w->bad)
+		return;
+	if (loft__grow((void **)&w->buf, &w->cap, w->len + n, 1) != 0) {
+		w->bad = LOFT_ENOMEM;
+		return;
+	}
+	memcpy(w->buf + w->len, s, n);
+	w->len += n;
+}
+
+void
+loft_put_type(struct loft_writer *w, const char *type)
+{
+	put(w, type, strlen(type));
+	w->col = 1;
+}
+
+void
+loft_put_attr(struct loft_writer *w, const char *key, const char *val)
+{
+	put(w, " ", 1);
+	put(w, key, strlen(key));
+	put(w, "=", 1);
+	put(w, val, strlen(val));
+}
+
+void
+loft_put_attrs_except(struct loft_writer *w, const struct loft_record *rec,
+    const char *const *skip)
+{
+	for (size_t i = 0; i < rec->nattr; i++) {
+		const char *const *s;
+
+		for (s = skip; *s != NULL; s++)
+			if (strcmp(*s, rec->attr[i].key) == 0)
+				break;
+		if (*s == NULL)
+			loft_put_attr(w, rec->attr[i].key, rec->attr[i].val);
+	}
+}
+
+void
+loft_put_num(struct loft_writer *w, double x)
+{
+	char buf[LOFT_NUMBUF];
+
+	if (!isfinite(x)) {
+		w->bad = LOFT_EGEOM;
+		return;
+	}
+	if (w->col++ > 0)
+		put(w, " ", 1);
+	put(w, buf, (size_t)loft_format_num(buf, x, w->digits));
+}
+
+void
+loft_put_row(struct loft_writer *w, const double *v, int n)
+{
+	for (int k = 0; k < n; k++)
+		loft_put_num(w, v[k]);
+	loft_end_line(w);
+}
+
+void
+loft_put_comment(struct loft_writer *w, const char *text)
+{
+	put(w, "# ", 2);
+	put(w, text, strlen(text));
+	loft_end_line(w);
+}
+
+void
+loft_end_line(struct loft_writer *w)
+{
+	put(w, "\n", 1);
+	w->col = 0;
+}
+
+void
+loft_end_record(struct loft_writer *w)
+{
+	loft_end_line(w);
+}
+
+void
+loft_writer_free(struct loft_writer *w)
+{
+	free(w->buf);
+	w->buf = NULL;
+	w->len = w->cap = 0;
+}
