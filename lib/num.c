@@ -184,15 +184,17 @@ loft_parse_word(const char *s, const char *const *words, int *i,
 
 /*
  * Lossless output: the shortest of %.15g, %.16g and %.17g that reads back
- * to x.  17 significant digits always do (DBL_DECIMAL_DIG); most numbers
- * a program computes need all 17, numbers read from a person's file
- * usually round-trip at 15.  One place, so a faster shortest-digits
- * algorithm can replace it.
+ * to x.  17 significant digits always do (DBL_DECIMAL_DIG); numbers read
+ * from a person's file usually round-trip at 15.  Where the shorter
+ * precision switched to exponent form, %.17g may still be shorter (a
+ * 17-digit integer), so it is tried too.  One place, so a faster
+ * shortest-digits algorithm can replace it.
  */
 int
 loft_format_num(char *buf, double x, int digits)
 {
-	int len;
+	char alt[LOFT_NUMBUF];
+	int len = 0, alen;
 
 	if (x == 0)
 		x = 0;          /* minus zero prints as 0 */
@@ -200,8 +202,17 @@ loft_format_num(char *buf, double x, int digits)
 		return snprintf(buf, LOFT_NUMBUF, "%.*g", digits, x);
 	for (int d = DBL_DIG; d < 17; d++) {
 		len = snprintf(buf, LOFT_NUMBUF, "%.*g", d, x);
-		if (strtod(buf, NULL) == x)
-			return len;
+		if (strtod(buf, NULL) == x) {
+			if (memchr(buf, 'e', (size_t)len) == NULL)
+				return len;
+			break;
+		}
+		len = 0;
 	}
-	return snprintf(buf, LOFT_NUMBUF, "%.17g", x);
+	alen = snprintf(alt, sizeof alt, "%.17g", x);
+	if (len == 0 || alen < len) {
+		memcpy(buf, alt, (size_t)alen + 1);
+		len = alen;
+	}
+	return len;
 }

@@ -1,0 +1,29 @@
+#!/bin/sh
+# run.sh: run every test suite, show its failures, and add up the suites'
+# closing "N passed, M failed" lines into one.  A suite that dies before
+# its closing line counts as one failure.
+
+passed=0
+failed=0
+
+suite() {
+	out=$("$@" 2>&1)
+	last=$(printf '%s\n' "$out" |
+	    grep -E '^[a-z]+: [0-9]+ passed, [0-9]+ failed$' | tail -n 1)
+	printf '%s\n' "$out" | grep -v -E '^[a-z]+: [0-9]+ passed, [0-9]+ failed$'
+	if [ -z "$last" ]; then
+		echo "$*: died before its summary"
+		failed=$((failed + 1))
+		return
+	fi
+	echo "$last"
+	set -- $last
+	passed=$((passed + $2))
+	failed=$((failed + $4))
+}
+
+suite bin/test/unit
+suite bin/test/paper man/figures/insole.knots
+suite sh tests/cmd.sh
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

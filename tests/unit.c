@@ -1,0 +1,423 @@
+/*
+ * unit.c: unit tests of libloft.  Reference values come from hand
+ * derivations (given in the comments) or from independent formulas, never
+ * from the library's own output.
+ */
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "loft.h"
+#include "check.h"
+
+/* ------------------------------------------------------------------ */
+/* numbers */
+
+static void
+test_parse_num(void)
+{
+	static const struct { const char *s; double want; } good[] = {
+		{ "1", 1 }, { "-2.5e3", -2500 }, { ".5", 0.5 }, { "5.", 5 },
+		{ "+7", 7 }, { "1E2", 100 }, { "0.1", 0.1 },
+		{ "1e-320", 1e-320 },           /* subnormal: accepted */
+		{ "1e-400", 0 },                /* underflow to zero: accepted */
+	};
+	static const char *const bad[] = { "", "nan", "NaN", "inf",
+		"-infinity", "0x10", "1e400", "-1e309", "1.2.3", "1e", "+",
+		"-", ".", "e5", "1,2", "1 2", "12a", "--1", "1e+", "١" };
+	struct loft_error err;
+	double x;
+
+	for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+		int rc = loft_parse_num(good[i].s, strlen(good[i].s), &x, &err);
+		CHECK(rc == 0 && x == good[i].want, "parse '%s'", good[i].s);
+	}
+	CHECK(loft_parse_num("-0", 2, &x, &err) == 0 && x == 0 && signbit(x),
+	    "-0 reads as minus zero");
+	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+		CHECK(loft_parse_num(bad[i], strlen(bad[i]), &x, &err) ==
+		    LOFT_EINPUT, "'%s' refused", bad[i]);
+}
+
+static void
+test_parse_list_int(void)
+{
+	struct loft_error err;
+	double v[3];
+	long w;
+	int n;
+
+	CHECK(loft_parse_list("1,-0.5,2e1", v, 3, &n, &err) == 0 && n == 3 &&
+	    v[0] == 1 && v[1] == -0.5 && v[2] == 20, "list of three");
+	CHECK(loft_parse_list("1,2,3,4", v, 3, &n, &err) != 0, "four of 3");
+	CHECK(loft_parse_list("1,,2", v, 3, &n, &err) != 0, "empty item");
+	CHECK(loft_parse_list("1,", v, 3, &n, &err) != 0, "trailing comma");
+	CHECK(loft_parse_int("17", 1, 17, &w, &err) == 0 && w == 17, "17");
+	CHECK(loft_parse_int("18", 1, 17, &w, &err) != 0, "18 > 17");
+	CHECK(loft_parse_int("0", 1, 17, &w, &err) != 0, "0 < 1");
+	CHECK(loft_parse_int("-1", 0, 17, &w, &err) != 0, "sign refused");
+	CHECK(loft_parse_int("99999999999999999999999", 1, 17, &w, &err) != 0,
+	    "overflow refused");
+	CHECK(loft_parse_int("3x", 1, 17, &w, &err) != 0, "garbage refused");
+}
+
+/* Every formatted number reads back to the same double, no longer than
+ * %.17g would be. */
+static void
+test_format_roundtrip(void)
+{
+	char buf[LOFT_NUMBUF], ref[64];
+	unsigned long long s = 88172645463325252ULL;
+	int bad = 0, longer = 0;
+
+	for (int i = 0; i < 200000; i++) {
+		double x;
+		unsigned long long bits;
+
+		s ^= s << 13, s ^= s >> 7, s ^= s << 17;       /* xorshift */
+		bits = s;
+		memcpy(&x, &bits, sizeof x);
+		if (!isfinite(x))
+			continue;
+		loft_format_num(buf, x, 0);
+		if (strtod(buf, NULL) != x)
+			bad++;
+		if (strlen(buf) > (size_t)snprintf(ref, sizeof ref, "%.17g", x))
+			longer++;
+	}
+	CHECK(bad == 0, "%d random doubles did not round-trip", bad);
+	CHECK(longer == 0, "%d outputs longer than %%.17g", longer);
+	loft_format_num(buf, 0.1, 0);
+	CHECK(strcmp(buf, "0.1") == 0, "0.1 prints as %s", buf);
+	loft_format_num(buf, -0.0, 0);
+	CHECK(strcmp(buf, "0") == 0, "minus zero prints as %s", buf);
+	loft_format_num(buf, DBL_MIN / 4, 0);
+	CHECK(strtod(buf, NULL) == DBL_MIN / 4, "subnormal %s", buf);
+	loft_format_num(buf, 1.0 / 3, 6);
+	CHECK(strcmp(buf, "0.333333") == 0, "6 digits: %s", buf);
+}
+
+/* ------------------------------------------------------------------ */
+/* the reader */
+
+struct stream {
+	FILE *fp;
+	struct loft_reader *rd;
+	struct loft_record rec;
+	struct loft_error err;
+};
+
+static void
+open_text(struct stream *s, const char *text, size_t len)
+{
+	memset(s, 0, sizeof *s);
+	s->fp = fmemopen((void *)text, len, "r");
+	s->rd = loft_reader_new(s->fp, "t");
+}
+
+static int
+next(struct stream *s)
+{
+	return loft_read(s->rd, &s->rec, &s->err);
+}
+
+static void
+close_text(struct stream *s)
+{
+	loft_record_free(&s->rec);
+	loft_reader_free(s->rd);
+	fclose(s->fp);
+}
+
+static void
+test_reader_good(void)
+{
+	static const char text[] =
+	    "# a comment line\n"
+	    "\n"
+	    "1 2   # trailing comment\n"
+	    "3 4\r\n"                       /* CRLF */
+	    "# comment inside a record\n"
+	    "5\t6\n"
+	    "   \n"
+	    "cubic closed=1 id=a-7\n"
+	    "1 2 3 4 5 6 7 8";              /* no final newline */
+	struct stream s;
+
+	open_text(&s, text, sizeof text - 1);
+	CHECK(next(&s) == 1, "first record");
+	CHECK(s.rec.type == NULL && s.rec.nrows == 3 && s.rec.ncols == 2,
+	    "3 rows of 2, no header");
+	CHECK(s.rec.num[2] == 3 && s.rec.num[5] == 6, "values");
+	CHECK(s.rec.line == 3 && s.rec.rowline[2] == 6, "line numbers");
+	CHECK(next(&s) == 1, "second record");
+	CHECK(s.rec.type && strcmp(s.rec.type, "cubic") == 0, "type word");
+	CHECK(s.rec.nattr == 2 && strcmp(loft_attr(&s.rec, "id"), "a-7") == 0
+	    && strcmp(loft_attr(&s.rec, "closed"), "1") == 0, "attributes");
+	CHECK(s.rec.nrows == 1 && s.rec.ncols == 8 && s.rec.num[7] == 8,
+	    "unterminated last line");
+	CHECK(next(&s) == 0, "end of stream");
+	close_text(&s);
+
+	open_text(&s, "# only comments\n\n\n# more\n", 25);
+	CHECK(next(&s) == 0, "a stream of comments holds no record");
+	close_text(&s);
+}
+
+/* Each bad record is reported at its line, and the good record after it
+ * still reads. */
+static void
+test_reader_bad(void)
+{
+	static const struct { const char *text; long line; const char *says; }
+	cases[] = {
+		{ "1 2\nnan 3\n", 2, "not a number" },
+		{ "1 2\n3 inf\n", 2, "not a number" },
+		{ "1 2\n3 1e400\n", 2, "out of range" },
+		{ "1 2\n3 4 5\n", 2, "more than 2 numbers" },
+		{ "1 2 3\n3 4\n", 2, "has 2 numbers" },
+		{ "1 2\n3 4x\n", 2, "not a number" },
+		{ "1 2\npoints\n", 2, "header line inside a record" },
+		{ "cubic a=1 a=2\n", 1, "given twice" },
+		{ "cubic closed\n", 1, "bad attribute" },
+		{ "cubic =1\n", 1, "bad attribute" },
+		{ "cub!c\n", 1, "bad record type" },
+		{ "cubic x=\xff\n", 1, "bad attribute" },
+		{ "1 2\n3\0 4\n", 2, "NUL byte" },
+	};
+
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		char text[128];
+		size_t len;
+		struct stream s;
+		int r;
+
+		/* the case (which may hold a NUL), then a good record */
+		len = strlen(cases[i].text);
+		if (i == sizeof cases / sizeof cases[0] - 1)
+			len = 9;       /* the text holds a NUL */
+		memcpy(text, cases[i].text, len);
+		memcpy(text + len, "5 6\n\n7 8\n", 9);
+		open_text(&s, text, len + 9);
+		r = next(&s);
+		CHECK(r == LOFT_READ_BAD && s.err.line == cases[i].line &&
+		    strstr(s.err.msg, cases[i].says) != NULL,
+		    "case %zu: got %d at line %ld: %s", i, r, s.err.line,
+		    s.err.msg);
+		r = next(&s);
+		CHECK(r == 1 && s.rec.nrows == 1 && s.rec.num[0] == 7,
+		    "case %zu: the next record survives", i);
+		close_text(&s);
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* cubic segments */
+
+/* Eq. 7 meets its definition: P(0) = P_A, P(1) = P_B, P'(0) = P'_A,
+ * P'(1) = P'_B, and P''' is constant: 6(P'_A + P'_B - 2(P_B - P_A)). */
+static void
+test_cubic_ends(void)
+{
+	double seg[12] = { 1, 2, 3, 4, -1, 5, 0.5, 2, -3, 7, 1, 0.25 };
+	double p[3], d1[3], d2[3], e2[3];
+
+	loft_cubic_eval(seg, 3, 0, p, d1, d2);
+	for (int k = 0; k < 3; k++)
+		CHECK(p[k] == seg[k] && d1[k] == seg[6 + k], "u=0, k=%d", k);
+	loft_cubic_eval(seg, 3, 1, p, d1, e2);
+	for (int k = 0; k < 3; k++) {
+		NEAR(p[k], seg[3 + k], 1e-15, "P(1)");
+		NEAR(d1[k], seg[9 + k], 1e-15, "P'(1)");
+		NEAR(e2[k] - d2[k], 6 * (seg[6 + k] + seg[9 + k] -
+		    2 * (seg[3 + k] - seg[k])), 1e-13, "P'''");
+	}
+}
+
+/* Eq. 2 equals the cross-product form P' x (P'' x P') / (P'.P')^2. */
+static void
+test_curvature_cross(void)
+{
+	unsigned s = 12345;
+
+	for (int t = 0; t < 1000; t++) {
+		double a[3], b[3], kn[3], bxa[3], ref[3], aa;
+
+		for (int k = 0; k < 3; k++) {
+			s = s * 1103515245 + 12345;
+			a[k] = (double)(s >> 8 & 0xffff) / 0x8000 - 1;
+			s = s * 1103515245 + 12345;
+			b[k] = (double)(s >> 8 & 0xffff) / 0x8000 - 1;
+		}
+		aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+		if (aa < 1e-3)
+			continue;
+		bxa[0] = b[1] * a[2] - b[2] * a[1];
+		bxa[1] = b[2] * a[0] - b[0] * a[2];
+		bxa[2] = b[0] * a[1] - b[1] * a[0];
+		ref[0] = (a[1] * bxa[2] - a[2] * bxa[1]) / (aa * aa);
+		ref[1] = (a[2] * bxa[0] - a[0] * bxa[2]) / (aa * aa);
+		ref[2] = (a[0] * bxa[1] - a[1] * bxa[0]) / (aa * aa);
+		CHECK(loft_curvature_vector(a, b, 3, kn) == 0, "defined");
+		for (int k = 0; k < 3; k++)
+			NEAR(kn[k], ref[k], 1e-9 * (1 + fabs(ref[k])), "eq. 2");
+	}
+	{
+		double z[2] = { 0, 0 }, b[2] = { 1, 0 }, kn[2];
+		CHECK(loft_curvature_vector(z, b, 2, kn) == LOFT_EGEOM,
+		    "P' = 0 has no curvature");
+	}
+}
+
+/*
+ * Eq. 8: chord from A = (-W/2, 0) to B = (W/2, 0), tangents at angle theta
+ * to it.  The circular arc through A and B with those tangents has radius
+ * R = W / (2 sin theta) and its midpoint Q at height R (1 - cos theta) =
+ * (W/2) tan(theta/2).  The symmetric cubic with |P'_A| = |P'_B| = 2W/(1 +
+ * cos theta) has P(1/2) = (P_A + P_B)/2 + (P'_A - P'_B)/8, so it passes
+ * through Q.
+ */
+static void
+test_eq8_midpoint(void)
+{
+	for (double deg = 5; deg < 180; deg += 5) {
+		double th = deg * M_PI / 180, W = 3;
+		double chord[2] = { W, 0 };
+		double ta[2] = { cos(th), sin(th) }, tb[2] = { cos(th), -sin(th) };
+		double ma, mb, seg[8], p[2];
+
+		CHECK(loft_normalise(chord, ta, tb, 2, 2.0 / 3, &ma, &mb) == 0,
+		    "normalise at %g degrees", deg);
+		NEAR(ma, 2 * W / (1 + cos(th)), 1e-13 * ma, "eq. 8 |P'_A|");
+		NEAR(mb, ma, 1e-13 * ma, "symmetric");
+		seg[0] = -W / 2, seg[1] = 0, seg[2] = W / 2, seg[3] = 0;
+		seg[4] = ma * ta[0], seg[5] = ma * ta[1];
+		seg[6] = mb * tb[0], seg[7] = mb * tb[1];
+		loft_cubic_eval(seg, 2, 0.5, p, NULL, NULL);
+		NEAR(p[0], 0, 1e-12, "Q.x");
+		NEAR(p[1], W / 2 * tan(th / 2), 1e-13 * (1 + p[1]), "Q.y");
+	}
+}
+
+/* Eq. 9: where the tangent at A makes the larger angle with the chord,
+ * the curve leaves A faster: |P'_A| < |P'_B| (section 4.1); and in 3-D
+ * only the angles count. */
+static void
+test_eq9_asymmetric(void)
+{
+	double chord[3] = { 2, 0, 0 }, ma, mb, ma3, mb3;
+	double ta[3] = { cos(1.0), sin(1.0), 0 }, tb[3] = { cos(0.3),
+	    -sin(0.3), 0 };
+	double ta3[3] = { cos(1.0), 0, sin(1.0) };
+
+	CHECK(loft_normalise(chord, ta, tb, 2, 2.0 / 3, &ma, &mb) == 0, "ok");
+	CHECK(ma < mb, "|P'_A| %g < |P'_B| %g", ma, mb);
+	NEAR(ma, 4 / (1 + 2.0 / 3 * cos(0.3) + 1.0 / 3 * cos(1.0)), 1e-14,
+	    "eq. 9 |P'_A| by hand");
+	CHECK(loft_normalise(chord, ta3, tb, 3, 2.0 / 3, &ma3, &mb3) == 0,
+	    "3-D");
+	NEAR(ma3, ma, 1e-14, "rotating a tangent about the chord");
+	{
+		double back[3] = { -1, 0, 0 };
+		CHECK(loft_normalise(chord, back, back, 3, 2.0 / 3, &ma, &mb) ==
+		    LOFT_EGEOM, "both tangents back along the chord");
+	}
+}
+
+/* The estimated end tangent of an open curve is the circle's tangent. */
+static void
+test_end_tangent(void)
+{
+	struct loft_error err;
+	double a[2], b[2], c[2], t[2];
+	double phi0 = 0.4, step = 0.3, R = 5;
+
+	a[0] = R * cos(phi0), a[1] = R * sin(phi0);
+	b[0] = R * cos(phi0 + step), b[1] = R * sin(phi0 + step);
+	c[0] = R * cos(phi0 + 2.5 * step), c[1] = R * sin(phi0 + 2.5 * step);
+	CHECK(loft_end_tangent(a, b, c, 2, t, &err) == 0, "circle");
+	NEAR(t[0], -sin(phi0), 1e-12, "tangent x");
+	NEAR(t[1], cos(phi0), 1e-12, "tangent y");
+	c[0] = 3, c[1] = 0, b[0] = 1, b[1] = 0, a[0] = a[1] = 0;
+	CHECK(loft_end_tangent(a, b, c, 2, t, &err) == 0 && t[0] == 1 &&
+	    t[1] == 0, "collinear: the chord");
+	CHECK(loft_end_tangent(a, b, NULL, 2, t, &err) == 0 && t[0] == 1,
+	    "two knots: the chord");
+	CHECK(loft_end_tangent(a, a, NULL, 2, t, &err) == LOFT_EGEOM,
+	    "coincident knots");
+}
+
+/* ------------------------------------------------------------------ */
+/* the baselines */
+
+/*
+ * Ferguson on a regular n-gon P_k = R(cos k phi, sin k phi): by symmetry
+ * m_k = c R (-sin k phi, cos k phi), and m_{k-1} + m_{k+1} = 2 cos(phi) m_k,
+ * so the row m_{k-1} + 4 m_k + m_{k+1} = 3 (P_{k+1} - P_{k-1}) gives
+ * c (4 + 2 cos phi) = 6 sin phi.  Chord-length intervals are all equal
+ * here, so the segments are the same.
+ */
+static void
+test_ferguson_polygon(void)
+{
+	enum { N = 6 };
+	double p[2 * N], seg[8 * N], R = 2, phi = 2 * M_PI / N;
+	double c = 6 * sin(phi) / (4 + 2 * cos(phi));
+	struct loft_fit_opts o;
+	struct loft_error err;
+
+	for (int k = 0; k < N; k++)
+		p[2 * k] = R * cos(k * phi), p[2 * k + 1] = R * sin(k * phi);
+	loft_fit_defaults(&o);
+	for (int m = LOFT_FERGUSON; m <= LOFT_CHORD; m++) {
+		o.method = m;
+		CHECK(loft_fit(&o, p, N, 2, seg, NULL, &err) == 0, "fit %d", m);
+		for (int k = 0; k < N; k++) {
+			NEAR(seg[8 * k + 4], -c * R * sin(k * phi), 1e-12, "m.x");
+			NEAR(seg[8 * k + 5], c * R * cos(k * phi), 1e-12, "m.y");
+		}
+	}
+}
+
+/* Open baselines on knots 0, 1, 3 of the x axis with tangents along it.
+ * Chord intervals: unit speed is the solution, so the middle segment is
+ * P(u) = 1 + 2u.  Uniform intervals (h = 1) on 0, 1, 2 likewise give
+ * m = 1 everywhere: m_0 + 4 m_1 + m_2 = 3 (P_2 - P_0) = 6. */
+static void
+test_baselines_open(void)
+{
+	double p[6] = { 0, 0, 1, 0, 3, 0 }, q[6] = { 0, 0, 1, 0, 2, 0 };
+	double seg[16], x[2];
+	struct loft_fit_opts o;
+	struct loft_error err;
+
+	loft_fit_defaults(&o);
+	o.closed = 0;
+	o.method = LOFT_CHORD;
+	CHECK(loft_fit(&o, p, 3, 2, seg, NULL, &err) == 0, "chord");
+	loft_cubic_eval(seg + 8, 2, 0.5, x, NULL, NULL);
+	NEAR(x[0], 2, 1e-14, "chord: middle of segment 2");
+	NEAR(seg[8 + 4], 2, 1e-14, "chord: P'_A of segment 2");
+	o.method = LOFT_FERGUSON;
+	CHECK(loft_fit(&o, q, 3, 2, seg, NULL, &err) == 0, "ferguson");
+	NEAR(seg[6], 1, 1e-14, "ferguson: P'_B of segment 1");
+	NEAR(seg[7], 0, 1e-14, "ferguson: straight");
+}
+
+int
+main(void)
+{
+	test_parse_num();
+	test_parse_list_int();
+	test_format_roundtrip();
+	test_reader_good();
+	test_reader_bad();
+	test_cubic_ends();
+	test_curvature_cross();
+	test_eq8_midpoint();
+	test_eq9_asymmetric();
+	test_end_tangent();
+	test_ferguson_polygon();
+	test_baselines_open();
+	return check_done("unit");
+}
