@@ -80,8 +80,8 @@ int
 main(int argc, char *argv[])
 {
 	struct opts o = { 16, 0, 0, 0 };
-	struct loft_run run = { "sample", stdout, stderr, { 0 }, sample_record,
-	    &o, 0 };
+	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
+	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
 	long digits;
 	int c;

@@ -179,8 +179,8 @@ main(int argc, char *argv[])
 	    NULL };
 	static const char *const signs[] = { "positive", "turn", NULL };
 	struct opts o = { 0 };
-	struct loft_run run = { "splinefit", stdout, stderr, { 0 }, fit_record,
-	    &o, 0 };
+	struct loft_run run = { .prog = "splinefit", .out = stdout,
+	    .msg = stderr, .handle = fit_record, .ctx = &o };
 	struct loft_error err;
 	int c, status, rc = 0, word;
 	long whole;

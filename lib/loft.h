@@ -54,7 +54,8 @@ int loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
  * only: overflow is an error, underflow to a subnormal or zero is not.
  * Returns 0 and stores *x, or LOFT_EINPUT with a message in err.
  */
-int loft_parse_num(const char *s, size_t len, double *x, struct loft_error *err);
+int loft_parse_num(const char *s, size_t len, double *x,
+    struct loft_error *err);
 
 /*
  * Parse a comma-separated list of at most max numbers ("1,0" or
@@ -159,7 +160,6 @@ void loft_put_type(struct loft_writer *w, const char *type);
 void loft_put_attr(struct loft_writer *w, const char *key, const char *val);
 void loft_put_num(struct loft_writer *w, double x);
 void loft_put_row(struct loft_writer *w, const double *v, int n);
-void loft_put_comment(struct loft_writer *w, const char *text);
 void loft_end_line(struct loft_writer *w);
 void loft_end_record(struct loft_writer *w);   /* the blank line */
 void loft_writer_free(struct loft_writer *w);

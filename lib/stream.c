@@ -399,14 +399,6 @@ loft_put_row(struct loft_writer *w, const double *v, int n)
 }
 
 void
-loft_put_comment(struct loft_writer *w, const char *text)
-{
-	put(w, "# ", 2);
-	put(w, text, strlen(text));
-	loft_end_line(w);
-}
-
-void
 loft_end_line(struct loft_writer *w)
 {
 	put(w, "\n", 1);

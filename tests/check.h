@@ -33,7 +33,8 @@ check_at(int ok, const char *file, int line, const char *fmt, ...)
 	fputc('\n', stderr);
 }
 
-#define CHECK(cond, ...) check_at((cond) ? 1 : 0, __FILE__, __LINE__, __VA_ARGS__)
+#define CHECK(cond, ...) \
+	check_at((cond) ? 1 : 0, __FILE__, __LINE__, __VA_ARGS__)
 
 /* |a - b| <= tol, with both values in the failure message */
 #define NEAR(a, b, tol, what) do { \
