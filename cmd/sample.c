@@ -34,6 +34,11 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 
 	loft_curve_eval(c, i, u, p, d1, d2);
 	for (int q = 0; q < dim; q++)
+		if (!isfinite(p[q]) || !isfinite(d1[q]) || !isfinite(d2[q]))
+			return loft_fail(err, LOFT_EGEOM, (long)i, "segment %zu "
+			    "overflows at u = %g: coefficients too large", i + 1,
+			    u);
+	for (int q = 0; q < dim; q++)
 		loft_put_num(&run->w, p[q]);
 	if (o->param)
 		loft_put_num(&run->w, (double)i + u);

@@ -92,9 +92,10 @@ report(struct loft_run *run, const struct loft_record *rec,
 	int dim = rec->ncols;
 	char other[320] = "";
 
-	fprintf(run->msg, "splinefit: %s:%ld: %zu knots, %d iterations, "
+	fprintf(run->msg, "splinefit: %s:%ld: %zu knots, %d iteration%s, "
 	    "converged (tangent change %.2g), curvature jump %.2g",
-	    rec->file, rec->line, rec->nrows, info->iterations, info->change,
+	    rec->file, rec->line, rec->nrows, info->iterations,
+	    info->iterations == 1 ? "" : "s", info->change,
 	    loft_curvature_jump(o->seg, nseg, dim, fit->closed));
 	if (fit->method == LOFT_MANNING) {
 		alt.sign = fit->sign == LOFT_SIGN_POSITIVE ?
@@ -164,6 +165,11 @@ parse_vector(int c, const char *arg, double *v, int *have, int *dim)
 
 	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0)
 		bad_option(c, &err);
+	if (*dim >= 2 && v[0] == 0 && v[1] == 0 && (*dim == 2 || v[2] == 0)) {
+		snprintf(err.msg, sizeof err.msg, "'%s': a direction cannot be "
+		    "zero", arg);
+		bad_option(c, &err);
+	}
 	if (*dim < 2) {
 		snprintf(err.msg, sizeof err.msg, "'%s': want 2 or 3 numbers "
 		    "separated by commas", arg);

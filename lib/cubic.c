@@ -8,7 +8,10 @@
  * Eq. 7:
  *   P(u) = P_A + u P'_A + u^2 (3(P_B - P_A) - 2P'_A - P'_B)
  *              + u^3 (P'_A + P'_B - 2(P_B - P_A)),
- * evaluated as R0 + u(R1 + u(R2 + u R3)) with the R_k of eq. 6.
+ * gathered by the four end values: P = a P_A + b P_B + c P'_A + d P'_B
+ * with a = 1 - 3u^2 + 2u^3, b = 3u^2 - 2u^3, c = u - 2u^2 + u^3 and
+ * d = u^3 - u^2.  At u = 0 and u = 1 these weights are exactly 0 or 1,
+ * so a segment ends exactly at its knots, and joins without a seam.
  */
 void
 loft_cubic_eval(const double *seg, int dim, double u,
@@ -16,19 +19,21 @@ loft_cubic_eval(const double *seg, int dim, double u,
 {
 	const double *pa = seg, *pb = seg + dim, *ta = seg + 2 * dim,
 	    *tb = seg + 3 * dim;
+	double uu = u * u, uuu = uu * u;
+	double w[3][4] = {
+		{ 1 - 3 * uu + 2 * uuu, 3 * uu - 2 * uuu, u - 2 * uu + uuu,
+		  uuu - uu },
+		{ 6 * uu - 6 * u, 6 * u - 6 * uu, 1 - 4 * u + 3 * uu,
+		  3 * uu - 2 * u },
+		{ 12 * u - 6, 6 - 12 * u, 6 * u - 4, 6 * u - 2 },
+	};
+	double *out[3] = { p, d1, d2 };
 
-	for (int k = 0; k < dim; k++) {
-		double c = pb[k] - pa[k];
-		double r2 = 3 * c - 2 * ta[k] - tb[k];
-		double r3 = ta[k] + tb[k] - 2 * c;
-
-		if (p != NULL)
-			p[k] = pa[k] + u * (ta[k] + u * (r2 + u * r3));
-		if (d1 != NULL)
-			d1[k] = ta[k] + u * (2 * r2 + u * 3 * r3);
-		if (d2 != NULL)
-			d2[k] = 2 * r2 + 6 * u * r3;
-	}
+	for (int r = 0; r < 3; r++)
+		if (out[r] != NULL)
+			for (int k = 0; k < dim; k++)
+				out[r][k] = w[r][0] * pa[k] + w[r][1] * pb[k] +
+				    w[r][2] * ta[k] + w[r][3] * tb[k];
 }
 
 /*

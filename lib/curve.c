@@ -35,7 +35,7 @@ loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
 {
 	const struct curve_type *t = NULL;
 
-	if (rec->type == NULL)
+	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "a point record is no "
 		    "curve to evaluate (fit one with splinefit first)");
 	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)

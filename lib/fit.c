@@ -174,8 +174,7 @@ knot(const struct manning *m, size_t i)
 	return m->p + (i % m->n) * m->dim;
 }
 
-/* Step 1 of section 6: T_i parallel to P_{i+1} - P_{i-1}; where that
- * vanishes (the curve doubles back), the sum of the unit chords. */
+/* Step 1 of section 6: T_i parallel to P_{i+1} - P_{i-1}. */
 static int
 initial_tangents(struct manning *m, struct loft_error *err)
 {
@@ -183,20 +182,15 @@ initial_tangents(struct manning *m, struct loft_error *err)
 	size_t lo = m->closed ? 0 : 1, hi = m->closed ? m->n : m->n - 1;
 
 	for (size_t i = lo; i < hi; i++) {
-		double *t = m->t + i * dim, a[LOFT_MAXDIM], b[LOFT_MAXDIM];
-		const double *prev = knot(m, i + m->n - 1), *next = knot(m, i + 1);
+		double *t = m->t + i * dim;
+		size_t h = (i + m->n - 1) % m->n, j = (i + 1) % m->n;
 
-		vsub(t, next, prev, dim);
-		if (vunit(t, dim) > 0)
-			continue;
-		vsub(a, knot(m, i), prev, dim);
-		vsub(b, next, knot(m, i), dim);
-		vunit(a, dim);
-		vunit(b, dim);
-		vsub(t, b, a, dim);
+		vsub(t, knot(m, j), knot(m, h), dim);
 		if (!(vunit(t, dim) > 0))
 			return loft_fail(err, LOFT_EGEOM, (long)i,
-			    "the curve doubles back on itself at knot %zu", i + 1);
+			    "knots %zu and %zu on either side of knot %zu "
+			    "coincide: the curve would double back on itself",
+			    h + 1, j + 1, i + 1);
 	}
 	return 0;
 }
@@ -334,26 +328,87 @@ fit_manning(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 	return rc;
 }
 
+/*
+ * Move and scale the knots p into q, inside the box [-1, 1]^dim, so that
+ * every length in the fit is of order one whatever the units: eq. 10
+ * holds lengths cubed, which would overflow for knots near 1e100 and lose
+ * all precision near 1e-100.  p = centre + half * q.  The half-ranges are
+ * computed without forming a difference that could overflow.
+ */
+static void
+unit_box(const double *p, size_t n, int dim, double *q, double *centre,
+    double *half)
+{
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
+
+	vcopy(lo, p, dim);
+	vcopy(hi, p, dim);
+	for (size_t i = 1; i < n; i++)
+		for (int k = 0; k < dim; k++) {
+			lo[k] = fmin(lo[k], p[i * dim + k]);
+			hi[k] = fmax(hi[k], p[i * dim + k]);
+		}
+	*half = 0;
+	for (int k = 0; k < dim; k++) {
+		centre[k] = lo[k] / 2 + hi[k] / 2;
+		*half = fmax(*half, hi[k] / 2 - lo[k] / 2);
+	}
+	if (!(*half > 0))
+		*half = 1;      /* one point: the checks will say so */
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < dim; k++)
+			q[i * dim + k] = (p[i * dim + k] - centre[k]) / *half;
+}
+
 int
 loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	struct loft_fit_info dummy;
+	double centre[LOFT_MAXDIM], half, *q;
+	size_t nseg = o->closed ? n : n - 1;
 	int rc;
 
 	if (info == NULL)
 		info = &dummy;
 	memset(info, 0, sizeof *info);
-	if ((rc = loft__check_knots(o, p, n, dim, err)) != 0)
-		return rc;
-	if (o->method == LOFT_MANNING)
-		return fit_manning(o, p, n, dim, seg, info, err);
-	info->converged = 1;
-	return loft__fit_cspline(o, p, n, dim, seg, err);
+	if (dim < 2 || dim > LOFT_MAXDIM || n == 0)
+		return loft__check_knots(o, p, n, dim, err);
+	if ((q = malloc(n * dim * sizeof *q)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	unit_box(p, n, dim, q, centre, &half);
+	rc = loft__check_knots(o, q, n, dim, err);
+	if (rc == 0 && o->method == LOFT_MANNING) {
+		rc = fit_manning(o, q, n, dim, seg, info, err);
+	} else if (rc == 0) {
+		info->converged = 1;
+		rc = loft__fit_cspline(o, q, n, dim, seg, err);
+	}
+	free(q);
+	/* back to the knots' own units; the knots themselves exactly */
+	for (size_t i = 0; rc == 0 && i < nseg; i++) {
+		double *s = seg + i * 4 * dim;
+
+		vcopy(s, p + i * dim, dim);
+		vcopy(s + dim, p + ((i + 1) % n) * dim, dim);
+		vscale(s + 2 * dim, half, s + 2 * dim, 2 * dim);
+	}
+	return rc;
 }
 
 /* ------------------------------------------------------------------ */
 /* Measures of a fit */
+
+/* The largest distance of a knot of the segments from the first knot. */
+static double
+segment_extent(const double *seg, size_t nseg, int dim)
+{
+	double big = 0;
+
+	for (size_t i = 0; i < nseg; i++)
+		big = fmax(big, vdist(seg + i * 4 * dim + dim, seg, dim));
+	return big;
+}
 
 double
 loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed)
@@ -383,7 +438,10 @@ loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed)
 		    vdist(ka, kb, dim) > jump)
 			jump = vdist(ka, kb, dim);
 	}
-	return big > 0 ? jump / big : 0;
+	/* a curve no more curved than a circle its own size is measured
+	 * against that circle, so rounding on a straight line reads 0 */
+	big = fmax(big, 1 / segment_extent(seg, nseg, dim));
+	return big > 0 && isfinite(big) ? jump / big : 0;
 }
 
 double

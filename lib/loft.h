@@ -292,8 +292,9 @@ int loft_end_tangent(const double *a, const double *b, const double *c, int dim,
 /*
  * The largest jump of the curvature vector across the joins of the
  * segments seg[0..nseg) (and across the closing join when closed),
- * divided by the largest curvature at any knot: a scale-free measure of
- * curvature continuity; 0 for a straight line.
+ * divided by the largest curvature at any knot or, if larger, by the
+ * curvature of a circle whose radius is the curve's extent: a scale-free
+ * measure of curvature continuity, near 0 for a straight line.
  */
 double loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed);
 

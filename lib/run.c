@@ -48,8 +48,12 @@ run_stream(struct loft_run *run, FILE *fp, const char *name)
 	}
 	while ((r = loft_read(rd, &rec, &err)) != 0) {
 		if (r == LOFT_READ_FAIL) {
-			fprintf(run->msg, "%s: %s:%ld: %s\n", run->prog, name,
-			    err.line, err.msg);
+			if (err.line > 0)
+				fprintf(run->msg, "%s: %s:%ld: %s\n", run->prog,
+				    name, err.line, err.msg);
+			else
+				fprintf(run->msg, "%s: %s: %s\n", run->prog,
+				    name, err.msg);
 			run->status = 1;
 			break;
 		}

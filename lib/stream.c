@@ -303,14 +303,20 @@ loft_read(struct loft_reader *rd, struct loft_record *rec,
 			return LOFT_READ_FAIL;
 		if (kind == L_EOF || (kind == L_BLANK && started))
 			return started ? 1 : 0;
+		if (bad) {
+			/* a NUL byte anywhere, even in a comment, is an
+			 * error; it spoils the record it stands in */
+			err->line = rd->lineno;
+			loft_fail(err, LOFT_EINPUT, -1, "NUL byte in line");
+			if (kind != L_BLANK && (started || kind != L_COMMENT))
+				skip_record(rd);
+			return LOFT_READ_BAD;
+		}
 		if (kind == L_BLANK || kind == L_COMMENT)
 			continue;
 		if (!started)
 			rec->line = rd->lineno;
-		if (bad) {
-			err->line = rd->lineno;
-			rc = loft_fail(err, LOFT_EINPUT, -1, "NUL byte in line");
-		} else if (kind == L_HEADER && started) {
+		if (kind == L_HEADER && started) {
 			err->line = rd->lineno;
 			rc = loft_fail(err, LOFT_EINPUT, -1, "header line inside "
 			    "a record (a blank line must end the record before)");

@@ -160,7 +160,11 @@ fails 1 "2 knots: a closed curve needs at least 3" \
 fails 1 "1 knot: an open curve needs at least 2" \
     "printf '0 0\n' | $B/splinefit -o"
 fails 1 "start tangent is zero" \
+    "printf 'points start=0,0\n0 0\n1 0\n' | $B/splinefit -o"
+fails 2 "-S '0,0': a direction cannot be zero" \
     "printf '0 0\n1 0\n' | $B/splinefit -o -S 0,0"
+fails 1 "<stdin>:2: knots 1 and 3 on either side of knot 2 coincide" \
+    "printf '0 0\n1 0\n0 0\n0 1\n' | $B/splinefit"
 fails 1 "all knots lie on one line" \
     "printf '0 0\n1 1\n3 3\n2 2\n' | $B/splinefit"
 fails 1 "no convergence in 2 iterations: tangents still move by" \
@@ -171,6 +175,9 @@ fails 1 "knots have 4 coordinates" \
     "printf '0 0 0 0\n1 0 0 0\n1 1 0 0\n' | $B/splinefit"
 fails 1 "cubic record: splinefit reads knots" "$B/splinefit $T/seg.cubic"
 fails 1 "a point record is no curve" "$B/sample $T/square.knots"
+fails 1 "<stdin>:1: a point record is no curve" \
+    "printf 'points\n0 0\n1 1\n' | $B/sample"
+fails 1 "sample: $T: read error: Is a directory" "$B/sample $T"
 fails 1 "unknown record type 'spline'" "printf 'spline\n1 2\n' | $B/sample"
 fails 1 "tangent vanishes in segment 1" \
     "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/sample -d"

@@ -428,6 +428,34 @@ test_iterations(void)
 	free(p);
 }
 
+/* The same knots in other units, or far from the origin, give the same
+ * curve in those units: scale by 1e-6, 1e6, 1e100, or translate by 1e6. */
+static void
+test_units(const double *insole)
+{
+	static const double scale[] = { 1e-6, 1e6, 1e100, 1 }, shift[] = {
+	    0, 0, 0, 1e6 };
+	struct loft_fit_opts o;
+	double p[44];
+
+	loft_fit_defaults(&o);
+	fit_ok(&o, insole, 22, 2, seg, NULL, "insole");
+	for (int c = 0; c < 4; c++) {
+		double worst = 0;
+
+		for (int i = 0; i < 44; i++)
+			p[i] = scale[c] * insole[i] + shift[c];
+		fit_ok(&o, p, 22, 2, seg2, NULL, "insole in other units");
+		for (int i = 0; i < 22; i++)
+			for (int k = 4; k < 8; k++)
+				worst = fmax(worst, fabs(seg2[8 * i + k] /
+				    scale[c] - seg[8 * i + k]) /
+				    norm(seg + 8 * i + (k < 6 ? 4 : 6), 2));
+		CHECK(worst < 1e-9, "units %g, shift %g: tangents differ by "
+		    "%g relative", scale[c], shift[c], worst);
+	}
+}
+
 /* No convergence within -i is an error that says how far it got. */
 static void
 test_noconv(void)
@@ -483,5 +511,6 @@ main(int argc, char *argv[])
 	test_open_ends();
 	test_iterations();
 	test_noconv();
+	test_units(insole);
 	return check_done("paper");
 }

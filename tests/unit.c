@@ -162,6 +162,13 @@ test_reader_good(void)
 	open_text(&s, "# only comments\n\n\n# more\n", 25);
 	CHECK(next(&s) == 0, "a stream of comments holds no record");
 	close_text(&s);
+
+	/* a NUL in a comment between records is reported; nothing is lost */
+	open_text(&s, "1 2\n\n# \0\n3 4\n", 13);
+	CHECK(next(&s) == 1 && s.rec.num[0] == 1, "before the NUL");
+	CHECK(next(&s) == LOFT_READ_BAD && s.err.line == 3, "the NUL line");
+	CHECK(next(&s) == 1 && s.rec.num[0] == 3, "after the NUL");
+	close_text(&s);
 }
 
 /* Each bad record is reported at its line, and the good record after it
