@@ -8,10 +8,13 @@
  * Eq. 7:
  *   P(u) = P_A + u P'_A + u^2 (3(P_B - P_A) - 2P'_A - P'_B)
  *              + u^3 (P'_A + P'_B - 2(P_B - P_A)),
- * gathered by the four end values: P = a P_A + b P_B + c P'_A + d P'_B
- * with a = 1 - 3u^2 + 2u^3, b = 3u^2 - 2u^3, c = u - 2u^2 + u^3 and
- * d = u^3 - u^2.  At u = 0 and u = 1 these weights are exactly 0 or 1,
- * so a segment ends exactly at its knots, and joins without a seam.
+ * gathered by the chord c = P_B - P_A and the end tangents:
+ *   P   = P_A + (3u^2 - 2u^3) c + (u - 2u^2 + u^3) P'_A + (u^3 - u^2) P'_B
+ *   P'  = (6u - 6u^2) c + (1 - 4u + 3u^2) P'_A + (3u^2 - 2u) P'_B
+ *   P'' = (6 - 12u) c + (6u - 4) P'_A + (6u - 2) P'_B.
+ * Working from the chord keeps the second derivative accurate on short
+ * segments far from the origin; the weights are exactly 0 or 1 at the
+ * ends, and at u = 1 the point is P_B itself, so segments join exactly.
  */
 void
 loft_cubic_eval(const double *seg, int dim, double u,
@@ -20,20 +23,20 @@ loft_cubic_eval(const double *seg, int dim, double u,
 	const double *pa = seg, *pb = seg + dim, *ta = seg + 2 * dim,
 	    *tb = seg + 3 * dim;
 	double uu = u * u, uuu = uu * u;
-	double w[3][4] = {
-		{ 1 - 3 * uu + 2 * uuu, 3 * uu - 2 * uuu, u - 2 * uu + uuu,
-		  uuu - uu },
-		{ 6 * uu - 6 * u, 6 * u - 6 * uu, 1 - 4 * u + 3 * uu,
-		  3 * uu - 2 * u },
-		{ 12 * u - 6, 6 - 12 * u, 6 * u - 4, 6 * u - 2 },
-	};
-	double *out[3] = { p, d1, d2 };
 
-	for (int r = 0; r < 3; r++)
-		if (out[r] != NULL)
-			for (int k = 0; k < dim; k++)
-				out[r][k] = w[r][0] * pa[k] + w[r][1] * pb[k] +
-				    w[r][2] * ta[k] + w[r][3] * tb[k];
+	for (int k = 0; k < dim; k++) {
+		double c = pb[k] - pa[k];
+
+		if (p != NULL)
+			p[k] = u == 1 ? pb[k] : pa[k] + (3 * uu - 2 * uuu) * c +
+			    (u - 2 * uu + uuu) * ta[k] + (uuu - uu) * tb[k];
+		if (d1 != NULL)
+			d1[k] = (6 * u - 6 * uu) * c + (1 - 4 * u + 3 * uu) *
+			    ta[k] + (3 * uu - 2 * u) * tb[k];
+		if (d2 != NULL)
+			d2[k] = (6 - 12 * u) * c + (6 * u - 4) * ta[k] +
+			    (6 * u - 2) * tb[k];
+	}
 }
 
 /*

@@ -329,35 +329,25 @@ fit_manning(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 }
 
 /*
- * Move and scale the knots p into q, inside the box [-1, 1]^dim, so that
- * every length in the fit is of order one whatever the units: eq. 10
- * holds lengths cubed, which would overflow for knots near 1e100 and lose
- * all precision near 1e-100.  p = centre + half * q.  The half-ranges are
- * computed without forming a difference that could overflow.
+ * Scale the knots p into q, inside the box [-1, 1]^dim, so that every
+ * length in the fit is of order one whatever the units: eq. 10 holds
+ * lengths cubed, which would overflow for knots near 1e100 and underflow
+ * near 1e-100.  The factor is a power of two, so q = p / 2^e exactly and
+ * the fit is made for exactly the knots it writes.  Returns e.
  */
-static void
-unit_box(const double *p, size_t n, int dim, double *q, double *centre,
-    double *half)
+static int
+unit_box(const double *p, size_t n, int dim, double *q)
 {
-	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
+	double big = 0;
+	int e = 0;
 
-	vcopy(lo, p, dim);
-	vcopy(hi, p, dim);
-	for (size_t i = 1; i < n; i++)
-		for (int k = 0; k < dim; k++) {
-			lo[k] = fmin(lo[k], p[i * dim + k]);
-			hi[k] = fmax(hi[k], p[i * dim + k]);
-		}
-	*half = 0;
-	for (int k = 0; k < dim; k++) {
-		centre[k] = lo[k] / 2 + hi[k] / 2;
-		*half = fmax(*half, hi[k] / 2 - lo[k] / 2);
-	}
-	if (!(*half > 0))
-		*half = 1;      /* one point: the checks will say so */
-	for (size_t i = 0; i < n; i++)
-		for (int k = 0; k < dim; k++)
-			q[i * dim + k] = (p[i * dim + k] - centre[k]) / *half;
+	for (size_t i = 0; i < n * dim; i++)
+		big = fmax(big, fabs(p[i]));
+	if (big > 0)
+		frexp(big, &e);
+	for (size_t i = 0; i < n * dim; i++)
+		q[i] = ldexp(p[i], -e);
+	return e;
 }
 
 int
@@ -365,9 +355,9 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	struct loft_fit_info dummy;
-	double centre[LOFT_MAXDIM], half, *q;
+	double *q;
 	size_t nseg = o->closed ? n : n - 1;
-	int rc;
+	int rc, e;
 
 	if (info == NULL)
 		info = &dummy;
@@ -376,7 +366,7 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 		return loft__check_knots(o, p, n, dim, err);
 	if ((q = malloc(n * dim * sizeof *q)) == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	unit_box(p, n, dim, q, centre, &half);
+	e = unit_box(p, n, dim, q);
 	rc = loft__check_knots(o, q, n, dim, err);
 	if (rc == 0 && o->method == LOFT_MANNING) {
 		rc = fit_manning(o, q, n, dim, seg, info, err);
@@ -385,14 +375,9 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 		rc = loft__fit_cspline(o, q, n, dim, seg, err);
 	}
 	free(q);
-	/* back to the knots' own units; the knots themselves exactly */
-	for (size_t i = 0; rc == 0 && i < nseg; i++) {
-		double *s = seg + i * 4 * dim;
-
-		vcopy(s, p + i * dim, dim);
-		vcopy(s + dim, p + ((i + 1) % n) * dim, dim);
-		vscale(s + 2 * dim, half, s + 2 * dim, 2 * dim);
-	}
+	/* back to the knots' own units, exactly */
+	for (size_t i = 0; rc == 0 && i < nseg * 4 * dim; i++)
+		seg[i] = ldexp(seg[i], e);
 	return rc;
 }
 
