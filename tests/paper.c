@@ -425,6 +425,12 @@ test_iterations(void)
 
 	CHECK(many <= few + 10, "100000 knots: %d iterations, 22 knots: %d",
 	    many, few);
+	/* segments 1/100000 of the curve long still join in curvature to
+	 * within rounding of their second derivatives (about 1e-16 of the
+	 * coordinates over h^2 kappa, here near 1e-9) */
+	CHECK(continuity(seg, MAXKNOTS, 2, 1).curv < 5e-8,
+	    "100000 knots: curvature jump %g",
+	    continuity(seg, MAXKNOTS, 2, 1).curv);
 	free(p);
 }
 
