@@ -115,7 +115,7 @@ struct loft_record {
 	/* storage */
 	size_t numcap, rowcap, attrcap;
 	char *text;
-	size_t textlen, textcap;
+	size_t textcap;
 };
 
 void loft_record_free(struct loft_record *rec);
