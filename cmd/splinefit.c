@@ -41,20 +41,24 @@ bad_option(int c, const struct loft_error *err)
 	usage(2);
 }
 
-/* The end tangent from a record's attribute key, unless -S/-E gave one. */
+/*
+ * The end tangent named key ("start" or "end"): the one -S or -E gave,
+ * which must have the knots' dim (given_dim) coordinates, or else the
+ * record's attribute, if it has one.
+ */
 static int
 record_tangent(const struct loft_record *rec, const char *key, int dim,
-    int *have, double *t, int *given_dim, struct loft_error *err)
+    int given_dim, int *have, double *t, struct loft_error *err)
 {
 	const char *v = loft_attr(rec, key);
+	int n;
 
-	if (*have && *given_dim != dim)
+	if (*have && given_dim != dim)
 		return loft_fail(err, LOFT_EINPUT, -1, "the %s tangent has %d "
-		    "coordinates but the knots have %d", key, *given_dim, dim);
+		    "coordinates but the knots have %d", key, given_dim, dim);
 	if (*have || v == NULL)
 		return 0;
-	if (loft_parse_list(v, t, dim, given_dim, err) != 0 ||
-	    *given_dim != dim)
+	if (loft_parse_list(v, t, dim, &n, err) != 0 || n != dim)
 		return loft_fail(err, LOFT_EINPUT, -1, "attribute %s=%s: want "
 		    "%d numbers separated by commas", key, v, dim);
 	*have = 1;
@@ -136,10 +140,10 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 		return loft_fail(err, LOFT_EINPUT, 0, "knots have %d "
 		    "coordinate%s; 2 or 3 are needed", dim, dim == 1 ? "" : "s");
 	if (!fit.closed &&
-	    (record_tangent(rec, "start", dim, &fit.have_start, fit.start,
-	    &o->start_dim, err) != 0 ||
-	    record_tangent(rec, "end", dim, &fit.have_end, fit.end,
-	    &o->end_dim, err) != 0))
+	    (record_tangent(rec, "start", dim, o->start_dim, &fit.have_start,
+	    fit.start, err) != 0 ||
+	    record_tangent(rec, "end", dim, o->end_dim, &fit.have_end,
+	    fit.end, err) != 0))
 		return LOFT_EINPUT;
 	if (grow_scratch(o, 4 * (size_t)dim * n, err) != 0)
 		return LOFT_ENOMEM;
