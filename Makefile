@@ -8,10 +8,11 @@ LDLIBS  = -lm
 PREFIX  = /usr/local
 DESTDIR =
 
-PROGS   = splinefit sample
+PROGS   = splinefit sample bezapprox
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
-          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o
-BINS    = bin/splinefit bin/sample
+          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
+          bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o
+BINS    = bin/splinefit bin/sample bin/bezapprox
 TESTS   = bin/test/unit bin/test/paper
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1
