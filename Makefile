@@ -10,9 +10,10 @@ DESTDIR =
 
 PROGS   = splinefit sample
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
-          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o
+          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
+          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o
 BINS    = bin/splinefit bin/sample
-TESTS   = bin/test/unit bin/test/paper
+TESTS   = bin/test/unit bin/test/paper bin/test/patch
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1
 MAN5    = man/loft.5
