@@ -68,9 +68,8 @@ loft_surface_from_record(const struct loft_record *rec,
 	const struct surface_type *t = find_type(rec->type);
 
 	if (t == NULL)
-		return loft_fail(err, LOFT_EINPUT, -1, "%s%s%s record is no "
-		    "surface", rec->type ? "" : "a ", rec->type ? rec->type :
-		    "point", "");
+		return loft_fail(err, LOFT_EINPUT, -1, "%s record is no "
+		    "surface", rec->type ? rec->type : "a point");
 	memset(s, 0, sizeof *s);
 	if (t->check(rec, s, err) != 0)
 		return LOFT_EINPUT;
