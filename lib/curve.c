@@ -16,6 +16,7 @@ struct curve_type {
 
 static const struct curve_type types[] = {
 	{ "cubic", 4, loft_cubic_eval },
+	{ "quartic", 5, loft_quartic_eval },
 };
 
 /* Parse an optional 0/1 attribute; -1 when it is something else. */
