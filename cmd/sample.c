@@ -1,6 +1,8 @@
 /*
  * sample: evaluate each curve record at equal parameter steps and write
- * the points, optionally with parameter, unit tangent and curvature.
+ * the points, optionally with parameter, unit tangent and curvature;
+ * each surface record as a wireframe of iso-parameter lines; or either
+ * as a Wavefront OBJ mesh.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -11,16 +13,42 @@
 struct opts {
 	long per;               /* points per segment */
 	int param, tangent, curvature;
+	int obj;                /* -f obj */
+	long nvert;             /* OBJ vertices written so far */
 };
 
 static const char usage_text[] =
-    "usage: sample [-n per-segment] [-p digits] [-u] [-d] [-k] [file ...]\n";
+    "usage: sample [-n per-segment] [-p digits] [-u] [-d] [-k] "
+    "[-f points|obj] [file ...]\n";
 
 static void
 usage(int status)
 {
 	fputs(usage_text, status ? stderr : stdout);
 	exit(status);
+}
+
+/* OBJ: "o NAME", the record's type and its id= if it has one. */
+static void
+put_object(struct loft_run *run, const struct loft_record *rec)
+{
+	const char *id = loft_attr(rec, "id");
+	char buf[128];
+
+	snprintf(buf, sizeof buf, "o %s%s%.100s", rec->type, id ? "-" : "",
+	    id ? id : "");
+	loft_put_type(&run->w, buf);
+	loft_end_line(&run->w);
+}
+
+/* OBJ: "v x y z", z = 0 in the plane. */
+static void
+put_vertex(struct loft_run *run, const double *p, int dim)
+{
+	loft_put_type(&run->w, "v");
+	for (int q = 0; q < 3; q++)
+		loft_put_num(&run->w, q < dim ? p[q] : 0);
+	loft_end_line(&run->w);
 }
 
 /* One output row: the point, then the columns the options ask for. */
@@ -38,6 +66,10 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 			return loft_fail(err, LOFT_EGEOM, (long)i, "segment %zu "
 			    "overflows at u = %g: coefficients too large", i + 1,
 			    u);
+	if (o->obj) {
+		put_vertex(run, p, dim);
+		return 0;
+	}
 	for (int q = 0; q < dim; q++)
 		loft_put_num(&run->w, p[q]);
 	if (o->param)
@@ -62,14 +94,18 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 }
 
 static int
-sample_record(struct loft_run *run, const struct loft_record *rec,
+sample_curve(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
 {
-	const struct opts *o = run->ctx;
+	struct opts *o = run->ctx;
 	struct loft_curve c;
+	long nv;
+	char buf[32];
 
 	if (loft_curve_from_record(rec, &c, err) != 0)
 		return LOFT_EINPUT;
+	if (o->obj)
+		put_object(run, rec);
 	for (size_t i = 0; i < c.npieces; i++)
 		for (long j = 0; j < o->per; j++)
 			if (put_point(run, &c, i, (double)j / o->per, err) != 0)
@@ -77,21 +113,135 @@ sample_record(struct loft_run *run, const struct loft_record *rec,
 	/* the last segment's end: the first point again on a closed curve */
 	if (put_point(run, &c, c.npieces - 1, 1, err) != 0)
 		return LOFT_EGEOM;
-	loft_end_record(&run->w);
+	if (o->obj) {
+		nv = (long)c.npieces * o->per + 1;
+		loft_put_type(&run->w, "l");
+		for (long k = 1; k <= nv; k++) {
+			snprintf(buf, sizeof buf, " %ld", o->nvert + k);
+			loft_put_type(&run->w, buf);
+		}
+		loft_end_line(&run->w);
+		o->nvert += nv;
+	} else {
+		loft_end_record(&run->w);
+	}
 	return 0;
+}
+
+/* The point of s at (u, v), checked: 0, or LOFT_EGEOM on overflow. */
+static int
+surface_point(const struct loft_surface *s, double u, double v, double *p,
+    struct loft_error *err)
+{
+	loft_surface_eval(s, u, v, p, NULL, NULL);
+	for (int q = 0; q < s->dim; q++)
+		if (!isfinite(p[q]))
+			return loft_fail(err, LOFT_EGEOM, -1, "%s overflows at "
+			    "u = %g, v = %g: coefficients too large", s->type,
+			    u, v);
+	return 0;
+}
+
+/*
+ * A surface as a wireframe: the lines u = j/n, then v = j/n, j = 0..n,
+ * each a point record of n + 1 points, with u and v after the point
+ * under -u.
+ */
+static int
+wireframe(struct loft_run *run, const struct loft_surface *s,
+    struct loft_error *err)
+{
+	const struct opts *o = run->ctx;
+	double p[LOFT_MAXDIM];
+	long n = o->per;
+
+	for (int dir = 0; dir < 2; dir++)
+		for (long j = 0; j <= n; j++) {
+			for (long k = 0; k <= n; k++) {
+				double a = (double)j / n, b = (double)k / n;
+				double u = dir == 0 ? a : b, v = dir == 0 ? b : a;
+
+				if (surface_point(s, u, v, p, err) != 0)
+					return LOFT_EGEOM;
+				for (int q = 0; q < s->dim; q++)
+					loft_put_num(&run->w, p[q]);
+				if (o->param) {
+					loft_put_num(&run->w, u);
+					loft_put_num(&run->w, v);
+				}
+				loft_end_line(&run->w);
+			}
+			loft_end_record(&run->w);
+		}
+	return 0;
+}
+
+/*
+ * A surface as an OBJ mesh: (n + 1)^2 vertices, u-major, and two
+ * triangles a cell, counter-clockwise in (u, v), so their normals point
+ * along f_u x f_v.
+ */
+static int
+mesh(struct loft_run *run, const struct loft_record *rec,
+    const struct loft_surface *s, struct loft_error *err)
+{
+	struct opts *o = run->ctx;
+	double p[LOFT_MAXDIM];
+	long n = o->per, base = o->nvert + 1;
+	char buf[96];
+
+	put_object(run, rec);
+	for (long j = 0; j <= n; j++)
+		for (long k = 0; k <= n; k++) {
+			if (surface_point(s, (double)j / n, (double)k / n, p,
+			    err) != 0)
+				return LOFT_EGEOM;
+			put_vertex(run, p, s->dim);
+		}
+	for (long j = 0; j < n; j++)
+		for (long k = 0; k < n; k++) {
+			long a = base + j * (n + 1) + k, b = a + n + 1;
+
+			snprintf(buf, sizeof buf, "f %ld %ld %ld", a, b, b + 1);
+			loft_put_type(&run->w, buf);
+			loft_end_line(&run->w);
+			snprintf(buf, sizeof buf, "f %ld %ld %ld", a, b + 1, a + 1);
+			loft_put_type(&run->w, buf);
+			loft_end_line(&run->w);
+		}
+	o->nvert += (n + 1) * (n + 1);
+	return 0;
+}
+
+static int
+sample_record(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	const struct opts *o = run->ctx;
+	struct loft_surface s;
+
+	if (!loft_is_surface(rec))
+		return sample_curve(run, rec, err);
+	if (loft_surface_from_record(rec, &s, err) != 0)
+		return LOFT_EINPUT;
+	if (o->tangent || o->curvature)
+		return loft_fail(err, LOFT_EINPUT, -1, "-d and -k need a curve; "
+		    "a %s record has no tangent or curvature", rec->type);
+	return o->obj ? mesh(run, rec, &s, err) : wireframe(run, &s, err);
 }
 
 int
 main(int argc, char *argv[])
 {
-	struct opts o = { 16, 0, 0, 0 };
+	static const char *const formats[] = { "points", "obj", NULL };
+	struct opts o = { 16, 0, 0, 0, 0, 0 };
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
 	long digits;
 	int c;
 
-	while ((c = getopt(argc, argv, "n:p:udkh")) != -1) {
+	while ((c = getopt(argc, argv, "n:p:udkf:h")) != -1) {
 		switch (c) {
 		case 'n':
 			if (loft_parse_int(optarg, 1, 1000000, &o.per, &err))
@@ -105,9 +255,18 @@ main(int argc, char *argv[])
 		case 'u': o.param = 1; break;
 		case 'd': o.tangent = 1; break;
 		case 'k': o.curvature = 1; break;
+		case 'f':
+			if (loft_parse_word(optarg, formats, &o.obj, &err))
+				goto bad;
+			break;
 		case 'h': usage(0); break;
 		default: usage(2);
 		}
+	}
+	if (o.obj && (o.param || o.tangent || o.curvature)) {
+		fputs("sample: -u, -d and -k add columns to points; "
+		    "-f obj has none\n", stderr);
+		usage(2);
 	}
 	return loft_run_files(&run, argc - optind, argv + optind);
 bad:

@@ -23,6 +23,7 @@ struct curve_type {
 
 static const struct curve_type types[] = {
 	{ "cubic", 4, loft_cubic_eval, NULL },
+	{ "quartic", 5, loft_quartic_eval, NULL },
 	{ "bezier", 1, NULL, loft_bezier_eval },
 };
 

@@ -99,4 +99,16 @@ int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
 /* Grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
 
+/* quartic.c: the quartic with coefficient vectors k[0..4] at u (any of
+ * p, d1, d2 may be NULL); loft_quartic_eval over pointers. */
+void loft__quartic_combine(const double *const *k, int dim, double u,
+    double *p, double *d1, double *d2);
+
+/* quartic.c: H5(u) = 16 u^2 (1 - u)^2, the bump of section 4. */
+double loft__h5(double u);
+
+/* quartic.c: the quartic coefficients, over x in [0, 1], of
+ * H5(a + b x): the restriction of the bump to a piece of it. */
+void loft__bump(double a, double b, double *coef);
+
 #endif

@@ -484,4 +484,322 @@ int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
 int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err);
 
+/* ------------------------------------------------------------------ */
+/* Whole records, and whole designs (stream.c, run.c)                  */
+
+/*
+ * Copy src into dst, which is zeroed or holds an earlier record (its
+ * storage is reused).  Returns 0 or LOFT_ENOMEM.  Free dst with
+ * loft_record_free.
+ */
+int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
+
+/* Write rec to w as it was read: header, attributes, rows, blank line. */
+void loft_put_record(struct loft_writer *w, const struct loft_record *rec);
+
+/*
+ * A handler of a whole design: all n records of the input at once.  It
+ * writes what it makes to run->w and returns 0, or reports each problem
+ * with loft_report (or on run->msg) and returns nonzero; then nothing is
+ * written.
+ */
+typedef int (*loft_design_handler)(struct loft_run *run,
+    const struct loft_record *recs, size_t n);
+
+/*
+ * Read every record of the named files (as loft_run_files does: "-" is
+ * standard input, no names: standard input) and hand them all, in
+ * order, to design, once.  When any record was bad or any file
+ * unreadable, each gets its message as in loft_run_files, design is not
+ * called, and nothing is written.  Otherwise what design wrote goes out
+ * whole, or nothing when it failed.  run->handle is not used.  Returns
+ * the exit status: 0, or 1 when anything was reported or a write failed.
+ */
+int loft_run_design(struct loft_run *run, int nfiles, char **files,
+    loft_design_handler design);
+
+/* ------------------------------------------------------------------ */
+/* MacCallum's quartic curves (quartic.c)                              */
+
+/*
+ * A quartic segment (MacCallum 1970, section 4) is five vectors of dim
+ * numbers: (0), (1), (0)_u, (1)_u, (h): its end points, its derivatives
+ * there, and its point at u = 1/2.  A `quartic` record has one segment
+ * a row.
+ */
+
+/* The paper's 5 x 5 matrix M over the basis [u^4 u^3 u^2 u 1]. */
+extern const double loft_quartic_m[5][5];
+
+/*
+ * The blending functions H1..H5 at u (h[0..4]) and their first and
+ * second derivatives; any of h, dh, d2h may be NULL.
+ */
+void loft_quartic_h(double u, double *h, double *dh, double *d2h);
+
+/*
+ * Evaluate a quartic segment q at u: point, first and second derivative
+ * (any may be NULL).  Same signature as loft_cubic_eval.  At u = 0, 1/2
+ * and 1 the point is exactly (0), (h) and (1).
+ */
+void loft_quartic_eval(const double *q, int dim, double u,
+    double *p, double *d1, double *d2);
+
+/*
+ * The quartic form of the cubic segment P_A P_B P'_A P'_B: the same four
+ * vectors, then (h) = the cubic's point at u = 1/2.  q (5 * dim numbers)
+ * may be the cubic's own array if it has room.
+ */
+void loft_cubic_to_quartic(const double *cubic, int dim, double *q);
+
+/* How a drag was done (section 4). */
+enum {
+	LOFT_DRAG_CENTRAL,      /* only (h), or (hh), changed */
+	LOFT_DRAG_EDGE,         /* near an edge: this piece and its neighbour */
+	LOFT_DRAG_FALLBACK      /* near an edge with no neighbour usable:
+	                           the central rule, and why in why */
+};
+
+struct loft_drag_info {
+	int rule;
+	long piece;             /* the segment or patch index dragged */
+	long other;             /* the neighbour that changed too, or -1 */
+	int edge;               /* patches: the nearer edge (enum loft_edge) */
+	double hd, hp;          /* H_d at the dragged point, H_p at the join */
+	const char *why;        /* LOFT_DRAG_FALLBACK: the reason */
+};
+
+/*
+ * Drag the point at parameter U of a curve of nseg quartic segments q
+ * (segment i over [i, i + 1]) by delta (dim numbers).  A point whose
+ * distance to the nearer end of its segment is at least edge (in the
+ * segment's parameter) moves by the central rule, delta(h) = delta /
+ * H5(u); nearer an end, that segment and the one across the end (the
+ * first and last are neighbours on a closed curve) change together by
+ * the two-segment rule, or, where there is none, the central rule
+ * applies.  Returns 0 and fills info, or LOFT_EINPUT (U outside 0 to
+ * nseg) or LOFT_EGEOM (the point is an end of an open curve, which
+ * cannot move).
+ */
+int loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
+    const double *delta, double edge, struct loft_drag_info *info,
+    struct loft_error *err);
+
+/*
+ * Section 4's first constraint: remove from delta its component along
+ * the viewing direction view, so depth does not change.  Returns 0, or
+ * LOFT_EGEOM when view is zero or nothing of delta is left (less than
+ * LOFT_DRAG_ZERO of its length, or delta is zero to begin with).
+ */
+#define LOFT_DRAG_ZERO 1e-12
+int loft_drag_project(double *delta, const double *view, int dim,
+    struct loft_error *err);
+
+/* ------------------------------------------------------------------ */
+/* MacCallum's bi-quartic patches (patch.c)                            */
+
+/*
+ * A patch f(u, v) = u M B M^t v^t over [0,1] x [0,1] (section 4): B is
+ * 5 x 5 vectors of dim numbers, b[(5 * i + j) * dim + k], row i for the
+ * u-coefficient (0), (1), (0)_u, (1)_u, (h) and column j for the same in
+ * v; a `patch` record's row i holds B[i][0..4].
+ */
+#define LOFT_PATCH_NUMS (25 * LOFT_MAXDIM)
+
+/*
+ * Evaluate the patch b at (u, v): the point and its u- and
+ * v-derivatives (any of p, du, dv may be NULL).  At u, v in {0, 1/2, 1}
+ * the point is exactly the corresponding coefficient.
+ */
+void loft_patch_eval(const double *b, int dim, double u, double v,
+    double *p, double *du, double *dv);
+
+/*
+ * Section 5: the two patches b1 (parameter 0 to t) and b2 (t to 1) that
+ * are b cut along u = t (dir 0) or v = t (dir 1), 0 < t < 1, each over
+ * its own [0,1] x [0,1].  Every entry is recomputed from b, twists and
+ * (h) entries included; the entries of the common edge are the same
+ * numbers in both.
+ */
+void loft_patch_split_coef(const double *b, int dim, int dir, double t,
+    double *b1, double *b2);
+
+/* The edges of a patch: u = 0, u = 1, v = 0, v = 1. */
+enum loft_edge { LOFT_U0, LOFT_U1, LOFT_V0, LOFT_V1 };
+
+/*
+ * A neighbour across an edge (loft.5): patch id shares the part of this
+ * edge between edge parameters a and b (v on the u edges, u on the v
+ * edges), which runs from a to b as the neighbour's own edge parameter
+ * increases.
+ */
+struct loft_link {
+	long id;
+	double a, b;
+};
+
+/* One patch of a design, as patch.c reads and writes it. */
+struct loft_patch {
+	long id;
+	int dim;
+	double scale[2];        /* su, sv: scale factors (section 5) */
+	double b[LOFT_PATCH_NUMS];
+	struct loft_link *link[4];      /* by enum loft_edge, sorted */
+	size_t nlink[4], linkcap[4];
+	const struct loft_record *rec;  /* where it was read, or NULL */
+};
+
+/* A design: patches that name each other as neighbours. */
+struct loft_design {
+	struct loft_patch *p;
+	size_t n, cap;
+	long maxid;             /* the largest id in use */
+};
+
+/* The edge names of loft.5, "u0" "u1" "v0" "v1", by enum loft_edge. */
+extern const char *const loft_edge_name[4];
+
+/*
+ * Read a `patch` record (loft.5) and append it to d, keeping a pointer
+ * to rec for messages and for its other attributes.  Returns 0, or
+ * LOFT_EINPUT (wrong rows or numbers, a bad or missing id=, scale factor
+ * or neighbour list) or LOFT_ENOMEM.
+ */
+int loft_design_add(struct loft_design *d, const struct loft_record *rec,
+    struct loft_error *err);
+
+/*
+ * Append a patch with coefficients b, id and no neighbours (scale
+ * factors 1).  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_design_new(struct loft_design *d, const double *b, int dim,
+    long id, struct loft_error *err);
+
+void loft_design_free(struct loft_design *d);
+
+/* The index of the patch with id, or -1. */
+long loft_design_find(const struct loft_design *d, long id);
+
+/*
+ * Check that ids are unique, every patch has the same dim, and each
+ * neighbour named exists and names the patch back with the same sense.
+ * Returns 0, or LOFT_EINPUT with *bad the index of the patch at fault.
+ */
+int loft_design_check(const struct loft_design *d, size_t *bad,
+    struct loft_error *err);
+
+/*
+ * Read the `patch` records among recs[0..n) into d, in order (other
+ * records are left to the caller), and check the design.  Each bad
+ * record or link gets its message through loft_report.  Returns 0, or
+ * nonzero after reporting.
+ */
+int loft_design_from_records(struct loft_run *run,
+    const struct loft_record *recs, size_t n, struct loft_design *d);
+
+/* Write patch i of d as a `patch` record, keeping its other attributes. */
+void loft_design_put(struct loft_writer *w, const struct loft_design *d,
+    size_t i);
+
+/*
+ * Section 5: split patch i along u = t (dir 0) or v = t (dir 1) into
+ * two patches with new ids (d->maxid + 1, + 2) that take its place at
+ * i and i + 1, scale factors multiplied by t and 1 - t, and neighbour
+ * links updated on both sides, T-junctions included.  Returns 0 or
+ * LOFT_ENOMEM.
+ */
+int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
+    struct loft_error *err);
+
+/*
+ * Section 4: drag the point (u, v) of patch i by delta.  Nearer than
+ * edge to an edge with one neighbour sharing all of it, the two patches
+ * change by one bi-quartic bump over both; otherwise (hh) alone changes
+ * by delta / (H5(u) H5(v)).  Returns 0 and fills info, or LOFT_EGEOM
+ * when the point is on an edge that the drag cannot move.
+ */
+int loft_design_drag(struct loft_design *d, size_t i, double u, double v,
+    const double *delta, double edge, struct loft_drag_info *info,
+    struct loft_error *err);
+
+struct loft_join_info {
+	int edge_p, edge_s;     /* the joined edges (enum loft_edge) */
+	int reversed;           /* the edges run opposite ways */
+	double gap;             /* largest distance between them before */
+	double size;            /* the larger patch's size */
+	double pos_after;       /* largest distance after */
+	double slope_after;     /* largest slope mismatch after, relative */
+};
+
+/*
+ * Section 6: join patch is (subsidiary) to patch ip (principal), which
+ * does not change: the subsidiary's edge nearest an edge of the
+ * principal becomes that edge, and its cross-boundary derivatives those
+ * of the principal times the ratio of the scale factors, so slopes are
+ * continuous; both are linked as neighbours.  Edges farther apart than
+ * LOFT_JOIN_GAP of the larger patch's size do not meet.  Returns 0 and
+ * fills info, or LOFT_EGEOM (no edge within reach, an edge already
+ * linked, or a neighbour of the subsidiary that the join would break).
+ */
+#define LOFT_JOIN_GAP 0.05
+int loft_design_join(struct loft_design *d, size_t ip, size_t is,
+    struct loft_join_info *info, struct loft_error *err);
+
+/*
+ * The size of patch b: the diagonal of the box around its points on a
+ * 5 x 5 grid.  Used to make tolerances scale-free.
+ */
+double loft_patch_size(const double *b, int dim);
+
+/*
+ * A patch from four corners p00, p10, p01, p11 (dim numbers each): the
+ * bilinear patch through them, whose twist is the constant
+ * p00 - p10 - p01 + p11.
+ */
+void loft_patch_bilinear(const double *corner, int dim, double *b);
+
+/*
+ * A patch from four boundary quartics (5 * dim numbers each): c[0] the
+ * edge v = 0 and c[1] the edge v = 1, both running in u; c[2] the edge
+ * u = 0 and c[3] the edge u = 1, both running in v; by Coons' bilinearly
+ * blended construction.  Corners must agree within LOFT_CORNER_TOL of
+ * the curves' size; the corners are taken from c[0] and c[1].  Returns
+ * 0, or LOFT_EGEOM naming the corner that does not match, with row the
+ * index of the curve whose end misses.
+ */
+#define LOFT_CORNER_TOL 1e-9
+int loft_patch_coons(const double *const *c, int dim, double *b,
+    struct loft_error *err);
+
+/* ------------------------------------------------------------------ */
+/* Surfaces of any record type, for programs that evaluate them        */
+/* (surface.c)                                                         */
+
+struct loft_surface {
+	const char *type;
+	const double *coef;     /* the record's rows */
+	int dim;
+	int m, n;               /* the type's own shape, if it has one */
+	void (*eval)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv);
+};
+
+/* Whether rec's type is a surface type (`patch` now). */
+int loft_is_surface(const struct loft_record *rec);
+
+/*
+ * Recognise rec as a surface record of a known type and fill s, which
+ * points into rec.  Returns 0, or LOFT_EINPUT when it is not one or its
+ * rows do not fit its type.
+ */
+int loft_surface_from_record(const struct loft_record *rec,
+    struct loft_surface *s, struct loft_error *err);
+
+/*
+ * Evaluate s at (u, v) in [0,1] x [0,1]: point and the two partial
+ * derivatives (any may be NULL).
+ */
+void loft_surface_eval(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv);
+
 #endif

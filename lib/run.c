@@ -4,6 +4,7 @@
  * after a bad record or an unreadable file, fail on a write error.
  */
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
@@ -149,4 +150,78 @@ loft_run_files(struct loft_run *run, int nfiles, char **files)
 		}
 	}
 	return finish(run);
+}
+
+/* The records loft_run_design collects before it hands them over. */
+struct collected {
+	struct loft_record *recs;
+	size_t n, cap;
+};
+
+static int
+collect(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	struct collected *c = run->ctx;
+
+	if (loft__grow((void **)&c->recs, &c->cap, c->n + 1,
+	    sizeof *c->recs) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	memset(&c->recs[c->n], 0, sizeof c->recs[c->n]);
+	if (loft_record_copy(&c->recs[c->n], rec) != 0) {
+		loft_record_free(&c->recs[c->n]);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	c->n++;
+	return 0;
+}
+
+int
+loft_run_design(struct loft_run *run, int nfiles, char **files,
+    loft_design_handler design)
+{
+	struct collected c = { 0 };
+	void *ctx = run->ctx;
+	struct loft_error err;
+	int status;
+
+	run->ctx = &c;
+	run->handle = collect;
+	status = loft_run_files(run, nfiles, files);
+	run->ctx = ctx;
+	if (status != 0) {
+		if (c.n > 0)
+			fprintf(run->msg, "%s: nothing written: the input "
+			    "is one design, and part of it is bad\n",
+			    run->prog);
+	} else {
+		run->w.len = 0;         /* loft_run_files freed it */
+		run->w.bad = run->w.col = 0;
+		if (design(run, c.recs, c.n) != 0) {
+			run->status = 1;
+		} else if (run->w.bad) {
+			err.line = 0;
+			err.row = -1;
+			snprintf(err.msg, sizeof err.msg, "%s", run->w.bad ==
+			    LOFT_ENOMEM ? "out of memory" : "result is not "
+			    "finite (the input is too extreme)");
+			if (c.n > 0)
+				loft_report(run, &c.recs[0], &err);
+			else
+				fprintf(run->msg, "%s: %s\n", run->prog,
+				    err.msg);
+		} else {
+			errno = 0;
+			if (commit(run) != 0 || fflush(run->out) != 0 ||
+			    ferror(run->out))
+				status = write_failed(run);
+		}
+		loft_writer_free(&run->w);
+		if (run->status != 0)
+			status = 1;
+	}
+	for (size_t i = 0; i < c.n; i++)
+		loft_record_free(&c.recs[i]);
+	free(c.recs);
+	return status;
 }

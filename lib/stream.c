@@ -424,3 +424,53 @@ loft_writer_free(struct loft_writer *w)
 	w->buf = NULL;
 	w->len = w->cap = 0;
 }
+
+int
+loft_record_copy(struct loft_record *dst, const struct loft_record *src)
+{
+	size_t nnum = src->nrows * (size_t)src->ncols, tlen = 0;
+
+	if (src->type != NULL) {
+		/* the header text: type and attributes, NUL-separated */
+		tlen = src->nattr > 0 ? (size_t)(src->attr[src->nattr - 1].val -
+		    src->text) + strlen(src->attr[src->nattr - 1].val) + 1 :
+		    strlen(src->type) + 1;
+	}
+	if (loft__grow((void **)&dst->text, &dst->textcap, tlen + 1, 1) != 0 ||
+	    loft__grow((void **)&dst->attr, &dst->attrcap, src->nattr + 1,
+	    sizeof *dst->attr) != 0 ||
+	    loft__grow((void **)&dst->num, &dst->numcap, nnum + 1,
+	    sizeof *dst->num) != 0 ||
+	    loft__grow((void **)&dst->rowline, &dst->rowcap, src->nrows + 1,
+	    sizeof *dst->rowline) != 0)
+		return LOFT_ENOMEM;
+	if (tlen > 0)
+		memcpy(dst->text, src->text, tlen);
+	dst->type = src->type ? dst->text + (src->type - src->text) : NULL;
+	for (size_t i = 0; i < src->nattr; i++) {
+		dst->attr[i].key = dst->text + (src->attr[i].key - src->text);
+		dst->attr[i].val = dst->text + (src->attr[i].val - src->text);
+	}
+	dst->nattr = src->nattr;
+	memcpy(dst->num, src->num, nnum * sizeof *dst->num);
+	memcpy(dst->rowline, src->rowline, src->nrows * sizeof *dst->rowline);
+	dst->nrows = src->nrows;
+	dst->ncols = src->ncols;
+	dst->line = src->line;
+	dst->file = src->file;
+	return 0;
+}
+
+void
+loft_put_record(struct loft_writer *w, const struct loft_record *rec)
+{
+	if (rec->type != NULL) {
+		loft_put_type(w, rec->type);
+		for (size_t i = 0; i < rec->nattr; i++)
+			loft_put_attr(w, rec->attr[i].key, rec->attr[i].val);
+		loft_end_line(w);
+	}
+	for (size_t i = 0; i < rec->nrows; i++)
+		loft_put_row(w, rec->num + i * rec->ncols, rec->ncols);
+	loft_end_record(w);
+}

@@ -1,0 +1,130 @@
+/*
+ * patchsplit: split patches of a design along a line of constant u or v
+ * (MacCallum 1970, section 5); the two halves are identical to the
+ * patch they replace.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "loft.h"
+
+struct opts {
+	int dir;                /* 0: -u, 1: -v, -1: not given */
+	double t;
+	long id;                /* -i, or 0: every patch */
+};
+
+static const char usage_text[] =
+    "usage: patchsplit -u t | -v t [-i id] [-p digits] [file ...]\n";
+
+static void
+usage(int status)
+{
+	fputs(usage_text, status ? stderr : stdout);
+	exit(status);
+}
+
+static int
+split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
+{
+	const struct opts *o = run->ctx;
+	struct loft_design d = { 0 };
+	struct loft_error err;
+	int rc = 0;
+
+	for (size_t i = 0; i < n && rc == 0; i++)
+		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
+			loft_fail(&err, LOFT_EINPUT, -1, "%s record: patchsplit "
+			    "reads patch records", recs[i].type ? recs[i].type :
+			    "point");
+			err.line = 0;
+			loft_report(run, &recs[i], &err);
+			rc = 1;
+		}
+	if (rc == 0 && loft_design_from_records(run, recs, n, &d) != 0)
+		rc = 1;
+	if (rc == 0 && o->id != 0) {
+		long i = loft_design_find(&d, o->id);
+
+		if (i < 0) {
+			fprintf(run->msg, "patchsplit: no patch with id %ld in "
+			    "the input\n", o->id);
+			rc = 1;
+		} else if (loft_design_split(&d, (size_t)i, o->dir, o->t,
+		    &err) != 0) {
+			loft_report(run, d.p[i].rec, &err);
+			rc = 1;
+		}
+	} else if (rc == 0) {
+		/* each patch of the input in turn; its halves follow it */
+		size_t count = d.n;
+
+		for (size_t k = 0, i = 0; k < count && rc == 0; k++, i += 2)
+			if (loft_design_split(&d, i, o->dir, o->t, &err) != 0) {
+				loft_report(run, d.p[i].rec, &err);
+				rc = 1;
+			}
+	}
+	for (size_t i = 0; rc == 0 && i < d.n; i++)
+		loft_design_put(&run->w, &d, i);
+	loft_design_free(&d);
+	return rc;
+}
+
+/* t of -u or -v: strictly between 0 and 1. */
+static void
+parse_t(int c, const char *arg, struct opts *o)
+{
+	struct loft_error err;
+
+	if (o->dir >= 0) {
+		fputs("patchsplit: give one of -u and -v\n", stderr);
+		usage(2);
+	}
+	if (loft_parse_real(arg, 0, 1, &o->t, &err) != 0 ||
+	    !(o->t > 0 && o->t < 1)) {
+		fprintf(stderr, "patchsplit: -%c '%s': want a number between "
+		    "0 and 1, both excluded\n", c, arg);
+		usage(2);
+	}
+	o->dir = c == 'u' ? 0 : 1;
+}
+
+int
+main(int argc, char *argv[])
+{
+	struct opts o = { .dir = -1 };
+	struct loft_run run = { .prog = "patchsplit", .out = stdout,
+	    .msg = stderr, .ctx = &o };
+	struct loft_error err;
+	long whole;
+	int c;
+
+	while ((c = getopt(argc, argv, "u:v:i:p:h")) != -1) {
+		switch (c) {
+		case 'u':
+		case 'v': parse_t(c, optarg, &o); break;
+		case 'i':
+			if (loft_parse_int(optarg, 1, 1000000000, &o.id, &err))
+				goto bad;
+			break;
+		case 'p':
+			if (loft_parse_int(optarg, 1, 17, &whole, &err))
+				goto bad;
+			run.w.digits = whole;
+			break;
+		case 'h': usage(0); break;
+		default: usage(2);
+		}
+	}
+	if (o.dir < 0) {
+		fputs("patchsplit: give -u t or -v t\n", stderr);
+		usage(2);
+	}
+	return loft_run_design(&run, argc - optind, argv + optind,
+	    split_design);
+bad:
+	fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
+	usage(2);
+}

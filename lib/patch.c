@@ -1,0 +1,1021 @@
+/*
+ * patch.c: MacCallum's bi-quartic patches (MacCallum 1970, sections 3
+ * to 6): evaluation, `patch` records and designs of patches that name
+ * their neighbours, splitting, dragging, joining, and first patches.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+const char *const loft_edge_name[4] = { "u0", "u1", "v0", "v1" };
+
+/*
+ * Two ends of links closer than this, in an edge's parameter [0, 1],
+ * are the same place: a split at the parameter of an earlier T-junction,
+ * reached through a few rescalings that each round by 1e-16, must not
+ * leave a sliver of a link behind.
+ */
+#define LINK_EPS 1e-9
+
+/* Ids go up to this, so that new ones fit a long on every system. */
+#define ID_MAX 1000000000L
+
+/* Entry (i, j) of B, dim numbers. */
+#define BIJ(b, i, j, dim) ((b) + (5 * (i) + (j)) * (dim))
+
+/*
+ * Section 4: f(u, v) = u M B M^t v^t = sum_i H_i(u) g_i(v), where
+ * g_i(v) = sum_j B[i][j] H_j(v) is the quartic in v of row i.
+ */
+void
+loft_patch_eval(const double *b, int dim, double u, double v,
+    double *p, double *du, double *dv)
+{
+	double g[5][LOFT_MAXDIM], gv[5][LOFT_MAXDIM];
+	const double *k[5];
+
+	for (int i = 0; i < 5; i++) {
+		for (int j = 0; j < 5; j++)
+			k[j] = BIJ(b, i, j, dim);
+		loft__quartic_combine(k, dim, v, g[i], dv ? gv[i] : NULL,
+		    NULL);
+	}
+	for (int i = 0; i < 5; i++)
+		k[i] = g[i];
+	loft__quartic_combine(k, dim, u, p, du, NULL);
+	if (dv != NULL) {
+		for (int i = 0; i < 5; i++)
+			k[i] = gv[i];
+		loft__quartic_combine(k, dim, u, dv, NULL, NULL);
+	}
+}
+
+/*
+ * Section 5.  The piece of a quartic from lo to hi, over its own
+ * s in [0, 1] (u = lo + s (hi - lo)), has coefficients
+ * sum_k W[i][k] K_k: the values H_k(lo) and H_k(hi), (hi - lo) times
+ * the slopes H'_k there, and H_k at the middle.  At lo = 0 and hi = 1
+ * the rows are unit vectors (H exact there), so the old edge's entries
+ * are copied unchanged; the paper's list of scaled slopes and twists
+ * is rows 0 to 3 of this, and row 4 recomputes the (h) entries.
+ */
+static void
+split_weights(double lo, double hi, double w[5][5])
+{
+	double h[5], dh[5], len = hi - lo;
+
+	loft_quartic_h(lo, h, dh, NULL);
+	for (int k = 0; k < 5; k++) {
+		w[0][k] = h[k];
+		w[2][k] = len * dh[k];
+	}
+	loft_quartic_h(hi, h, dh, NULL);
+	for (int k = 0; k < 5; k++) {
+		w[1][k] = h[k];
+		w[3][k] = len * dh[k];
+	}
+	loft_quartic_h(lo + len / 2, h, NULL, NULL);
+	for (int k = 0; k < 5; k++)
+		w[4][k] = h[k];
+}
+
+/* b2 = W b (dir 0, acting on the u index) or b W^t (dir 1). */
+static void
+apply_weights(const double *b, int dim, int dir, double w[5][5], double *b2)
+{
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++)
+			for (int c = 0; c < dim; c++) {
+				double s = 0;
+
+				for (int k = 0; k < 5; k++)
+					s += dir == 0 ?
+					    w[i][k] * BIJ(b, k, j, dim)[c] :
+					    w[j][k] * BIJ(b, i, k, dim)[c];
+				BIJ(b2, i, j, dim)[c] = s;
+			}
+}
+
+void
+loft_patch_split_coef(const double *b, int dim, int dir, double t,
+    double *b1, double *b2)
+{
+	double w[5][5];
+
+	split_weights(0, t, w);
+	apply_weights(b, dim, dir, w, b1);
+	split_weights(t, 1, w);
+	apply_weights(b, dim, dir, w, b2);
+}
+
+double
+loft_patch_size(const double *b, int dim)
+{
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], p[LOFT_MAXDIM], s = 0;
+
+	for (int i = 0; i <= 4; i++)
+		for (int j = 0; j <= 4; j++) {
+			loft_patch_eval(b, dim, i / 4.0, j / 4.0, p, NULL, NULL);
+			for (int c = 0; c < dim; c++) {
+				if ((i == 0 && j == 0) || p[c] < lo[c])
+					lo[c] = p[c];
+				if ((i == 0 && j == 0) || p[c] > hi[c])
+					hi[c] = p[c];
+			}
+		}
+	for (int c = 0; c < dim; c++)
+		s += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+	return sqrt(s);
+}
+
+/* ------------------------------------------------------------------ */
+/* First patches */
+
+/* The quartic coefficients of 1 - u and of u. */
+static const double lin0[5] = { 1, 0, -1, -1, 0.5 };
+static const double lin1[5] = { 0, 1, 1, 1, 0.5 };
+
+/* B[i][j] = sum over corners of l_a[i] l_b[j] P_ab: the bilinear patch. */
+void
+loft_patch_bilinear(const double *corner, int dim, double *b)
+{
+	const double *p00 = corner, *p10 = corner + dim,
+	    *p01 = corner + 2 * dim, *p11 = corner + 3 * dim;
+
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++)
+			for (int c = 0; c < dim; c++)
+				BIJ(b, i, j, dim)[c] =
+				    lin0[i] * lin0[j] * p00[c] +
+				    lin1[i] * lin0[j] * p10[c] +
+				    lin0[i] * lin1[j] * p01[c] +
+				    lin1[i] * lin1[j] * p11[c];
+}
+
+/*
+ * Coons' bilinearly blended patch, the Boolean sum
+ *   f = (1 - u) a(v) + u b(v) + (1 - v) c(u) + v d(u) - bilinear(corners)
+ * with a, b the edges u = 0, 1 and c, d the edges v = 0, 1.  Each term
+ * is a tensor of quartics, so f is a bi-quartic: B = l (x) a + ... .
+ * Its cross-boundary derivatives blend linearly between the corners,
+ * and its twist at (0,0), for one, is
+ *   (10)_v - (00)_v + (01)_u - (00)_u - ((11) - (10) - (01) + (00)).
+ */
+int
+loft_patch_coons(const double *const *cv, int dim, double *b,
+    struct loft_error *err)
+{
+	static const char *const what[4] = { "1 (v=0)", "2 (v=1)",
+	    "3 (u=0)", "4 (u=1)" };
+	/* corner: name, curve and end (0 start, 1 end) on each side */
+	static const struct { const char *name; int c1, e1, c2, e2; } cn[4] = {
+		{ "(00)", 0, 0, 2, 0 }, { "(10)", 0, 1, 3, 0 },
+		{ "(01)", 1, 0, 2, 1 }, { "(11)", 1, 1, 3, 1 },
+	};
+	double corner[4 * LOFT_MAXDIM], lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
+	double size = 0;
+
+	for (int q = 0; q < 4; q++)
+		for (int e = 0; e < 2; e++)
+			for (int c = 0; c < dim; c++) {
+				double x = cv[q][e * dim + c];
+
+				if ((q == 0 && e == 0) || x < lo[c])
+					lo[c] = x;
+				if ((q == 0 && e == 0) || x > hi[c])
+					hi[c] = x;
+			}
+	for (int c = 0; c < dim; c++)
+		size += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+	size = sqrt(size);
+	for (int k = 0; k < 4; k++) {
+		const double *x = cv[cn[k].c1] + cn[k].e1 * dim,
+		    *y = cv[cn[k].c2] + cn[k].e2 * dim;
+		double gap = vdist(x, y, dim);
+
+		if (!(gap <= LOFT_CORNER_TOL * size))
+			return loft_fail(err, LOFT_EGEOM, cn[k].c2, "corner %s: "
+			    "the %s of curve %s is %g from the %s of curve %s",
+			    cn[k].name, cn[k].e1 ? "end" : "start",
+			    what[cn[k].c1], gap, cn[k].e2 ? "end" : "start",
+			    what[cn[k].c2]);
+		vcopy(corner + k * dim, x, dim);
+	}
+	loft_patch_bilinear(corner, dim, b);
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++)
+			for (int c = 0; c < dim; c++)
+				BIJ(b, i, j, dim)[c] =
+				    lin0[i] * cv[2][j * dim + c] +
+				    lin1[i] * cv[3][j * dim + c] +
+				    cv[0][i * dim + c] * lin0[j] +
+				    cv[1][i * dim + c] * lin1[j] -
+				    BIJ(b, i, j, dim)[c];
+	/* the boundaries exactly as given, corners from c and d */
+	for (int k = 0; k < 5; k++) {
+		vcopy(BIJ(b, 0, k, dim), cv[2] + k * dim, dim);
+		vcopy(BIJ(b, 1, k, dim), cv[3] + k * dim, dim);
+	}
+	for (int k = 0; k < 5; k++) {
+		vcopy(BIJ(b, k, 0, dim), cv[0] + k * dim, dim);
+		vcopy(BIJ(b, k, 1, dim), cv[1] + k * dim, dim);
+	}
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Designs: patch records and neighbour links */
+
+static int
+add_link(struct loft_patch *p, int e, long id, double a, double b)
+{
+	size_t i;
+
+	if (loft__grow((void **)&p->link[e], &p->linkcap[e], p->nlink[e] + 1,
+	    sizeof *p->link[e]) != 0)
+		return LOFT_ENOMEM;
+	/* keep the list sorted by where each link starts on the edge */
+	for (i = p->nlink[e]; i > 0 && fmin(p->link[e][i - 1].a,
+	    p->link[e][i - 1].b) > fmin(a, b); i--)
+		p->link[e][i] = p->link[e][i - 1];
+	p->link[e][i].id = id;
+	p->link[e][i].a = a;
+	p->link[e][i].b = b;
+	p->nlink[e]++;
+	return 0;
+}
+
+static void
+drop_link(struct loft_patch *p, int e, size_t k)
+{
+	memmove(&p->link[e][k], &p->link[e][k + 1],
+	    (p->nlink[e] - k - 1) * sizeof p->link[e][k]);
+	p->nlink[e]--;
+}
+
+/* Find the link to id on any edge of p: 1 and *e, *k; 0 when none. */
+static int
+find_link(const struct loft_patch *p, long id, int *e, size_t *k)
+{
+	for (int f = 0; f < 4; f++)
+		for (size_t i = 0; i < p->nlink[f]; i++)
+			if (p->link[f][i].id == id) {
+				*e = f;
+				*k = i;
+				return 1;
+			}
+	return 0;
+}
+
+/* Parse one item of a neighbour list, "id" or "id:a:b", into l. */
+static int
+parse_item(const char *s, size_t len, struct loft_link *l,
+    struct loft_error *err)
+{
+	char buf[64];
+	const char *c1, *c2;
+
+	if (len == 0 || len >= sizeof buf)
+		return LOFT_EINPUT;
+	memcpy(buf, s, len);
+	buf[len] = '\0';
+	c1 = strchr(buf, ':');
+	c2 = c1 ? strchr(c1 + 1, ':') : NULL;
+	l->a = 0;
+	l->b = 1;
+	if (c1 != NULL && (c2 == NULL || strchr(c2 + 1, ':') != NULL))
+		return LOFT_EINPUT;
+	if (c1 != NULL) {
+		buf[c1 - buf] = '\0';
+		if (loft_parse_num(c1 + 1, (size_t)(c2 - c1 - 1), &l->a,
+		    err) != 0 || loft_parse_num(c2 + 1, strlen(c2 + 1), &l->b,
+		    err) != 0)
+			return LOFT_EINPUT;
+	}
+	return loft_parse_int(buf, 1, ID_MAX, &l->id, err);
+}
+
+static int
+parse_links(struct loft_patch *p, int e, const char *val,
+    struct loft_error *err)
+{
+	const char *s = val;
+
+	for (;;) {
+		size_t len = strcspn(s, ",");
+		struct loft_link l;
+
+		if (parse_item(s, len, &l, err) != 0)
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute %s=%s: "
+			    "want neighbour ids, or id:from:to, separated by "
+			    "commas", loft_edge_name[e], val);
+		if (!(l.a >= 0 && l.a <= 1 && l.b >= 0 && l.b <= 1) ||
+		    !(fabs(l.a - l.b) > LINK_EPS))
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute %s=%s: "
+			    "from and to must differ and lie from 0 to 1",
+			    loft_edge_name[e], val);
+		if (add_link(p, e, l.id, l.a, l.b) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		if (s[len] == '\0')
+			return 0;
+		s += len + 1;
+	}
+}
+
+static void
+patch_free(struct loft_patch *p)
+{
+	for (int e = 0; e < 4; e++)
+		free(p->link[e]);
+	memset(p, 0, sizeof *p);
+}
+
+static int
+design_grow(struct loft_design *d, struct loft_error *err)
+{
+	if (loft__grow((void **)&d->p, &d->cap, d->n + 1, sizeof *d->p) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	memset(&d->p[d->n], 0, sizeof d->p[d->n]);
+	return 0;
+}
+
+int
+loft_design_new(struct loft_design *d, const double *b, int dim, long id,
+    struct loft_error *err)
+{
+	struct loft_patch *p;
+
+	if (design_grow(d, err) != 0)
+		return LOFT_ENOMEM;
+	p = &d->p[d->n++];
+	p->id = id;
+	p->dim = dim;
+	p->scale[0] = p->scale[1] = 1;
+	memcpy(p->b, b, 25 * (size_t)dim * sizeof *b);
+	if (id > d->maxid)
+		d->maxid = id;
+	return 0;
+}
+
+int
+loft_design_add(struct loft_design *d, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	static const char *const sname[2] = { "su", "sv" };
+	struct loft_patch *p;
+	const char *v;
+	int dim = rec->ncols / 5, rc;
+
+	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
+	if (rec->nrows != 5)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch record has %zu "
+		    "row%s; a patch has 5", rec->nrows, rec->nrows == 1 ? "" :
+		    "s");
+	if (rec->ncols != 10 && rec->ncols != 15)
+		return loft_fail(err, LOFT_EINPUT, 0, "patch rows need 10 or 15 "
+		    "numbers, not %d", rec->ncols);
+	if ((v = loft_attr(rec, "id")) == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
+	if (design_grow(d, err) != 0)
+		return LOFT_ENOMEM;
+	p = &d->p[d->n];
+	if (loft_parse_int(v, 1, ID_MAX, &p->id, err) != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
+		    "a whole number from 1 to %ld", v, ID_MAX);
+	p->dim = dim;
+	p->rec = rec;
+	memcpy(p->b, rec->num, 25 * (size_t)dim * sizeof *p->b);
+	for (int k = 0; k < 2; k++) {
+		p->scale[k] = 1;
+		v = loft_attr(rec, sname[k]);
+		if (v != NULL && (loft_parse_num(v, strlen(v), &p->scale[k],
+		    err) != 0 || !(p->scale[k] > 0))) {
+			patch_free(p);
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute %s=%s: "
+			    "want a scale factor above 0", sname[k], v);
+		}
+	}
+	for (int e = 0; e < 4; e++)
+		if ((v = loft_attr(rec, loft_edge_name[e])) != NULL &&
+		    (rc = parse_links(p, e, v, err)) != 0) {
+			patch_free(p);
+			return rc;
+		}
+	if (p->id > d->maxid)
+		d->maxid = p->id;
+	d->n++;
+	return 0;
+}
+
+void
+loft_design_free(struct loft_design *d)
+{
+	for (size_t i = 0; i < d->n; i++)
+		patch_free(&d->p[i]);
+	free(d->p);
+	memset(d, 0, sizeof *d);
+}
+
+long
+loft_design_find(const struct loft_design *d, long id)
+{
+	for (size_t i = 0; i < d->n; i++)
+		if (d->p[i].id == id)
+			return (long)i;
+	return -1;
+}
+
+/* Check patch i's links; 0 or LOFT_EINPUT. */
+static int
+check_links(const struct loft_design *d, size_t i, struct loft_error *err)
+{
+	const struct loft_patch *p = &d->p[i];
+
+	for (int e = 0; e < 4; e++)
+		for (size_t k = 0; k < p->nlink[e]; k++) {
+			const struct loft_link *l = &p->link[e][k];
+			long n = loft_design_find(d, l->id);
+			const struct loft_patch *q;
+			int f, g, count = 0;
+			size_t m, r;
+
+			if (l->id == p->id)
+				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
+				    "names itself as neighbour across %s",
+				    p->id, loft_edge_name[e]);
+			if (n < 0)
+				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld: "
+				    "neighbour %ld across %s is not in the "
+				    "design", p->id, l->id, loft_edge_name[e]);
+			for (g = 0; g < 4; g++)
+				for (r = 0; r < p->nlink[g]; r++)
+					count += p->link[g][r].id == l->id;
+			if (count > 1)
+				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
+				    "names neighbour %ld more than once",
+				    p->id, l->id);
+			q = &d->p[n];
+			if (!find_link(q, p->id, &f, &m))
+				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
+				    "names %ld across %s, but %ld does not name "
+				    "%ld", p->id, l->id, loft_edge_name[e],
+				    l->id, p->id);
+			if ((l->a < l->b) != (q->link[f][m].a < q->link[f][m].b))
+				return loft_fail(err, LOFT_EINPUT, -1, "patches "
+				    "%ld and %ld disagree on which way their "
+				    "common edge runs", p->id, l->id);
+		}
+	return 0;
+}
+
+int
+loft_design_check(const struct loft_design *d, size_t *bad,
+    struct loft_error *err)
+{
+	for (size_t i = 0; i < d->n; i++) {
+		*bad = i;
+		if (d->p[i].dim != d->p[0].dim)
+			return loft_fail(err, LOFT_EINPUT, -1, "patch %ld has %d "
+			    "coordinates, patch %ld %d: a design has one "
+			    "dimension", d->p[i].id, d->p[i].dim, d->p[0].id,
+			    d->p[0].dim);
+		for (size_t j = 0; j < i; j++)
+			if (d->p[j].id == d->p[i].id)
+				return loft_fail(err, LOFT_EINPUT, -1, "id %ld is "
+				    "used twice", d->p[i].id);
+		if (check_links(d, i, err) != 0)
+			return LOFT_EINPUT;
+	}
+	return 0;
+}
+
+static void
+put_real_attr(struct loft_writer *w, const char *key, double x)
+{
+	char buf[LOFT_NUMBUF];
+
+	loft_format_num(buf, x, 0);
+	loft_put_attr(w, key, buf);
+}
+
+void
+loft_design_put(struct loft_writer *w, const struct loft_design *d, size_t i)
+{
+	static const char *const ours[] = { "id", "su", "sv", "u0", "u1",
+	    "v0", "v1", NULL };
+	const struct loft_patch *p = &d->p[i];
+	char buf[64 + 3 * LOFT_NUMBUF];
+
+	loft_put_type(w, "patch");
+	snprintf(buf, sizeof buf, "%ld", p->id);
+	loft_put_attr(w, "id", buf);
+	if (p->scale[0] != 1)
+		put_real_attr(w, "su", p->scale[0]);
+	if (p->scale[1] != 1)
+		put_real_attr(w, "sv", p->scale[1]);
+	for (int e = 0; e < 4; e++) {
+		char *list = NULL;
+		size_t len = 0, cap = 0;
+
+		for (size_t k = 0; k < p->nlink[e]; k++) {
+			const struct loft_link *l = &p->link[e][k];
+			char a[LOFT_NUMBUF], b[LOFT_NUMBUF];
+			int n;
+
+			loft_format_num(a, l->a, 0);
+			loft_format_num(b, l->b, 0);
+			n = l->a == 0 && l->b == 1 ?
+			    snprintf(buf, sizeof buf, ",%ld", l->id) :
+			    snprintf(buf, sizeof buf, ",%ld:%s:%s", l->id, a, b);
+			if (loft__grow((void **)&list, &cap, len + n + 1, 1)) {
+				w->bad = LOFT_ENOMEM;
+				break;
+			}
+			memcpy(list + len, buf, (size_t)n + 1);
+			len += n;
+		}
+		if (len > 0 && !w->bad)
+			loft_put_attr(w, loft_edge_name[e], list + 1);
+		free(list);
+	}
+	if (p->rec != NULL)
+		loft_put_attrs_except(w, p->rec, ours);
+	loft_end_line(w);
+	for (int r = 0; r < 5; r++)
+		loft_put_row(w, BIJ(p->b, r, 0, p->dim), 5 * p->dim);
+	loft_end_record(w);
+}
+
+/* ------------------------------------------------------------------ */
+/* Splitting (section 5) */
+
+/*
+ * Where the point at parameter s of p's edge, inside the link l = (q, a,
+ * b), lies on q's edge, whose link back to p is m: q's parameter runs
+ * from min(m.a, m.b) to max(m.a, m.b) while p's runs from a to b.
+ */
+static double
+across(const struct loft_link *l, const struct loft_link *m, double s)
+{
+	double lo = fmin(m->a, m->b), hi = fmax(m->a, m->b);
+
+	if (s == l->a)
+		return lo;
+	if (s == l->b)
+		return hi;
+	return lo + (s - l->a) / (l->b - l->a) * (hi - lo);
+}
+
+/* Rename the link to old in p's list as new. */
+static void
+rename_link(struct loft_patch *p, long old, long new)
+{
+	int e;
+	size_t k;
+
+	if (find_link(p, old, &e, &k))
+		p->link[e][k].id = new;
+}
+
+/*
+ * The part of a cut edge's link l = (q, a, b) that falls on child c
+ * (0: parameter 0 to t, 1: t to 1) of the patch being split, as links
+ * on both sides.  The child's edge parameter is s/t or (s - t)/(1 - t).
+ */
+static int
+cut_link(struct loft_design *d, struct loft_patch *child, int e, int c,
+    double t, const struct loft_link *l, long qi, int f,
+    const struct loft_link *back)
+{
+	double lo = fmin(l->a, l->b), hi = fmax(l->a, l->b), p0, p1, s0, s1;
+
+	p0 = c == 0 ? lo : fmax(lo, t);
+	p1 = c == 0 ? fmin(hi, t) : hi;
+	if (!(p1 - p0 > LINK_EPS))
+		return 0;
+	s0 = c == 0 ? p0 / t : (p0 - t) / (1 - t);
+	s1 = c == 0 ? p1 / t : (p1 - t) / (1 - t);
+	if (add_link(child, e, l->id, l->a < l->b ? s0 : s1,
+	    l->a < l->b ? s1 : s0) != 0 ||
+	    add_link(&d->p[qi], f, child->id, across(l, back, p0),
+	    across(l, back, p1)) != 0)
+		return LOFT_ENOMEM;
+	return 0;
+}
+
+int
+loft_design_split(struct loft_design *d, size_t i, int dir, double t,
+    struct loft_error *err)
+{
+	int keep0 = dir == 0 ? LOFT_U0 : LOFT_V0;
+	int keep1 = dir == 0 ? LOFT_U1 : LOFT_V1;
+	int cut[2] = { dir == 0 ? LOFT_V0 : LOFT_U0,
+	    dir == 0 ? LOFT_V1 : LOFT_U1 };
+	struct loft_patch ch[2], *q;
+
+	if (d->maxid > ID_MAX - 2)
+		return loft_fail(err, LOFT_EINPUT, -1, "ids are used up (the "
+		    "largest is %ld)", d->maxid);
+	if (design_grow(d, err) != 0)
+		return LOFT_ENOMEM;
+	q = &d->p[i];
+	memset(ch, 0, sizeof ch);
+	for (int c = 0; c < 2; c++) {
+		ch[c].id = d->maxid + 1 + c;
+		ch[c].dim = q->dim;
+		ch[c].rec = q->rec;
+		ch[c].scale[0] = q->scale[0];
+		ch[c].scale[1] = q->scale[1];
+		ch[c].scale[dir] *= c == 0 ? t : 1 - t;
+	}
+	loft_patch_split_coef(q->b, q->dim, dir, t, ch[0].b, ch[1].b);
+	/* the edges each child keeps whole, and the new one between */
+	for (int c = 0; c < 2; c++) {
+		int e = c == 0 ? keep0 : keep1;
+
+		ch[c].link[e] = q->link[e];
+		ch[c].nlink[e] = q->nlink[e];
+		ch[c].linkcap[e] = q->linkcap[e];
+		q->link[e] = NULL;
+		q->nlink[e] = q->linkcap[e] = 0;
+		for (size_t k = 0; k < ch[c].nlink[e]; k++)
+			rename_link(&d->p[loft_design_find(d,
+			    ch[c].link[e][k].id)], q->id, ch[c].id);
+	}
+	if (add_link(&ch[0], keep1, ch[1].id, 0, 1) != 0 ||
+	    add_link(&ch[1], keep0, ch[0].id, 0, 1) != 0)
+		goto nomem;
+	/* the edges the split cuts: their links divide at t */
+	for (int k = 0; k < 2; k++) {
+		int e = cut[k];
+
+		for (size_t m = 0; m < q->nlink[e]; m++) {
+			struct loft_link l = q->link[e][m], back;
+			long qi = loft_design_find(d, l.id);
+			int f;
+			size_t r;
+
+			if (qi < 0 || !find_link(&d->p[qi], q->id, &f, &r))
+				continue;       /* loft_design_check refuses */
+			back = d->p[qi].link[f][r];
+			drop_link(&d->p[qi], f, r);
+			for (int c = 0; c < 2; c++)
+				if (cut_link(d, &ch[c], e, c, t, &l, qi, f,
+				    &back) != 0)
+					goto nomem;
+		}
+	}
+	patch_free(q);
+	memmove(&d->p[i + 2], &d->p[i + 1], (d->n - i - 1) * sizeof *d->p);
+	d->p[i] = ch[0];
+	d->p[i + 1] = ch[1];
+	d->n++;
+	d->maxid += 2;
+	return 0;
+nomem:
+	patch_free(&ch[0]);
+	patch_free(&ch[1]);
+	return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+}
+
+/* ------------------------------------------------------------------ */
+/* Dragging (section 4) */
+
+/* The normal direction of edge e: 0 (u) for u0, u1; 1 (v) for v0, v1. */
+static int
+normal_dir(int e)
+{
+	return e == LOFT_U0 || e == LOFT_U1 ? 0 : 1;
+}
+
+/* Whether edge e lies at parameter 0 of its normal direction. */
+static int
+at_zero(int e)
+{
+	return e == LOFT_U0 || e == LOFT_V0;
+}
+
+/* B += outer(x, y) c: x over the u index, y over the v index. */
+static void
+add_tensor(double *b, int dim, const double *x, const double *y,
+    const double *c)
+{
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++)
+			vaxpy(BIJ(b, i, j, dim), x[i] * y[j], c, dim);
+}
+
+/*
+ * Whether patch p's edge e has one neighbour that shares all of it and
+ * all of whose own edge it shares; 1 and its index and edge, else 0 and
+ * why not.
+ */
+static int
+whole_neighbour(const struct loft_design *d, const struct loft_patch *p,
+    int e, long *qi, int *f, const char **why)
+{
+	const struct loft_link *l;
+	size_t r;
+
+	if (p->nlink[e] == 0) {
+		*why = "no neighbour across that edge";
+		return 0;
+	}
+	l = &p->link[e][0];
+	*qi = loft_design_find(d, l->id);
+	if (p->nlink[e] > 1 || fabs(l->a - l->b) < 1 - LINK_EPS || *qi < 0 ||
+	    !find_link(&d->p[*qi], p->id, f, &r) ||
+	    fabs(d->p[*qi].link[*f][r].a - d->p[*qi].link[*f][r].b) <
+	    1 - LINK_EPS) {
+		*why = "a T-junction on that edge: no one neighbour spans it";
+		return 0;
+	}
+	return 1;
+}
+
+/*
+ * Section 4.  Central rule: delta(hh) = delta / (H5(u) H5(v)).  Near
+ * edge e with neighbour q across all of it: in the direction across
+ * the edge the two patches are one quartic in w, p on [0, w_p] and q on
+ * [w_p, 1] with w_p = r_p / (r_p + r_q) (the scale factors across the
+ * edge), the common edge at w_p; both take the exact restriction of the
+ * bump delta H5(w) H5(v) / H_d, H_d its value at the dragged point.  So
+ * the common edge moves by delta H_p / H_d and its slope by
+ * delta H'_p / H_d, and everything else on the rim of the pair stays.
+ * Along the edge the bump is H5 in both (H5(1 - s) = H5(s), so either
+ * sense of the common edge gives the same coefficients).
+ */
+int
+loft_design_drag(struct loft_design *d, size_t i, double u, double v,
+    const double *delta, double edge, struct loft_drag_info *info,
+    struct loft_error *err)
+{
+	static const double h5[5] = { 0, 0, 0, 0, 1 };
+	struct loft_patch *p = &d->p[i];
+	double rho[4] = { u, 1 - u, v, 1 - v }, c[LOFT_MAXDIM], hd;
+	int e = 0, dim = p->dim;
+	long qi;
+	int f;
+
+	memset(info, 0, sizeof *info);
+	info->piece = (long)i;
+	info->other = -1;
+	for (int k = 1; k < 4; k++)
+		if (rho[k] < rho[e])
+			e = k;
+	info->edge = e;
+	info->rule = LOFT_DRAG_CENTRAL;
+	if (rho[e] < edge) {
+		if (whole_neighbour(d, p, e, &qi, &f, &info->why)) {
+			struct loft_patch *q = &d->p[qi];
+			int n = normal_dir(e), nq = normal_dir(f);
+			double rp = p->scale[n], rq = q->scale[nq];
+			double wp = rp / (rp + rq), along = n == 0 ? v : u;
+			double phip[5], phiq[5];
+
+			loft__bump(at_zero(e) ? wp : 0, at_zero(e) ? -wp : wp,
+			    phip);
+			loft__bump(at_zero(f) ? wp : 1, at_zero(f) ? 1 - wp :
+			    -(1 - wp), phiq);
+			hd = loft__h5(wp * (1 - rho[e])) * loft__h5(along);
+			if (!(hd > 0))
+				return loft_fail(err, LOFT_EGEOM, -1, "the point "
+				    "at u=%g v=%g is a corner of the patch, "
+				    "which dragging keeps fixed", u, v);
+			vscale(c, 1 / hd, delta, dim);
+			add_tensor(p->b, dim, n == 0 ? phip : h5,
+			    n == 0 ? h5 : phip, c);
+			add_tensor(q->b, dim, nq == 0 ? phiq : h5,
+			    nq == 0 ? h5 : phiq, c);
+			info->rule = LOFT_DRAG_EDGE;
+			info->other = qi;
+			info->hd = hd;
+			info->hp = loft__h5(wp) * loft__h5(along);
+			return 0;
+		}
+		info->rule = LOFT_DRAG_FALLBACK;
+	}
+	hd = loft__h5(u) * loft__h5(v);
+	if (!(hd > 0))
+		return loft_fail(err, LOFT_EGEOM, -1, "the point at u=%g v=%g "
+		    "is on the patch's edge %s%s, which dragging keeps fixed",
+		    u, v, loft_edge_name[e], info->why ? " (it has no "
+		    "neighbour that spans it)" : "");
+	vaxpy(BIJ(p->b, 4, 4, dim), 1 / hd, delta, dim);
+	info->hd = hd;
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Joining (section 6) */
+
+/*
+ * The quartic along edge e of b, over its own parameter: which 0 the
+ * points, which 1 the derivative across the edge (in +u or +v).
+ */
+static void
+edge_get(const double *b, int dim, int e, int which, double *q)
+{
+	int r = (at_zero(e) ? 0 : 1) + 2 * which;
+
+	for (int k = 0; k < 5; k++)
+		vcopy(q + k * dim, normal_dir(e) == 0 ? BIJ(b, r, k, dim) :
+		    BIJ(b, k, r, dim), dim);
+}
+
+static void
+edge_set(double *b, int dim, int e, int which, const double *q)
+{
+	int r = (at_zero(e) ? 0 : 1) + 2 * which;
+
+	for (int k = 0; k < 5; k++)
+		vcopy(normal_dir(e) == 0 ? BIJ(b, r, k, dim) :
+		    BIJ(b, k, r, dim), q + k * dim, dim);
+}
+
+/* q(s) -> q(1 - s): ends swap, slopes swap and change sign. */
+static void
+reverse_quartic(double *q, int dim)
+{
+	double t[LOFT_MAXDIM];
+
+	vcopy(t, q, dim);
+	vcopy(q, q + dim, dim);
+	vcopy(q + dim, t, dim);
+	vcopy(t, q + 2 * dim, dim);
+	vscale(q + 2 * dim, -1, q + 3 * dim, dim);
+	vscale(q + 3 * dim, -1, t, dim);
+}
+
+/* Samples along an edge, for distances and mismatches. */
+#define EDGE_SAMPLES 16
+
+/* The largest distance between quartics x(s) and y(s or 1 - s). */
+static double
+edge_gap(const double *x, const double *y, int dim, int rev)
+{
+	double gap = 0, px[LOFT_MAXDIM], py[LOFT_MAXDIM];
+
+	for (int k = 0; k <= EDGE_SAMPLES; k++) {
+		double s = (double)k / EDGE_SAMPLES;
+
+		loft_quartic_eval(x, dim, s, px, NULL, NULL);
+		loft_quartic_eval(y, dim, rev ? 1 - s : s, py, NULL, NULL);
+		gap = fmax(gap, vdist(px, py, dim));
+	}
+	return gap;
+}
+
+/*
+ * How well p and s meet along p's edge e and s's edge f: the largest
+ * distance, and the largest difference of the derivatives across the
+ * edge in the common parameter (each divided by its scale factor, both
+ * pointing from p into s) relative to the largest of p's.
+ */
+static void
+edge_mismatch(const struct loft_patch *p, int e, const struct loft_patch *s,
+    int f, int rev, double *pos, double *slope)
+{
+	int dim = p->dim, np = normal_dir(e), ns = normal_dir(f);
+	double big = 0, diff = 0;
+
+	*pos = 0;
+	for (int k = 0; k <= EDGE_SAMPLES; k++) {
+		double a = (double)k / EDGE_SAMPLES, b = rev ? 1 - a : a;
+		double xp = at_zero(e) ? 0 : 1, xs = at_zero(f) ? 0 : 1;
+		double pp[LOFT_MAXDIM], ps[LOFT_MAXDIM], dp[2][LOFT_MAXDIM],
+		    ds[2][LOFT_MAXDIM], gp[LOFT_MAXDIM], gs[LOFT_MAXDIM];
+
+		loft_patch_eval(p->b, dim, np == 0 ? xp : a, np == 0 ? a : xp,
+		    pp, dp[0], dp[1]);
+		loft_patch_eval(s->b, dim, ns == 0 ? xs : b, ns == 0 ? b : xs,
+		    ps, ds[0], ds[1]);
+		*pos = fmax(*pos, vdist(pp, ps, dim));
+		vscale(gp, (at_zero(e) ? -1 : 1) / p->scale[np], dp[np], dim);
+		vscale(gs, (at_zero(f) ? 1 : -1) / s->scale[ns], ds[ns], dim);
+		big = fmax(big, vnorm(gp, dim));
+		diff = fmax(diff, vdist(gp, gs, dim));
+	}
+	*slope = big > 0 ? diff / big : diff;
+}
+
+/* The edges of s beside edge f, which meet it at its ends. */
+static void
+beside(int f, int *g)
+{
+	g[0] = normal_dir(f) == 0 ? LOFT_V0 : LOFT_U0;
+	g[1] = normal_dir(f) == 0 ? LOFT_V1 : LOFT_U1;
+}
+
+/*
+ * Section 6: the principal p does not change; the subsidiary s takes
+ * p's edge as its own (reversed if they run opposite ways) and, across
+ * it, p's derivative times r_s / r_p with the sign that makes both point
+ * the same way in the common parameter: then f_x = f_n / r is the same
+ * on both sides.  Only the two rows (or columns) of s's B along that
+ * edge change, so s's opposite edge keeps its neighbours.
+ */
+int
+loft_design_join(struct loft_design *d, size_t ip, size_t is,
+    struct loft_join_info *info, struct loft_error *err)
+{
+	struct loft_patch *p = &d->p[ip], *s = &d->p[is];
+	double qp[5 * LOFT_MAXDIM], qs[5 * LOFT_MAXDIM], best = -1;
+	int dim = p->dim, g[2];
+
+	memset(info, 0, sizeof *info);
+	if (ip == is)
+		return loft_fail(err, LOFT_EGEOM, -1, "a patch cannot be joined "
+		    "to itself");
+	info->size = fmax(loft_patch_size(p->b, dim),
+	    loft_patch_size(s->b, dim));
+	for (int e = 0; e < 4; e++)
+		for (int f = 0; f < 4; f++)
+			for (int rev = 0; rev < 2; rev++) {
+				double gap;
+
+				edge_get(p->b, dim, e, 0, qp);
+				edge_get(s->b, dim, f, 0, qs);
+				gap = edge_gap(qp, qs, dim, rev);
+				if (best < 0 || gap < best) {
+					best = gap;
+					info->edge_p = e;
+					info->edge_s = f;
+					info->reversed = rev;
+				}
+			}
+	info->gap = best;
+	if (!(best <= LOFT_JOIN_GAP * info->size))
+		return loft_fail(err, LOFT_EGEOM, -1, "patches %ld and %ld share "
+		    "no edge: the nearest, %s of %ld and %s of %ld, are %g "
+		    "apart, more than %g of their size %g", p->id, s->id,
+		    loft_edge_name[info->edge_p], p->id,
+		    loft_edge_name[info->edge_s], s->id, best, LOFT_JOIN_GAP,
+		    info->size);
+	if (p->nlink[info->edge_p] > 0 || s->nlink[info->edge_s] > 0)
+		return loft_fail(err, LOFT_EGEOM, -1, "edge %s of %ld already "
+		    "has a neighbour", p->nlink[info->edge_p] > 0 ?
+		    loft_edge_name[info->edge_p] : loft_edge_name[info->edge_s],
+		    p->nlink[info->edge_p] > 0 ? p->id : s->id);
+	beside(info->edge_s, g);
+	for (int k = 0; k < 2; k++)
+		if (s->nlink[g[k]] > 0)
+			return loft_fail(err, LOFT_EGEOM, -1, "the subsidiary %ld "
+			    "has a neighbour across %s, which meets the edge "
+			    "to join: joining would break that edge (join "
+			    "before splitting)", s->id, loft_edge_name[g[k]]);
+	/* the edge itself */
+	edge_get(p->b, dim, info->edge_p, 0, qp);
+	if (info->reversed)
+		reverse_quartic(qp, dim);
+	edge_set(s->b, dim, info->edge_s, 0, qp);
+	/* the derivative across it, in s's scale */
+	edge_get(p->b, dim, info->edge_p, 1, qp);
+	if (info->reversed)
+		reverse_quartic(qp, dim);
+	for (int k = 0; k < 5 * dim; k++)
+		qp[k] *= (at_zero(info->edge_p) ? -1 : 1) *
+		    (at_zero(info->edge_s) ? 1 : -1) *
+		    s->scale[normal_dir(info->edge_s)] /
+		    p->scale[normal_dir(info->edge_p)];
+	edge_set(s->b, dim, info->edge_s, 1, qp);
+	if (add_link(p, info->edge_p, s->id, info->reversed ? 1 : 0,
+	    info->reversed ? 0 : 1) != 0 ||
+	    add_link(s, info->edge_s, p->id, info->reversed ? 1 : 0,
+	    info->reversed ? 0 : 1) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	edge_mismatch(p, info->edge_p, s, info->edge_s, info->reversed,
+	    &info->pos_after, &info->slope_after);
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Reading a design in a program */
+
+int
+loft_design_from_records(struct loft_run *run, const struct loft_record *recs,
+    size_t n, struct loft_design *d)
+{
+	struct loft_error err;
+	size_t bad;
+	int rc = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0)
+			continue;
+		err.line = 0;
+		if (loft_design_add(d, &recs[i], &err) != 0) {
+			loft_report(run, &recs[i], &err);
+			rc = LOFT_EINPUT;
+		}
+	}
+	if (rc == 0 && loft_design_check(d, &bad, &err) != 0) {
+		err.line = 0;
+		err.row = -1;
+		loft_report(run, d->p[bad].rec, &err);
+		rc = LOFT_EINPUT;
+	}
+	return rc;
+}

@@ -1,0 +1,87 @@
+/*
+ * surface.c: surface records of every type behind one interface, so
+ * that the programs that evaluate surfaces (sample, and later plot)
+ * learn a new type in one place: a row in the table below.
+ */
+#include <string.h>
+
+#include "internal.h"
+
+struct surface_type {
+	const char *name;
+	/* check rec's rows and attributes; set s->dim, s->m, s->n */
+	int (*check)(const struct loft_record *rec, struct loft_surface *s,
+	    struct loft_error *err);
+	void (*eval)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv);
+};
+
+/* patch: five rows of five vectors (MacCallum's B, loft.5). */
+static int
+check_patch(const struct loft_record *rec, struct loft_surface *s,
+    struct loft_error *err)
+{
+	if (rec->nrows != 5)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch record has %zu "
+		    "row%s; a patch has 5", rec->nrows, rec->nrows == 1 ? "" :
+		    "s");
+	if (rec->ncols != 10 && rec->ncols != 15)
+		return loft_fail(err, LOFT_EINPUT, 0, "patch rows need 10 or 15 "
+		    "numbers, not %d", rec->ncols);
+	s->dim = rec->ncols / 5;
+	s->m = s->n = 4;
+	return 0;
+}
+
+static void
+eval_patch(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv)
+{
+	loft_patch_eval(s->coef, s->dim, u, v, p, du, dv);
+}
+
+static const struct surface_type types[] = {
+	{ "patch", check_patch, eval_patch },
+};
+
+static const struct surface_type *
+find_type(const char *name)
+{
+	if (name == NULL)
+		return NULL;
+	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
+		if (strcmp(name, types[i].name) == 0)
+			return &types[i];
+	return NULL;
+}
+
+int
+loft_is_surface(const struct loft_record *rec)
+{
+	return find_type(rec->type) != NULL;
+}
+
+int
+loft_surface_from_record(const struct loft_record *rec,
+    struct loft_surface *s, struct loft_error *err)
+{
+	const struct surface_type *t = find_type(rec->type);
+
+	if (t == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "%s record is no "
+		    "surface", rec->type ? rec->type : "a point");
+	memset(s, 0, sizeof *s);
+	if (t->check(rec, s, err) != 0)
+		return LOFT_EINPUT;
+	s->type = t->name;
+	s->coef = rec->num;
+	s->eval = t->eval;
+	return 0;
+}
+
+void
+loft_surface_eval(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv)
+{
+	s->eval(s, u, v, p, du, dv);
+}
