@@ -15,9 +15,9 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin
-TESTS   = bin/test/unit bin/test/paper bin/test/patch
+TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier
 LIB     = bin/libloft.a
-MAN1    = man/splinefit.1 man/sample.1 man/patchnew.1 \
+MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1
 MAN5    = man/loft.5
 

@@ -784,7 +784,7 @@ struct loft_surface {
 	    double *p, double *du, double *dv);
 };
 
-/* Whether rec's type is a surface type (`patch` now). */
+/* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
 int loft_is_surface(const struct loft_record *rec);
 
 /*

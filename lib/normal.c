@@ -48,6 +48,8 @@
 struct rule {
 	double *t, *w;
 	size_t count;
+	double *ends;           /* the panels' ends: panels + 1 of them */
+	size_t panels;
 };
 
 /*
@@ -89,6 +91,7 @@ rule_free(struct rule *r)
 {
 	free(r->t);
 	free(r->w);
+	free(r->ends);
 }
 
 static int
@@ -102,9 +105,11 @@ rule_make(struct rule *r, size_t npieces, struct loft_error *err)
 	if (npieces == 0 || panels > (size_t)-1 / QUAD_NODES / sizeof(double))
 		return loft_fail(err, LOFT_ENOMEM, -1, "too many pieces");
 	r->count = panels * QUAD_NODES;
+	r->panels = panels;
 	r->t = malloc(r->count * sizeof *r->t);
 	r->w = malloc(r->count * sizeof *r->w);
-	if (r->t == NULL || r->w == NULL) {
+	r->ends = malloc((panels + 1) * sizeof *r->ends);
+	if (r->t == NULL || r->w == NULL || r->ends == NULL) {
 		rule_free(r);
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	}
@@ -117,11 +122,13 @@ rule_make(struct rule *r, size_t npieces, struct loft_error *err)
 
 		if (p % per == per - 1)
 			h = (double)(p / per + 1) / npieces - a;
+		r->ends[p] = a;
 		for (int i = 0; i < QUAD_NODES; i++) {
 			r->t[p * QUAD_NODES + i] = a + h * gx[i];
 			r->w[p * QUAD_NODES + i] = h * gw[i];
 		}
 	}
+	r->ends[panels] = 1;
 	return 0;
 }
 
@@ -238,28 +245,34 @@ normal_at(struct station *s, int dim, double t, double speed,
 
 /*
  * Evaluate the curve at every quadrature node into ap (count * dim) and
- * return its mean speed: the length of the polyline through the nodes
- * and the ends.  0 when a value is not finite (err filled) .
+ * store its mean speed: the length of the polyline from t = 0 through
+ * the nodes.  The panels' ends are checked finite too, so a pole at
+ * a simple fraction (1/2, 1/4, ...) is caught; one strictly between
+ * sample points is not.
  */
 static int
 sample_curve(const struct loft_pcurve *a, const struct rule *r, double *ap,
     double *speed, struct loft_error *err)
 {
 	int dim = a->dim;
-	double prev[LOFT_MAXDIM], len = 0;
+	double p[LOFT_MAXDIM], len = 0;
 
-	a->eval(a->ctx, 0, prev, NULL, NULL);
-	for (size_t q = 0; q <= r->count; q++) {
-		double end[LOFT_MAXDIM], *p = q < r->count ? ap + q * dim : end;
-		double t = q < r->count ? r->t[q] : 1;
-
-		a->eval(a->ctx, t, p, NULL, NULL);
-		if (!all_finite(p, dim) || !all_finite(prev, dim))
+	for (size_t k = 0; k <= r->panels; k++) {
+		a->eval(a->ctx, r->ends[k], p, NULL, NULL);
+		if (!all_finite(p, dim))
 			return loft_fail(err, LOFT_EINPUT, -1, "the curve is "
-			    "not finite at t = %.17g", all_finite(prev, dim) ?
-			    t : 0);
-		len += vdist(p, prev, dim);
-		vcopy(prev, p, dim);
+			    "not finite at t = %.17g", r->ends[k]);
+		if (k == 0)
+			vcopy(ap, p, dim);      /* for the polyline's start */
+	}
+	vcopy(p, ap, dim);
+	for (size_t q = 0; q < r->count; q++) {
+		a->eval(a->ctx, r->t[q], ap + q * dim, NULL, NULL);
+		if (!all_finite(ap + q * dim, dim))
+			return loft_fail(err, LOFT_EINPUT, -1, "the curve is "
+			    "not finite at t = %.17g", r->t[q]);
+		len += vdist(ap + q * dim, p, dim);
+		vcopy(p, ap + q * dim, dim);
 	}
 	if (!(len > 0))
 		return loft_fail(err, LOFT_EGEOM, -1, "the curve is a single "
@@ -542,13 +555,25 @@ static int
 sample_surface(const struct loft_psurface *x, const struct rule *ru,
     const struct rule *rv, double *xp, struct loft_error *err)
 {
-	for (size_t a = 0; a < ru->count; a++)
-		for (size_t b = 0; b < rv->count; b++) {
-			double *p = xp + 3 * (a * rv->count + b);
+	double p[3];
 
-			x->eval(x->ctx, ru->t[a], rv->t[b], p, NULL, NULL,
+	/* the grid of panel ends, for poles at simple fractions */
+	for (size_t a = 0; a <= ru->panels; a++)
+		for (size_t b = 0; b <= rv->panels; b++) {
+			x->eval(x->ctx, ru->ends[a], rv->ends[b], p, NULL, NULL,
 			    NULL, NULL);
 			if (!all_finite(p, 3))
+				return loft_fail(err, LOFT_EINPUT, -1, "the "
+				    "surface is not finite at (u, v) = "
+				    "(%.17g, %.17g)", ru->ends[a], rv->ends[b]);
+		}
+	for (size_t a = 0; a < ru->count; a++)
+		for (size_t b = 0; b < rv->count; b++) {
+			double *q = xp + 3 * (a * rv->count + b);
+
+			x->eval(x->ctx, ru->t[a], rv->t[b], q, NULL, NULL,
+			    NULL, NULL);
+			if (!all_finite(q, 3))
 				return loft_fail(err, LOFT_EINPUT, -1, "the "
 				    "surface is not finite at (u, v) = "
 				    "(%.17g, %.17g)", ru->t[a], rv->t[b]);
