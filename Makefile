@@ -8,15 +8,16 @@ LDLIBS  = -lm
 PREFIX  = /usr/local
 DESTDIR =
 
-PROGS   = splinefit sample patchnew patchsplit patchdrag patchjoin
+PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
+          bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o
-BINS    = bin/splinefit bin/sample bin/patchnew bin/patchsplit \
-          bin/patchdrag bin/patchjoin
-TESTS   = bin/test/unit bin/test/paper bin/test/patch
+BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
+          bin/patchsplit bin/patchdrag bin/patchjoin
+TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier
 LIB     = bin/libloft.a
-MAN1    = man/splinefit.1 man/sample.1 man/patchnew.1 \
+MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1
 MAN5    = man/loft.5
 

@@ -7,16 +7,24 @@
 
 #include "internal.h"
 
+/*
+ * A piecewise type has a row per piece, rows_per_point points to a row;
+ * a control-point type (eval NULL) is one piece of a point per row,
+ * evaluated by eval_ctl.
+ */
 struct curve_type {
 	const char *name;
 	int rows_per_point;     /* numbers in a row, per coordinate */
 	void (*eval)(const double *piece, int dim, double u,
 	    double *p, double *d1, double *d2);
+	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
+	    double *p, double *d1, double *d2);
 };
 
 static const struct curve_type types[] = {
-	{ "cubic", 4, loft_cubic_eval },
-	{ "quartic", 5, loft_quartic_eval },
+	{ "cubic", 4, loft_cubic_eval, NULL },
+	{ "quartic", 5, loft_quartic_eval, NULL },
+	{ "bezier", 1, NULL, loft_bezier_eval },
 };
 
 /* Parse an optional 0/1 attribute; -1 when it is something else. */
@@ -54,12 +62,19 @@ loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
 		return loft_fail(err, LOFT_EINPUT, 0, "%s rows need %d or %d "
 		    "numbers, not %d", t->name, 2 * t->rows_per_point,
 		    3 * t->rows_per_point, rec->ncols);
+	if (t->eval == NULL && (rec->nrows < 2 ||
+	    rec->nrows > LOFT_BEZIER_MAXPTS))
+		return loft_fail(err, LOFT_EINPUT, -1, "%s record of %zu "
+		    "control points: want 2 to %d", t->name, rec->nrows,
+		    LOFT_BEZIER_MAXPTS);
 	c->type = t->name;
 	c->coef = rec->num;
-	c->npieces = rec->nrows;
+	c->npieces = t->eval != NULL ? rec->nrows : 1;
+	c->npts = t->eval != NULL ? 0 : rec->nrows;
 	c->dim = rec->ncols / t->rows_per_point;
 	c->rowlen = rec->ncols;
 	c->eval = t->eval;
+	c->eval_ctl = t->eval_ctl;
 	c->closed = flag_attr(rec, "closed");
 	if (c->closed < 0)
 		return loft_fail(err, LOFT_EINPUT, -1,
@@ -71,7 +86,10 @@ void
 loft_curve_eval(const struct loft_curve *c, size_t i, double u,
     double *p, double *d1, double *d2)
 {
-	c->eval(c->coef + i * c->rowlen, c->dim, u, p, d1, d2);
+	if (c->eval_ctl != NULL)
+		c->eval_ctl(c->coef, c->npts, c->dim, u, p, d1, d2);
+	else
+		c->eval(c->coef + i * c->rowlen, c->dim, u, p, d1, d2);
 }
 
 int

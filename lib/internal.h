@@ -10,6 +10,13 @@
 
 #include "loft.h"
 
+#ifndef M_PI                    /* XSI, not C99 */
+#define M_PI 3.14159265358979323846
+#endif
+#ifndef M_E
+#define M_E 2.7182818284590452354
+#endif
+
 static inline double
 vdot(const double *a, const double *b, int dim)
 {

@@ -203,6 +203,14 @@ struct loft_run {
  */
 int loft_run_files(struct loft_run *run, int nfiles, char **files);
 
+/*
+ * For a program that makes its output from its options, not from input:
+ * write what run->w holds to run->out, whole or (when it holds a number
+ * that is not finite) not at all with a message, flush, free the writer,
+ * and return the exit status as loft_run_files does.
+ */
+int loft_run_made(struct loft_run *run);
+
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
     const struct loft_error *err);
@@ -322,10 +330,14 @@ struct loft_curve {
 	void (*eval)(const double *piece, int dim, double u,
 	    double *p, double *d1, double *d2);
 	int rowlen;             /* numbers per piece */
+	size_t npts;            /* control-point types: the record's rows */
+	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
+	    double *p, double *d1, double *d2);
 };
 
 /*
- * Recognise rec as a curve record of a known type (`cubic` now) and fill
+ * Recognise rec as a curve record of a known type (`cubic`, `bezier`: a
+ * bezier record is one piece) and fill
  * c, which points into rec.  Returns 0, or LOFT_EINPUT when rec is not a
  * curve record or its rows do not fit its type.
  */
@@ -345,6 +357,132 @@ void loft_curve_eval(const struct loft_curve *c, size_t i, double u,
  * Returns 0, or LOFT_EGEOM where d1 = 0.
  */
 int loft_curvature(const double *d1, const double *d2, int dim, double *k);
+
+/* ------------------------------------------------------------------ */
+/* Expressions with exact derivatives (expr.c)                         */
+
+/*
+ * A value with its partial derivatives in up to two variables x0, x1:
+ * d[k] = d/dx_k, h = { d2/dx0dx0, d2/dx0dx1, d2/dx1dx1 }.
+ */
+struct loft_jet {
+	double v;
+	double d[2];
+	double h[3];
+};
+
+struct loft_expr;
+
+/*
+ * Compile the expression src (grammar in expr.c and bezapprox(1)) whose
+ * variables are the letters of vars, at most two ("t", or "uv").  Returns
+ * the expression, to be freed with loft_expr_free; or NULL with err
+ * filled and *col set to the 1-based column where the text went wrong.
+ */
+struct loft_expr *loft_expr_parse(const char *src, const char *vars, int *col,
+    struct loft_error *err);
+
+/*
+ * Evaluate e where the variables take the values x[0], x[1], with exact
+ * first and second derivatives.  Results may be NaN or infinite (log 0,
+ * say): the caller checks what it uses.  Not reentrant: e holds its
+ * evaluation stack.
+ */
+void loft_expr_eval(struct loft_expr *e, const double *x, struct loft_jet *out);
+void loft_expr_free(struct loft_expr *e);
+
+/* ------------------------------------------------------------------ */
+/* Bezier curves and surfaces (bezier.c)                               */
+
+#define LOFT_BEZIER_MAXPTS 64   /* control points along one direction */
+
+/*
+ * The Bezier curve of the npts <= LOFT_BEZIER_MAXPTS control points ctl
+ * (dim numbers each) at t in [0, 1], by de Casteljau's algorithm: point,
+ * first and second derivatives (any may be NULL).
+ */
+void loft_bezier_eval(const double *ctl, size_t npts, int dim, double t,
+    double *p, double *d1, double *d2);
+
+/*
+ * The Bezier surface of degrees m in u and n in v (m, n < LOFT_BEZIER_MAXPTS)
+ * with control points ctl, 3 numbers each, u-major (P_ij at
+ * ctl[3 * (i * (n + 1) + j)]), at (u, v): point and the partial
+ * derivatives in u and v (any may be NULL).
+ */
+void loft_bezier_surface_eval(const double *ctl, int m, int n, double u,
+    double v, double *p, double *pu, double *pv);
+
+/*
+ * The Bernstein polynomials of degree n at t: b[i] = C(n, i) t^i
+ * (1 - t)^(n - i), i = 0..n, by the stable triangular recurrence.
+ */
+void loft_bernstein(int n, double t, double *b);
+
+/*
+ * The integral over [0, 1] of B_i^n B_j^n: C(n, i) C(n, j) / ((2n + 1)
+ * C(2n, i + j)).
+ */
+double loft_bernstein_gram(int n, int i, int j);
+
+/* ------------------------------------------------------------------ */
+/* Normal approximation by Bezier curves and surfaces (normal.c)       */
+
+/*
+ * A parametric curve over [0, 1] given by a function: eval fills the
+ * point and its first and second derivatives at t (d1, d2 may be NULL).
+ * The interval is made of npieces equal pieces (1 for a smooth curve; N
+ * for N spline segments), and quadrature panels never straddle two.
+ */
+struct loft_pcurve {
+	int dim;
+	size_t npieces;
+	void (*eval)(void *ctx, double t, double *p, double *d1, double *d2);
+	void *ctx;
+};
+
+/*
+ * A parametric surface in space over [0, 1]^2, made of npu by npv
+ * pieces: eval fills the point, x_u, x_v, x_uu and x_vv (any of the
+ * derivatives may be NULL).
+ */
+struct loft_psurface {
+	size_t npu, npv;
+	void (*eval)(void *ctx, double u, double v, double *p, double *pu,
+	    double *pv, double *puu, double *pvv);
+	void *ctx;
+};
+
+#define LOFT_NORMAL_MAXDEG 24   /* the Bernstein Gram matrix's condition
+				   number passes 1e12 not far above this */
+
+/*
+ * Carriazo, Marquez and Ugail's normal approximation (section 3): the
+ * Bezier curve of degree n (1 <= n <= LOFT_NORMAL_MAXDEG) whose end points
+ * are the curve's and whose control point i lies on the normal line at
+ * t_i = i / n, chosen to minimise eq. 3.  With clamp (n >= 3) lambda_1
+ * and lambda_n-1 come from eq. 4 instead.  Writes the n + 1 control
+ * points to ctl, the lambdas to lambda[0..n] (lambda[0] = lambda[n] = 0;
+ * lambda may be NULL), a flag per control point to nonormal (1 where a
+ * space curve has no principal normal, zero curvature, so the point
+ * stays on the curve; may be NULL) and F at the minimum to *error.
+ * Returns 0, or LOFT_EINPUT / LOFT_EGEOM with err saying why (a value
+ * not finite, a vanishing derivative, a singular system).
+ */
+int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
+    double *ctl, double *lambda, int *nonormal, double *error,
+    struct loft_error *err);
+
+/*
+ * The surface method of section 4: boundary curves by loft_normal_curve
+ * (x(t, 0) and x(t, 1) of degree m, x(0, t) and x(1, t) of degree n, all
+ * clamped when clamp), interior control points on the surface normals at
+ * (i / m, j / n), least squares over the square.  Writes (m + 1)(n + 1)
+ * control points, u-major, to ctl, and the double integral of
+ * |x - B|^2 to *error.  Returns 0 or LOFT_E* with err filled.
+ */
+int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
+    double *ctl, double *error, struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
 /* Whole records, and whole designs (stream.c, run.c)                  */
@@ -646,7 +784,7 @@ struct loft_surface {
 	    double *p, double *du, double *dv);
 };
 
-/* Whether rec's type is a surface type (`patch` now). */
+/* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
 int loft_is_surface(const struct loft_record *rec);
 
 /*

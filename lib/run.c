@@ -95,6 +95,31 @@ write_failed(struct loft_run *run)
 	return 1;
 }
 
+/* Release the writer, flush the output, and return the exit status. */
+static int
+finish(struct loft_run *run)
+{
+	loft_writer_free(&run->w);
+	errno = 0;
+	if (fflush(run->out) != 0 || ferror(run->out))
+		return write_failed(run);
+	return run->status;
+}
+
+int
+loft_run_made(struct loft_run *run)
+{
+	if (run->w.bad) {
+		fprintf(run->msg, "%s: %s\n", run->prog, run->w.bad ==
+		    LOFT_ENOMEM ? "out of memory" : "result is not finite");
+		run->status = 1;
+	} else if (commit(run) != 0) {
+		loft_writer_free(&run->w);
+		return write_failed(run);
+	}
+	return finish(run);
+}
+
 int
 loft_run_files(struct loft_run *run, int nfiles, char **files)
 {
@@ -124,11 +149,7 @@ loft_run_files(struct loft_run *run, int nfiles, char **files)
 			return write_failed(run);
 		}
 	}
-	loft_writer_free(&run->w);
-	errno = 0;
-	if (fflush(run->out) != 0 || ferror(run->out))
-		return write_failed(run);
-	return run->status;
+	return finish(run);
 }
 
 /* The records loft_run_design collects before it hands them over. */

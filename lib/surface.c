@@ -40,8 +40,57 @@ eval_patch(const struct loft_surface *s, double u, double v,
 	loft_patch_eval(s->coef, s->dim, u, v, p, du, dv);
 }
 
+/* A degree attribute of a bezier-surface: 1 to LOFT_BEZIER_MAXPTS - 1. */
+static int
+degree_attr(const struct loft_record *rec, const char *key, int *deg,
+    struct loft_error *err)
+{
+	const char *v = loft_attr(rec, key);
+	long d;
+
+	if (v == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "bezier-surface record "
+		    "without its degree %s=", key);
+	if (loft_parse_int(v, 1, LOFT_BEZIER_MAXPTS - 1, &d, err) != 0) {
+		char msg[sizeof err->msg];
+
+		memcpy(msg, err->msg, sizeof msg);
+		return loft_fail(err, LOFT_EINPUT, -1, "attribute %s=%s: %s",
+		    key, v, msg);
+	}
+	*deg = (int)d;
+	return 0;
+}
+
+/* bezier-surface: (m + 1)(n + 1) control points in space, u-major. */
+static int
+check_bezier_surface(const struct loft_record *rec, struct loft_surface *s,
+    struct loft_error *err)
+{
+	if (degree_attr(rec, "m", &s->m, err) != 0 ||
+	    degree_attr(rec, "n", &s->n, err) != 0)
+		return LOFT_EINPUT;
+	if (rec->nrows != (size_t)(s->m + 1) * (s->n + 1))
+		return loft_fail(err, LOFT_EINPUT, -1, "bezier-surface record "
+		    "has %zu rows; m=%d n=%d needs %d", rec->nrows, s->m, s->n,
+		    (s->m + 1) * (s->n + 1));
+	if (rec->ncols != 3)
+		return loft_fail(err, LOFT_EINPUT, 0, "bezier-surface rows need "
+		    "3 numbers, not %d", rec->ncols);
+	s->dim = 3;
+	return 0;
+}
+
+static void
+eval_bezier_surface(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv)
+{
+	loft_bezier_surface_eval(s->coef, s->m, s->n, u, v, p, du, dv);
+}
+
 static const struct surface_type types[] = {
 	{ "patch", check_patch, eval_patch },
+	{ "bezier-surface", check_bezier_surface, eval_bezier_surface },
 };
 
 static const struct surface_type *

@@ -4,41 +4,8 @@
 # are derived by hand in the comments; the last line is
 # "patchcmd: N passed, M failed".
 
-B=bin
 T=bin/test/patchcmd
-rm -rf "$T" && mkdir -p "$T" || exit 2
-pass=0
-fail=0
-
-ok() { pass=$((pass + 1)); }
-no() { fail=$((fail + 1)); printf 'FAIL %s\n' "$*" >&2; }
-
-run() {
-	sh -c "$1" >"$T/out" 2>"$T/err"
-	echo $? >"$T/rc"
-	what=$1
-}
-status() {
-	[ "$(cat "$T/rc")" = "$1" ] && ok ||
-	    no "$what: exit $(cat "$T/rc"), want $1; stderr: $(head -3 "$T/err")"
-}
-says() {
-	grep -F -q -- "$1" "$T/err" && ok ||
-	    no "$what: stderr lacks '$1': $(head -3 "$T/err")"
-}
-out_is() {
-	printf '%s\n' "$1" | cmp -s - "$T/out" && ok ||
-	    no "$what: stdout is '$(head -8 "$T/out")', want '$1'"
-}
-out_empty() {
-	[ ! -s "$T/out" ] && ok || no "$what: stdout not empty: $(head -3 "$T/out")"
-}
-fails() {
-	run "$3"
-	status "$1"
-	says "$2"
-	out_empty
-}
+. tests/lib.sh
 # near FILE1 FILE2 TOL: same shape, numbers within TOL
 near() {
 	awk -v tol="$3" 'NR == FNR { a[FNR] = $0; n = FNR; next }

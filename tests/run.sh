@@ -27,5 +27,7 @@ suite bin/test/paper man/figures/insole.knots
 suite sh tests/cmd.sh
 suite bin/test/patch
 suite sh tests/patch.sh
+suite bin/test/bezier
+suite sh tests/bezapprox.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

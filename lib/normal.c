@@ -1,0 +1,739 @@
+/*
+ * normal.c: normal approximation of regular curves and surfaces by
+ * Bezier ones, after A. Carriazo, M. C. Marquez and H. Ugail, "Normal
+ * approximations of regular curves and surfaces", Filomat 29(3), 2015.
+ *
+ * Every control point but the ends lies on the normal line of the curve
+ * (eq. 1) or surface at an equally spaced parameter, and the distances
+ * lambda along those lines minimise the squared L2 distance between the
+ * curve and the Bezier curve (eq. 3).  F is quadratic in the lambdas, so
+ * dF/dlambda_j = 0 is a linear system; its matrix is the Bernstein Gram
+ * matrix weighted by the normals' dot products, which is exact, and only
+ * its right-hand side needs quadrature.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/*
+ * Quadrature: Gauss-Legendre with QUAD_NODES nodes on each of at least
+ * QUAD_MIN_PANELS equal panels, panels aligned with the curve's pieces.
+ * 16 nodes integrate polynomials of degree 31 exactly, so a piecewise
+ * cubic or quartic input is integrated exactly for every degree the
+ * program allows; on the papers' smooth examples (trigonometric in t)
+ * doubling the panels changes F by less than 1e-15 relative, which the
+ * tests check.
+ */
+#define QUAD_NODES      16
+#define QUAD_MIN_PANELS 16
+
+/*
+ * A space curve has no principal normal where alpha'' is parallel to
+ * alpha' (zero curvature).  Parallel within rounding: the sine of the
+ * angle between them below this.
+ */
+#define NORMAL_TOL 1e-10
+
+/*
+ * The derivative vanishes (the curve or surface is not regular) when its
+ * length is below this fraction of the average over the parameter range.
+ */
+#define SPEED_TOL 1e-12
+
+/* A pivot of the Cholesky factorisation below this fraction of the
+ * largest diagonal entry: the system is singular to working precision. */
+#define SINGULAR_TOL 1e-13
+
+struct rule {
+	double *t, *w;
+	size_t count;
+	double *ends;           /* the panels' ends: panels + 1 of them */
+	size_t panels;
+};
+
+/*
+ * The QUAD_NODES-point Gauss-Legendre rule on [0, 1]: the roots of the
+ * Legendre polynomial P_q by Newton's method from Tricomi's estimate,
+ * the weights 2 / ((1 - x^2) P_q'(x)^2) halved for the unit interval.
+ */
+static void
+gauss_legendre(double *x, double *w)
+{
+	const int q = QUAD_NODES;
+
+	for (int i = 0; i < q; i++) {
+		double z = cos(M_PI * (i + 0.75) / (q + 0.5)), dp = 1;
+
+		for (int it = 0; it < 100; it++) {
+			double p0 = 1, p1 = z, dz;
+
+			for (int k = 2; k <= q; k++) {
+				double p2 = ((2 * k - 1) * z * p1 -
+				    (k - 1) * p0) / k;
+
+				p0 = p1;
+				p1 = p2;
+			}
+			dp = q * (z * p1 - p0) / (z * z - 1);
+			dz = p1 / dp;
+			z -= dz;
+			if (fabs(dz) <= 1e-16)
+				break;
+		}
+		x[i] = (1 - z) / 2;
+		w[i] = 1 / ((1 - z * z) * dp * dp);
+	}
+}
+
+static void
+rule_free(struct rule *r)
+{
+	free(r->t);
+	free(r->w);
+	free(r->ends);
+}
+
+static int
+rule_make(struct rule *r, size_t npieces, struct loft_error *err)
+{
+	double gx[QUAD_NODES], gw[QUAD_NODES];
+	size_t per = npieces >= QUAD_MIN_PANELS ? 1 :
+	    (QUAD_MIN_PANELS + npieces - 1) / npieces;
+	size_t panels = npieces * per;
+
+	if (npieces == 0 || panels > (size_t)-1 / QUAD_NODES / sizeof(double))
+		return loft_fail(err, LOFT_ENOMEM, -1, "too many pieces");
+	r->count = panels * QUAD_NODES;
+	r->panels = panels;
+	r->t = malloc(r->count * sizeof *r->t);
+	r->w = malloc(r->count * sizeof *r->w);
+	r->ends = malloc((panels + 1) * sizeof *r->ends);
+	if (r->t == NULL || r->w == NULL || r->ends == NULL) {
+		rule_free(r);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	gauss_legendre(gx, gw);
+	for (size_t p = 0; p < panels; p++) {
+		/* panel p of piece p / per, so its ends are the pieces' */
+		double a = (double)(p / per) / npieces +
+		    (double)(p % per) / (double)panels;
+		double h = 1.0 / (double)panels;
+
+		if (p % per == per - 1)
+			h = (double)(p / per + 1) / npieces - a;
+		r->ends[p] = a;
+		for (int i = 0; i < QUAD_NODES; i++) {
+			r->t[p * QUAD_NODES + i] = a + h * gx[i];
+			r->w[p * QUAD_NODES + i] = h * gw[i];
+		}
+	}
+	r->ends[panels] = 1;
+	return 0;
+}
+
+static int
+all_finite(const double *v, int n)
+{
+	for (int k = 0; k < n; k++)
+		if (!isfinite(v[k]))
+			return 0;
+	return 1;
+}
+
+/*
+ * Solve A x = b for the symmetric positive definite n x n matrix A
+ * (overwritten by its Cholesky factor) in place of b.
+ */
+static int
+cholesky_solve(double *a, double *b, size_t n, struct loft_error *err)
+{
+	double big = 0;
+
+	for (size_t i = 0; i < n; i++)
+		if (a[i * n + i] > big)
+			big = a[i * n + i];
+	for (size_t j = 0; j < n; j++) {
+		double d = a[j * n + j];
+
+		for (size_t k = 0; k < j; k++)
+			d -= a[j * n + k] * a[j * n + k];
+		if (!(d > SINGULAR_TOL * big))
+			return loft_fail(err, LOFT_EGEOM, -1, "the system for "
+			    "the control points is singular (pivot %zu of "
+			    "%zu is %.3g of the largest)", j + 1, n,
+			    big > 0 ? d / big : 0);
+		d = sqrt(d);
+		a[j * n + j] = d;
+		for (size_t i = j + 1; i < n; i++) {
+			double s = a[i * n + j];
+
+			for (size_t k = 0; k < j; k++)
+				s -= a[i * n + k] * a[j * n + k];
+			a[i * n + j] = s / d;
+		}
+	}
+	for (size_t i = 0; i < n; i++) {
+		for (size_t k = 0; k < i; k++)
+			b[i] -= a[i * n + k] * b[k];
+		b[i] /= a[i * n + i];
+	}
+	for (size_t i = n; i-- > 0;) {
+		for (size_t k = i + 1; k < n; k++)
+			b[i] -= a[k * n + i] * b[k];
+		b[i] /= a[i * n + i];
+	}
+	return 0;
+}
+
+/* 3-D cross product */
+static void
+cross(double *c, const double *a, const double *b)
+{
+	double x = a[1] * b[2] - a[2] * b[1];
+	double y = a[2] * b[0] - a[0] * b[2];
+	double z = a[0] * b[1] - a[1] * b[0];
+
+	c[0] = x;
+	c[1] = y;
+	c[2] = z;
+}
+
+/* ------------------------------------------------------------------ */
+/* Curves                                                              */
+
+/* What the curve method needs of the curve at one t_i. */
+struct station {
+	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+	double n[LOFT_MAXDIM];  /* unit normal, or zero where there is none */
+	int has_normal;
+};
+
+/*
+ * The normal at t: in the plane the unit normal (-y', x') / |alpha'| of
+ * section 2; in space the principal normal b x t, which is the unit
+ * vector along (alpha' x alpha'') x alpha'.  speed is the curve's mean
+ * speed, for SPEED_TOL.
+ */
+static int
+normal_at(struct station *s, int dim, double t, double speed,
+    struct loft_error *err)
+{
+	double len = vnorm(s->d1, dim);
+
+	s->has_normal = 0;
+	memset(s->n, 0, sizeof s->n);
+	if (!(len > SPEED_TOL * speed))
+		return loft_fail(err, LOFT_EGEOM, -1, "the curve's derivative "
+		    "vanishes at t = %.17g: no normal there", t);
+	if (dim == 2) {
+		s->n[0] = -s->d1[1] / len;
+		s->n[1] = s->d1[0] / len;
+		s->has_normal = 1;
+		return 0;
+	}
+	double b[3], acc = vnorm(s->d2, 3);
+
+	cross(b, s->d1, s->d2);
+	if (!(vnorm(b, 3) > NORMAL_TOL * len * acc))
+		return 0;               /* zero curvature: no principal normal */
+	cross(s->n, b, s->d1);
+	vunit(s->n, 3);
+	s->has_normal = 1;
+	return 0;
+}
+
+/*
+ * Evaluate the curve at every quadrature node into ap (count * dim) and
+ * store its mean speed: the length of the polyline from t = 0 through
+ * the nodes.  The panels' ends are checked finite too, so a pole at
+ * a simple fraction (1/2, 1/4, ...) is caught; one strictly between
+ * sample points is not.
+ */
+static int
+sample_curve(const struct loft_pcurve *a, const struct rule *r, double *ap,
+    double *speed, struct loft_error *err)
+{
+	int dim = a->dim;
+	double p[LOFT_MAXDIM], len = 0;
+
+	for (size_t k = 0; k <= r->panels; k++) {
+		a->eval(a->ctx, r->ends[k], p, NULL, NULL);
+		if (!all_finite(p, dim))
+			return loft_fail(err, LOFT_EINPUT, -1, "the curve is "
+			    "not finite at t = %.17g", r->ends[k]);
+		if (k == 0)
+			vcopy(ap, p, dim);      /* for the polyline's start */
+	}
+	vcopy(p, ap, dim);
+	for (size_t q = 0; q < r->count; q++) {
+		a->eval(a->ctx, r->t[q], ap + q * dim, NULL, NULL);
+		if (!all_finite(ap + q * dim, dim))
+			return loft_fail(err, LOFT_EINPUT, -1, "the curve is "
+			    "not finite at t = %.17g", r->t[q]);
+		len += vdist(ap + q * dim, p, dim);
+		vcopy(p, ap + q * dim, dim);
+	}
+	if (!(len > 0))
+		return loft_fail(err, LOFT_EGEOM, -1, "the curve is a single "
+		    "point");
+	*speed = len;
+	return 0;
+}
+
+/*
+ * Point, derivatives and normal at t_i = i / n, checked finite; the
+ * normal only where the method needs it (need_normal).
+ */
+static int
+station_at(const struct loft_pcurve *a, struct station *s, double t,
+    double speed, int need_normal, struct loft_error *err)
+{
+	int dim = a->dim;
+
+	a->eval(a->ctx, t, s->p, s->d1, s->d2);
+	s->has_normal = 0;
+	memset(s->n, 0, sizeof s->n);
+	if (!all_finite(s->p, dim))
+		return loft_fail(err, LOFT_EINPUT, -1, "the curve is not "
+		    "finite at t = %.17g", t);
+	if (!need_normal)
+		return 0;
+	if (!all_finite(s->d1, dim) || (dim == 3 && !all_finite(s->d2, dim)))
+		return loft_fail(err, LOFT_EINPUT, -1, "the curve or its "
+		    "derivatives are not finite at t = %.17g", t);
+	return normal_at(s, dim, t, speed, err);
+}
+
+/*
+ * Eq. 4: B'(0) . n(0) = 0 gives n (alpha(t_1) + lambda_1 n(t_1) -
+ * alpha(0)) . n(0) = 0, and likewise at the far end.
+ */
+static int
+clamp_end(const struct station *end, const struct station *next, int dim,
+    double *lambda, const char *which, struct loft_error *err)
+{
+	double c[LOFT_MAXDIM], nn;
+
+	if (!end->has_normal || !next->has_normal)
+		return loft_fail(err, LOFT_EGEOM, -1, "cannot clamp at t = %s: "
+		    "the curve has no normal there or at the next t_i (zero "
+		    "curvature)", which);
+	nn = vdot(next->n, end->n, dim);
+	if (!(fabs(nn) > NORMAL_TOL))
+		return loft_fail(err, LOFT_EGEOM, -1, "cannot clamp at t = %s: "
+		    "the normal at the next t_i is perpendicular to the end's",
+		    which);
+	vsub(c, next->p, end->p, dim);
+	*lambda = -vdot(c, end->n, dim) / nn;
+	return 0;
+}
+
+/*
+ * The right-hand side of dF/dlambda_j = 0 (section 3): with Q the
+ * control points for lambda = 0 on the free stations, r(t) = alpha(t) -
+ * sum Q_i B_i(t) and b_j = n_j . integral r B_j dt.
+ */
+static void
+curve_rhs(const struct rule *r, const double *ap, int dim, int n,
+    const double *q, const struct station *st, const int *freeidx,
+    int nfree, double *b)
+{
+	double bern[LOFT_NORMAL_MAXDEG + 1];
+
+	memset(b, 0, nfree * sizeof *b);
+	for (size_t k = 0; k < r->count; k++) {
+		double res[LOFT_MAXDIM];
+
+		loft_bernstein(n, r->t[k], bern);
+		vcopy(res, ap + k * dim, dim);
+		for (int i = 0; i <= n; i++)
+			vaxpy(res, -bern[i], q + i * dim, dim);
+		for (int f = 0; f < nfree; f++) {
+			int j = freeidx[f];
+
+			b[f] += r->w[k] * bern[j] * vdot(st[j].n, res, dim);
+		}
+	}
+}
+
+/* F = integral |alpha - B|^2 (eq. 3) for the control points ctl. */
+static double
+curve_error(const struct rule *r, const double *ap, int dim, int n,
+    const double *ctl)
+{
+	double f = 0;
+
+	for (size_t k = 0; k < r->count; k++) {
+		double b[LOFT_MAXDIM];
+
+		loft_bezier_eval(ctl, (size_t)n + 1, dim, r->t[k], b, NULL,
+		    NULL);
+		f += r->w[k] * vdist(b, ap + k * dim, dim) *
+		    vdist(b, ap + k * dim, dim);
+	}
+	return f;
+}
+
+/* Solve for the free lambdas and place every control point. */
+static int
+curve_solve(const struct rule *r, const double *ap, int dim, int n,
+    const struct station *st, double *lam, const int *fixed, double *ctl,
+    struct loft_error *err)
+{
+	int freeidx[LOFT_NORMAL_MAXDEG], nfree = 0, rc;
+	double a[LOFT_NORMAL_MAXDEG * LOFT_NORMAL_MAXDEG];
+	double b[LOFT_NORMAL_MAXDEG];
+
+	for (int i = 0; i <= n; i++) {
+		vcopy(ctl + i * dim, st[i].p, dim);
+		vaxpy(ctl + i * dim, lam[i], st[i].n, dim);
+		if (!fixed[i])
+			freeidx[nfree++] = i;
+	}
+	if (nfree == 0)
+		return 0;
+	for (int f = 0; f < nfree; f++)
+		for (int g = 0; g < nfree; g++)
+			a[f * nfree + g] = vdot(st[freeidx[f]].n,
+			    st[freeidx[g]].n, dim) *
+			    loft_bernstein_gram(n, freeidx[f], freeidx[g]);
+	curve_rhs(r, ap, dim, n, ctl, st, freeidx, nfree, b);
+	if ((rc = cholesky_solve(a, b, (size_t)nfree, err)) != 0)
+		return rc;
+	for (int f = 0; f < nfree; f++) {
+		int j = freeidx[f];
+
+		lam[j] = b[f];
+		vaxpy(ctl + j * dim, lam[j], st[j].n, dim);
+	}
+	return 0;
+}
+
+int
+loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
+    double *ctl, double *lambda, int *nonormal, double *error,
+    struct loft_error *err)
+{
+	struct station st[LOFT_NORMAL_MAXDEG + 1];
+	double lam[LOFT_NORMAL_MAXDEG + 1] = { 0 }, speed = 0, *ap;
+	int fixed[LOFT_NORMAL_MAXDEG + 1], dim = a->dim, rc;
+	struct rule r;
+
+	if (n < (clamp ? 3 : 1) || n > LOFT_NORMAL_MAXDEG)
+		return loft_fail(err, LOFT_EINPUT, -1, "degree %d: want %d to "
+		    "%d", n, clamp ? 3 : 1, LOFT_NORMAL_MAXDEG);
+	if ((rc = rule_make(&r, a->npieces, err)) != 0)
+		return rc;
+	ap = malloc(r.count * dim * sizeof *ap);
+	if (ap == NULL) {
+		rule_free(&r);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	rc = sample_curve(a, &r, ap, &speed, err);
+	for (int i = 0; i <= n && rc == 0; i++) {
+		rc = station_at(a, &st[i], (double)i / n, speed,
+		    clamp || (i > 0 && i < n), err);
+		/* the ends are the curve's own: no lambda there */
+		fixed[i] = i == 0 || i == n || !st[i].has_normal;
+	}
+	if (rc == 0 && clamp)
+		rc = clamp_end(&st[0], &st[1], dim, &lam[1], "0", err);
+	if (rc == 0 && clamp)
+		rc = clamp_end(&st[n], &st[n - 1], dim, &lam[n - 1], "1", err);
+	if (clamp)
+		fixed[1] = fixed[n - 1] = 1;
+	if (rc == 0)
+		rc = curve_solve(&r, ap, dim, n, st, lam, fixed, ctl, err);
+	if (rc == 0) {
+		*error = curve_error(&r, ap, dim, n, ctl);
+		for (int i = 0; i <= n; i++) {
+			if (lambda != NULL)
+				lambda[i] = lam[i];
+			if (nonormal != NULL)
+				nonormal[i] = i > 0 && i < n &&
+				    !st[i].has_normal;
+		}
+	}
+	free(ap);
+	rule_free(&r);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Surfaces                                                            */
+
+/* A boundary curve of a surface: x(t, 0), x(0, t), x(t, 1), x(1, t). */
+struct edge {
+	const struct loft_psurface *x;
+	int along_u;            /* t is u (edges v = 0, 1) or v */
+	double fixed;           /* the other parameter's value */
+};
+
+static void
+edge_eval(void *ctx, double t, double *p, double *d1, double *d2)
+{
+	const struct edge *e = ctx;
+
+	if (e->along_u)
+		e->x->eval(e->x->ctx, t, e->fixed, p, d1, NULL, d2, NULL);
+	else
+		e->x->eval(e->x->ctx, e->fixed, t, p, NULL, d1, NULL, d2);
+}
+
+/*
+ * Step 1 of section 4: the four boundary curves by the curve method,
+ * their control points into the border of the net.
+ */
+static int
+surface_border(const struct loft_psurface *x, int m, int n, int clamp,
+    double *ctl, struct loft_error *err)
+{
+	static const char *const names[] = { "v = 0", "u = 0", "v = 1",
+	    "u = 1" };
+	double pts[(LOFT_NORMAL_MAXDEG + 1) * 3], f;
+	int rc;
+
+	for (int e = 0; e < 4; e++) {
+		struct edge ed = { x, e % 2 == 0, e < 2 ? 0 : 1 };
+		struct loft_pcurve c = { 3, ed.along_u ? x->npu : x->npv,
+		    edge_eval, &ed };
+		int deg = ed.along_u ? m : n;
+
+		if ((rc = loft_normal_curve(&c, deg, clamp, pts, NULL, NULL, &f,
+		    err)) != 0) {
+			char msg[sizeof err->msg];
+
+			memcpy(msg, err->msg, sizeof msg);
+			return loft_fail(err, rc, -1, "boundary %s: %s",
+			    names[e], msg);
+		}
+		for (int k = 0; k <= deg; k++) {
+			int i = ed.along_u ? k : (e < 2 ? 0 : m);
+			int j = ed.along_u ? (e < 2 ? 0 : n) : k;
+
+			vcopy(ctl + 3 * (i * (n + 1) + j), pts + 3 * k, 3);
+		}
+	}
+	return 0;
+}
+
+/*
+ * The interior stations: x(u_i, v_j) into the net, the unit normal
+ * x_u x x_v / |x_u x x_v| into nrm (index (i - 1)(n - 1) + j - 1).
+ */
+static int
+surface_stations(const struct loft_psurface *x, int m, int n, double *ctl,
+    double *nrm, struct loft_error *err)
+{
+	for (int i = 1; i < m; i++)
+		for (int j = 1; j < n; j++) {
+			double u = (double)i / m, v = (double)j / n;
+			double *p = ctl + 3 * (i * (n + 1) + j), pu[3], pv[3];
+			double *nn = nrm + 3 * ((i - 1) * (n - 1) + j - 1);
+
+			x->eval(x->ctx, u, v, p, pu, pv, NULL, NULL);
+			if (!all_finite(p, 3) || !all_finite(pu, 3) ||
+			    !all_finite(pv, 3))
+				return loft_fail(err, LOFT_EINPUT, -1, "the "
+				    "surface or its derivatives are not finite "
+				    "at (u, v) = (%.17g, %.17g)", u, v);
+			cross(nn, pu, pv);
+			if (!(vnorm(nn, 3) > NORMAL_TOL * vnorm(pu, 3) *
+			    vnorm(pv, 3)) || !(vnorm(nn, 3) > 0))
+				return loft_fail(err, LOFT_EGEOM, -1, "the "
+				    "surface is not regular at (u, v) = "
+				    "(%.17g, %.17g): x_u x x_v = 0, no normal",
+				    u, v);
+			vunit(nn, 3);
+		}
+	return 0;
+}
+
+/* The surface at every pair of quadrature nodes, u-major, checked. */
+static int
+sample_surface(const struct loft_psurface *x, const struct rule *ru,
+    const struct rule *rv, double *xp, struct loft_error *err)
+{
+	double p[3];
+
+	/* the grid of panel ends, for poles at simple fractions */
+	for (size_t a = 0; a <= ru->panels; a++)
+		for (size_t b = 0; b <= rv->panels; b++) {
+			x->eval(x->ctx, ru->ends[a], rv->ends[b], p, NULL, NULL,
+			    NULL, NULL);
+			if (!all_finite(p, 3))
+				return loft_fail(err, LOFT_EINPUT, -1, "the "
+				    "surface is not finite at (u, v) = "
+				    "(%.17g, %.17g)", ru->ends[a], rv->ends[b]);
+		}
+	for (size_t a = 0; a < ru->count; a++)
+		for (size_t b = 0; b < rv->count; b++) {
+			double *q = xp + 3 * (a * rv->count + b);
+
+			x->eval(x->ctx, ru->t[a], rv->t[b], q, NULL, NULL,
+			    NULL, NULL);
+			if (!all_finite(q, 3))
+				return loft_fail(err, LOFT_EINPUT, -1, "the "
+				    "surface is not finite at (u, v) = "
+				    "(%.17g, %.17g)", ru->t[a], rv->t[b]);
+		}
+	return 0;
+}
+
+/* Bernstein values of degree deg at every node of r, node-major. */
+static double *
+bernstein_table(const struct rule *r, int deg)
+{
+	double *t = malloc(r->count * (deg + 1) * sizeof *t);
+
+	if (t != NULL)
+		for (size_t k = 0; k < r->count; k++)
+			loft_bernstein(deg, r->t[k], t + k * (deg + 1));
+	return t;
+}
+
+/* The surface quadrature's state, so the helpers below stay short. */
+struct squad {
+	struct rule ru, rv;
+	double *xp, *bu, *bv;   /* x at the nodes; Bernstein tables */
+	int m, n;
+};
+
+/* B(u, v) at node pair (a, b) for the net ctl. */
+static void
+net_at(const struct squad *s, const double *ctl, size_t a, size_t b,
+    double *p)
+{
+	const double *bu = s->bu + a * (s->m + 1), *bv = s->bv + b * (s->n + 1);
+
+	p[0] = p[1] = p[2] = 0;
+	for (int i = 0; i <= s->m; i++)
+		for (int j = 0; j <= s->n; j++)
+			vaxpy(p, bu[i] * bv[j], ctl + 3 * (i * (s->n + 1) + j),
+			    3);
+}
+
+/* The double integral of |x - B|^2 for the net ctl. */
+static double
+surface_error(const struct squad *s, const double *ctl)
+{
+	double f = 0;
+
+	for (size_t a = 0; a < s->ru.count; a++)
+		for (size_t b = 0; b < s->rv.count; b++) {
+			double p[3], d;
+
+			net_at(s, ctl, a, b, p);
+			d = vdist(p, s->xp + 3 * (a * s->rv.count + b), 3);
+			f += s->ru.w[a] * s->rv.w[b] * d * d;
+		}
+	return f;
+}
+
+/*
+ * Steps 2 to 4 of section 4: dF/dlambda_ij = 0 is A lambda = b with
+ * A_(ij)(kl) = (N_ij . N_kl) G^m_ik G^n_jl, G the Bernstein Gram
+ * matrices, and b_ij = N_ij . double integral of r B_i(u) B_j(v), r = x
+ * minus the surface of the net with every lambda zero.
+ */
+static int
+surface_solve(const struct squad *s, const double *nrm, double *ctl,
+    struct loft_error *err)
+{
+	int m = s->m, n = s->n;
+	size_t dim = (size_t)(m - 1) * (n - 1);
+	double *a = malloc(dim * dim * sizeof *a), *b = calloc(dim, sizeof *b);
+	int rc = 0;
+
+	if (a == NULL || b == NULL) {
+		free(a);
+		free(b);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	for (size_t f = 0; f < dim; f++)
+		for (size_t g = 0; g < dim; g++)
+			a[f * dim + g] = vdot(nrm + 3 * f, nrm + 3 * g, 3) *
+			    loft_bernstein_gram(m, (int)(f / (n - 1)) + 1,
+			    (int)(g / (n - 1)) + 1) *
+			    loft_bernstein_gram(n, (int)(f % (n - 1)) + 1,
+			    (int)(g % (n - 1)) + 1);
+	for (size_t qa = 0; qa < s->ru.count; qa++)
+		for (size_t qb = 0; qb < s->rv.count; qb++) {
+			const double *bu = s->bu + qa * (m + 1);
+			const double *bv = s->bv + qb * (n + 1);
+			double r[3], w = s->ru.w[qa] * s->rv.w[qb];
+
+			net_at(s, ctl, qa, qb, r);
+			vsub(r, s->xp + 3 * (qa * s->rv.count + qb), r, 3);
+			for (size_t f = 0; f < dim; f++)
+				b[f] += w * bu[f / (n - 1) + 1] *
+				    bv[f % (n - 1) + 1] * vdot(nrm + 3 * f, r, 3);
+		}
+	rc = cholesky_solve(a, b, dim, err);
+	for (size_t f = 0; f < dim && rc == 0; f++) {
+		size_t i = f / (n - 1) + 1, j = f % (n - 1) + 1;
+
+		vaxpy(ctl + 3 * (i * (n + 1) + j), b[f], nrm + 3 * f, 3);
+	}
+	free(a);
+	free(b);
+	return rc;
+}
+
+static void
+squad_free(struct squad *s)
+{
+	rule_free(&s->ru);
+	rule_free(&s->rv);
+	free(s->xp);
+	free(s->bu);
+	free(s->bv);
+}
+
+static int
+squad_make(struct squad *s, const struct loft_psurface *x, int m, int n,
+    struct loft_error *err)
+{
+	memset(s, 0, sizeof *s);
+	s->m = m;
+	s->n = n;
+	if (rule_make(&s->ru, x->npu, err) != 0 ||
+	    rule_make(&s->rv, x->npv, err) != 0)
+		return LOFT_ENOMEM;
+	s->xp = malloc(s->ru.count * s->rv.count * 3 * sizeof *s->xp);
+	s->bu = bernstein_table(&s->ru, m);
+	s->bv = bernstein_table(&s->rv, n);
+	if (s->xp == NULL || s->bu == NULL || s->bv == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	return sample_surface(x, &s->ru, &s->rv, s->xp, err);
+}
+
+int
+loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
+    double *ctl, double *error, struct loft_error *err)
+{
+	struct squad s;
+	double *nrm;
+	int rc;
+
+	if (m < (clamp ? 3 : 1) || n < (clamp ? 3 : 1) ||
+	    m > LOFT_NORMAL_MAXDEG || n > LOFT_NORMAL_MAXDEG)
+		return loft_fail(err, LOFT_EINPUT, -1, "degrees %d,%d: want %d "
+		    "to %d each", m, n, clamp ? 3 : 1, LOFT_NORMAL_MAXDEG);
+	nrm = malloc((size_t)m * n * 3 * sizeof *nrm);
+	if (nrm == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	rc = squad_make(&s, x, m, n, err);
+	if (rc == 0)
+		rc = surface_border(x, m, n, clamp, ctl, err);
+	if (rc == 0)
+		rc = surface_stations(x, m, n, ctl, nrm, err);
+	if (rc == 0 && m > 1 && n > 1)
+		rc = surface_solve(&s, nrm, ctl, err);
+	if (rc == 0)
+		*error = surface_error(&s, ctl);
+	squad_free(&s);
+	free(nrm);
+	return rc;
+}
