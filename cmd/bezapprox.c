@@ -22,7 +22,7 @@ struct opts {
 static const char usage_text[] =
     "usage: bezapprox [-cv] [-n degree | -n m,n] [-p digits] -x expr -y expr "
     "[-z expr]\n"
-    "       bezapprox [-cv] [-n degree] [-p digits] [file ...]\n";
+    "       bezapprox [-cv] [-n degree | -n m,n] [-p digits] [file ...]\n";
 
 static void
 usage(int status)
@@ -92,6 +92,13 @@ record_curve(void *ctx, double t, double *p, double *d1, double *d2)
 	}
 }
 
+static void
+record_surface(void *ctx, double u, double v, double *p, double *pu,
+    double *pv, double *puu, double *pvv)
+{
+	loft_surface_eval2(ctx, u, v, p, pu, pv, puu, pvv);
+}
+
 /* ------------------------------------------------------------------ */
 /* Output                                                              */
 
@@ -99,8 +106,9 @@ static void
 put_header(struct loft_writer *w, const char *type, const struct opts *o,
     double error, const struct loft_record *rec)
 {
+	/* what belongs to the input's type: a patch's id and links */
 	static const char *const consumed[] = { "closed", "error", "m", "n",
-	    NULL };
+	    "id", "su", "sv", "u0", "u1", "v0", "v1", NULL };
 	char buf[LOFT_NUMBUF];
 
 	loft_put_type(w, type);
@@ -158,14 +166,53 @@ approx_curve(struct loft_writer *w, const struct opts *o,
 	return 0;
 }
 
+/* A surface from a record or from expressions, written to w. */
+static int
+approx_surface(struct loft_writer *w, const struct opts *o,
+    const struct loft_psurface *x, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	double ctl[(LOFT_NORMAL_MAXDEG + 1) * (LOFT_NORMAL_MAXDEG + 1) * 3];
+	double error;
+	int rc;
+
+	if ((rc = loft_normal_surface(x, o->m, o->n, o->clamp, ctl, &error,
+	    err)) != 0)
+		return rc;
+	put_header(w, "bezier-surface", o, error, rec);
+	for (int i = 0; i < (o->m + 1) * (o->n + 1); i++)
+		loft_put_row(w, ctl + 3 * i, 3);
+	loft_end_record(w);
+	return 0;
+}
+
 static int
 approx_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
 {
 	const struct opts *o = run->ctx;
 	struct loft_curve c;
+	struct loft_surface s;
 	char where[300];
 
+	if (loft_is_surface(rec)) {
+		if (o->m == 0)
+			return loft_fail(err, LOFT_EINPUT, -1, "a %s record is "
+			    "a surface: give its degrees with -n m,n",
+			    rec->type);
+		if (loft_surface_from_record(rec, &s, err) != 0)
+			return LOFT_EINPUT;
+		if (s.dim != 3)
+			return loft_fail(err, LOFT_EINPUT, -1, "a %s record in "
+			    "the plane has no normals: bezapprox needs a "
+			    "surface in space", rec->type);
+		struct loft_psurface x = { 1, 1, record_surface, &s };
+
+		return approx_surface(&run->w, o, &x, rec, err);
+	}
+	if (o->m > 0 && rec->type != NULL && strcmp(rec->type, "points") != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "a %s record is a curve: "
+		    "-n m,n approximates surfaces", rec->type);
 	if (loft_curve_from_record(rec, &c, err) != 0)
 		return LOFT_EINPUT;
 	struct loft_pcurve a = { c.dim, c.npieces, record_curve, &c };
@@ -178,10 +225,6 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 static int
 approx_expr(struct loft_run *run, struct opts *o, struct loft_error *err)
 {
-	double ctl[(LOFT_NORMAL_MAXDEG + 1) * (LOFT_NORMAL_MAXDEG + 1) * 3];
-	double error;
-	int rc;
-
 	if (o->m == 0) {
 		struct loft_pcurve a = { o->dim, 1, expr_curve, o };
 
@@ -189,14 +232,7 @@ approx_expr(struct loft_run *run, struct opts *o, struct loft_error *err)
 	}
 	struct loft_psurface x = { 1, 1, expr_surface, o };
 
-	if ((rc = loft_normal_surface(&x, o->m, o->n, o->clamp, ctl, &error,
-	    err)) != 0)
-		return rc;
-	put_header(&run->w, "bezier-surface", o, error, NULL);
-	for (int i = 0; i < (o->m + 1) * (o->n + 1); i++)
-		loft_put_row(&run->w, ctl + 3 * i, 3);
-	loft_end_record(&run->w);
-	return 0;
+	return approx_surface(&run->w, o, &x, NULL, err);
 }
 
 /* ------------------------------------------------------------------ */
@@ -323,12 +359,8 @@ main(int argc, char *argv[])
 	if (check_degrees(&o) != 0)
 		return 1;
 	o.dim = o.src[2] != NULL ? 3 : 2;
-	if (o.src[0] == NULL && o.src[1] == NULL && o.src[2] == NULL) {
-		if (o.m > 0)
-			bad_option('n', "m,n: surfaces come from -x, -y, -z "
-			    "expressions");
+	if (o.src[0] == NULL && o.src[1] == NULL && o.src[2] == NULL)
 		return loft_run_files(&run, argc - optind, argv + optind);
-	}
 	if (o.src[0] == NULL || o.src[1] == NULL)
 		bad_option(o.src[0] == NULL ? 'x' : 'y', "is missing: a curve "
 		    "needs -x and -y (and -z in space)");

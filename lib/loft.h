@@ -782,6 +782,8 @@ struct loft_surface {
 	int m, n;               /* the type's own shape, if it has one */
 	void (*eval)(const struct loft_surface *s, double u, double v,
 	    double *p, double *du, double *dv);
+	void (*eval2)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv, double *duu, double *dvv);
 };
 
 /* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
@@ -801,5 +803,9 @@ int loft_surface_from_record(const struct loft_record *rec,
  */
 void loft_surface_eval(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv);
+
+/* The same, with the second derivatives x_uu and x_vv (may be NULL). */
+void loft_surface_eval2(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv, double *duu, double *dvv);
 
 #endif

@@ -14,6 +14,8 @@ struct surface_type {
 	    struct loft_error *err);
 	void (*eval)(const struct loft_surface *s, double u, double v,
 	    double *p, double *du, double *dv);
+	void (*eval2)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv, double *duu, double *dvv);
 };
 
 /* patch: five rows of five vectors (MacCallum's B, loft.5). */
@@ -88,9 +90,52 @@ eval_bezier_surface(const struct loft_surface *s, double u, double v,
 	loft_bezier_surface_eval(s->coef, s->m, s->n, u, v, p, du, dv);
 }
 
+/*
+ * With second derivatives: the rows of the patch as quartics in v give,
+ * at v, the coefficients of the quartics in u through the point (and of
+ * its v-derivatives); combining those at u gives every derivative.
+ */
+static void
+eval2_patch(const struct loft_surface *s, double u, double v, double *p,
+    double *du, double *dv, double *duu, double *dvv)
+{
+	double g[3][5][LOFT_MAXDIM];
+	const double *k[5];
+	int dim = s->dim;
+
+	for (int i = 0; i < 5; i++) {
+		for (int j = 0; j < 5; j++)
+			k[j] = s->coef + (5 * i + j) * dim;
+		loft__quartic_combine(k, dim, v, g[0][i], g[1][i], g[2][i]);
+	}
+	for (int d = 0; d < 3; d++) {
+		for (int i = 0; i < 5; i++)
+			k[i] = g[d][i];
+		loft__quartic_combine(k, dim, u, d == 0 ? p : d == 1 ? dv : dvv,
+		    d == 0 ? du : NULL, d == 0 ? duu : NULL);
+	}
+}
+
+/* The same for a Bezier net: its u-rows are Bezier curves in v. */
+static void
+eval2_bezier_surface(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv, double *duu, double *dvv)
+{
+	double g[3][LOFT_BEZIER_MAXPTS * 3];
+	size_t m = (size_t)s->m + 1, n = (size_t)s->n + 1;
+
+	for (size_t i = 0; i < m; i++)
+		loft_bezier_eval(s->coef + 3 * i * n, n, 3, v, g[0] + 3 * i,
+		    g[1] + 3 * i, g[2] + 3 * i);
+	loft_bezier_eval(g[0], m, 3, u, p, du, duu);
+	loft_bezier_eval(g[1], m, 3, u, dv, NULL, NULL);
+	loft_bezier_eval(g[2], m, 3, u, dvv, NULL, NULL);
+}
+
 static const struct surface_type types[] = {
-	{ "patch", check_patch, eval_patch },
-	{ "bezier-surface", check_bezier_surface, eval_bezier_surface },
+	{ "patch", check_patch, eval_patch, eval2_patch },
+	{ "bezier-surface", check_bezier_surface, eval_bezier_surface,
+	    eval2_bezier_surface },
 };
 
 static const struct surface_type *
@@ -125,6 +170,7 @@ loft_surface_from_record(const struct loft_record *rec,
 	s->type = t->name;
 	s->coef = rec->num;
 	s->eval = t->eval;
+	s->eval2 = t->eval2;
 	return 0;
 }
 
@@ -133,4 +179,11 @@ loft_surface_eval(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv)
 {
 	s->eval(s, u, v, p, du, dv);
+}
+
+void
+loft_surface_eval2(const struct loft_surface *s, double u, double v,
+    double *p, double *du, double *dv, double *duu, double *dvv)
+{
+	s->eval2(s, u, v, p, du, dv, duu, dvv);
 }

@@ -34,7 +34,6 @@ fails 2 "-x is missing" "$B/bezapprox -y t"
 fails 2 "-z is missing: a surface needs" "$B/bezapprox -n 3,3 -x u -y v"
 fails 2 "not both" "$B/bezapprox -x t -y t /dev/null"
 fails 2 "-n 2.5" "$B/bezapprox -n 2.5 -x t -y t"
-fails 2 "-n m,n: surfaces come from" "$B/bezapprox -n 3,3 /dev/null"
 # a degree the method cannot use is bad input, exit 1
 fails 1 "degree 0: want 1 to 24" "$B/bezapprox -n 0 -x t -y t"
 fails 1 "degree 25" "$B/bezapprox -n 25 -x t -y t"
@@ -175,6 +174,32 @@ fails 1 "bezier-surface record has 3 rows; m=1 n=1 needs 4" \
     "printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n' | $B/sample"
 fails 1 "without its degree n=" \
     "printf 'bezier-surface m=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' | $B/sample"
+
+# surface records: the bilinear patch x = 4u, y = 3v, z = uv of four
+# corners; a bilinear function's Bezier net of any degree holds its values
+# at (i/m, j/n) (linear precision), so at 2,2: P_ij = (2i, 1.5j, ij/4)
+run "$B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/bezapprox -n 2,2"
+status 0
+error_near 0 1e-25
+for i in 0 1 2; do for j in 0 1 2; do
+	l=$((3 * i + j + 2))
+	num_near $l 1 $((2 * i)) 1e-15
+	num_near $l 2 "$(awk -v j=$j 'BEGIN { print 1.5 * j }')" 1e-15
+	num_near $l 3 "$(awk -v i=$i -v j=$j 'BEGIN { print i * j / 4 }')" 1e-15
+done; done
+sed -n 1p "$T/out" | grep -q '^bezier-surface m=2 n=2 error=[^ ]*$' && ok ||
+    no "a patch's id and links stay behind: $(sed -n 1p "$T/out")"
+# and the bezier-surface record written above, read back
+run "$B/bezapprox -n 4,4 $T/cyl.bez"
+status 0
+sed -n 1p "$T/out" | grep -q '^bezier-surface m=4 n=4 error=' && ok ||
+    no "bezier-surface in: $(sed -n 1p "$T/out")"
+fails 1 "a patch record is a surface: give its degrees with -n m,n" \
+    "$B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/bezapprox -n 3"
+fails 1 "a cubic record is a curve: -n m,n approximates surfaces" \
+    "$B/bezapprox -n 3,3 $T/parabola1"
+fails 1 "in the plane has no normals" \
+    "$B/patchnew -c 0,0 -c 4,0 -c 0,3 -c 4,3 | $B/bezapprox -n 3,3"
 
 # ---- output failures -----------------------------------------------
 if [ -w /dev/full ]; then

@@ -486,6 +486,65 @@ test_surface_border(void)
 			    "border v = 0");
 }
 
+/*
+ * Second derivatives of surface records.  MacCallum's quartic of u^2 has
+ * (0), (1), (0)_u, (1)_u, (h) = 0, 1, 0, 2, 1/4, and that of 1 is
+ * 1, 1, 0, 0, 1; so the patch B[i][j] = (g_i c_j, c_i g_j, g_i g_j) is
+ * (u^2, v^2, u^2 v^2): x_uu = (2, 0, 2 v^2), x_vv = (0, 2, 2 u^2).  The
+ * Bezier net of the same surface at degrees 2, 2 has the x-coordinates
+ * of u^2 = B_2^2(u) in u, (0, 0, 1), and likewise.
+ */
+static void
+test_surface_second_derivatives(void)
+{
+	static const double g[5] = { 0, 1, 0, 2, 0.25 }, c[5] = { 1, 1, 0, 0, 1 };
+	static const double b2[3] = { 0, 0, 1 };
+	double patch[75], net[27], u = 0.3, v = 0.8;
+	char ptype[] = "patch", btype[] = "bezier-surface", m[] = "m", two[] = "2",
+	    n[] = "n";
+	struct loft_attr attrs[2] = { { m, two }, { n, two } };
+	struct loft_record rp = { .type = ptype, .num = patch, .nrows = 5,
+	    .ncols = 15 };
+	struct loft_record rb = { .type = btype, .attr = attrs, .nattr = 2,
+	    .num = net, .nrows = 9, .ncols = 3 };
+	struct loft_record *recs[2] = { &rp, &rb };
+	struct loft_error err;
+
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++) {
+			patch[15 * i + 3 * j] = g[i] * c[j];
+			patch[15 * i + 3 * j + 1] = c[i] * g[j];
+			patch[15 * i + 3 * j + 2] = g[i] * g[j];
+		}
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) {
+			net[9 * i + 3 * j] = b2[i];
+			net[9 * i + 3 * j + 1] = b2[j];
+			net[9 * i + 3 * j + 2] = b2[i] * b2[j];
+		}
+	for (int r = 0; r < 2; r++) {
+		struct loft_surface sf;
+		double p[3], pu[3], pv[3], puu[3], pvv[3], q[3], qu[3], qv[3];
+
+		CHECK(loft_surface_from_record(recs[r], &sf, &err) == 0,
+		    "%s: %s", recs[r]->type, err.msg);
+		loft_surface_eval2(&sf, u, v, p, pu, pv, puu, pvv);
+		loft_surface_eval(&sf, u, v, q, qu, qv);
+		for (int k = 0; k < 3; k++) {
+			NEAR(p[k], q[k], 1e-15, "eval2 point");
+			NEAR(pu[k], qu[k], 1e-15, "eval2 x_u");
+			NEAR(pv[k], qv[k], 1e-15, "eval2 x_v");
+		}
+		NEAR(p[2], u * u * v * v, 1e-15, "u^2 v^2");
+		NEAR(puu[0], 2, 1e-14, "x_uu of u^2");
+		NEAR(puu[1], 0, 1e-14, "x_uu of v^2");
+		NEAR(puu[2], 2 * v * v, 1e-14, "x_uu of u^2 v^2");
+		NEAR(pvv[0], 0, 1e-14, "x_vv of u^2");
+		NEAR(pvv[1], 2, 1e-14, "x_vv of v^2");
+		NEAR(pvv[2], 2 * u * u, 1e-14, "x_vv of u^2 v^2");
+	}
+}
+
 int
 main(void)
 {
@@ -500,5 +559,6 @@ main(void)
 	test_example_4_1();
 	test_figure_6();
 	test_surface_border();
+	test_surface_second_derivatives();
 	return check_done("bezier");
 }
