@@ -10,9 +10,10 @@ DESTDIR =
 
 PROGS   = splinefit sample
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
-          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o
+          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
+          bin/obj/dtoa.o
 BINS    = bin/splinefit bin/sample
-TESTS   = bin/test/unit bin/test/paper
+TESTS   = bin/test/unit bin/test/paper bin/test/numtest bin/test/pow10gen
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1
 MAN5    = man/loft.5
@@ -24,6 +25,8 @@ bin/obj/.dir bin/test/.dir:
 
 bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+bin/obj/dtoa.o: lib/pow10.h
 
 $(LIB): $(LIBOBJ)
 	rm -f $@

@@ -25,5 +25,7 @@ suite() {
 suite bin/test/unit
 suite bin/test/paper man/figures/insole.knots
 suite sh tests/cmd.sh
+suite bin/test/numtest
+suite bin/test/pow10gen -c lib/pow10.h
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
