@@ -78,6 +78,11 @@ vunit(double *a, int dim)
 	return n;
 }
 
+/* cubic.c: eq. 9 from the chord's length w and the cosines ca, cb of the
+ * angles the unit tangents at A and B make with it; as loft_normalise. */
+int loft__normalise_cos(double w, double ca, double cb, double alpha,
+    double *ma, double *mb);
+
 /* fit.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
 int loft__check_knots(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, struct loft_error *err);
