@@ -1,5 +1,6 @@
 # loft: make builds bin/ and libloft.a; make check runs every test;
-# make demo fits the bundled insole; make install PREFIX=... installs.
+# make demo fits the bundled insole; make install PREFIX=... installs;
+# make bench times the programs against GNU spline (tests/bench/run.sh).
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -14,13 +15,14 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/dtoa.o
 BINS    = bin/splinefit bin/sample
 TESTS   = bin/test/unit bin/test/paper bin/test/numtest bin/test/pow10gen
+BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1
 MAN5    = man/loft.5
 
 all: $(BINS) $(LIB)
 
-bin/obj/.dir bin/test/.dir:
+bin/obj/.dir bin/test/.dir bin/bench/.dir:
 	mkdir -p $(@D) && touch $@
 
 bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
@@ -38,8 +40,14 @@ bin/%: cmd/%.c $(LIB) lib/loft.h
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 check: all $(TESTS)
 	@sh tests/run.sh
+
+bench: all $(BENCH)
+	@sh tests/bench/run.sh
 
 demo: all
 	bin/splinefit man/figures/insole.knots | bin/sample -n 20 > bin/insole.pts
@@ -59,5 +67,5 @@ install: all
 clean:
 	rm -rf bin
 
-.PHONY: all check demo install clean
+.PHONY: all check bench demo install clean
 .SECONDARY:

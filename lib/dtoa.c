@@ -257,14 +257,20 @@ done:
 	return 0;
 }
 
+/* 10^0 to 10^19 */
+static const uint64_t pow10_64[] = {
+	1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000,
+	1000000000, 10000000000, 100000000000, 1000000000000,
+	10000000000000, 100000000000000, 1000000000000000,
+	10000000000000000, 100000000000000000, 1000000000000000000,
+	10000000000000000000U
+};
+
 int
 loft__round_digits(double x, int p, uint64_t *digits, int *exp10)
 {
-	uint64_t bits, c, top = 1, n, f;
+	uint64_t bits, c, top = pow10_64[p], n, f;
 	int be, q, lz, e, up, big;
-
-	for (int i = 0; i < p; i++)
-		top *= 10;
 	memcpy(&bits, &x, sizeof bits);
 	be = (int)(bits >> 52 & 0x7ff);
 	c = bits & (((uint64_t)1 << 52) - 1);
