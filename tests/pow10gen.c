@@ -149,8 +149,8 @@ line(int k, char *buf, size_t size)
 {
 	static const char *const head[] = {
 		"/* pow10.h: written by tests/pow10gen.c; do not edit. */",
-		"/* 10^e = g * 2^b rounded up: g = ceil(10^e / 2^b) in "
-		    "[2^127, 2^128). */",
+		("/* 10^e = g * 2^b rounded up: g = ceil(10^e / 2^b) in "
+		    "[2^127, 2^128). */"),
 		"#define POW10_MIN (-330)",
 		"#define POW10_MAX 340",
 		"static const uint64_t pow10_g[][2] = {",
