@@ -1,5 +1,6 @@
 # loft: make builds bin/ and libloft.a; make check runs every test;
-# make demo fits the bundled insole; make install PREFIX=... installs.
+# make demo fits the bundled insole; make install PREFIX=... installs;
+# make bench times the programs against GNU spline (tests/bench/run.sh).
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -12,10 +13,12 @@ PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
-          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o
+          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin
-TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier
+TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
+          bin/test/numtest bin/test/pow10gen
+BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1
@@ -23,11 +26,13 @@ MAN5    = man/loft.5
 
 all: $(BINS) $(LIB)
 
-bin/obj/.dir bin/test/.dir:
+bin/obj/.dir bin/test/.dir bin/bench/.dir:
 	mkdir -p $(@D) && touch $@
 
 bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+bin/obj/dtoa.o: lib/pow10.h
 
 $(LIB): $(LIBOBJ)
 	rm -f $@
@@ -39,8 +44,14 @@ bin/%: cmd/%.c $(LIB) lib/loft.h
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 check: all $(TESTS)
 	@sh tests/run.sh
+
+bench: all $(BENCH)
+	@sh tests/bench/run.sh
 
 demo: all
 	bin/splinefit man/figures/insole.knots | bin/sample -n 20 > bin/insole.pts
@@ -60,5 +71,5 @@ install: all
 clean:
 	rm -rf bin
 
-.PHONY: all check demo install clean
+.PHONY: all check bench demo install clean
 .SECONDARY:

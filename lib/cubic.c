@@ -66,20 +66,27 @@ loft_curvature_vector(const double *d1, const double *d2, int dim, double *kn)
 #define NORMALISE_MIN 1e-9
 
 int
-loft_normalise(const double *chord, const double *ta, const double *tb,
-    int dim, double alpha, double *ma, double *mb)
+loft__normalise_cos(double w, double ca, double cb, double alpha, double *ma,
+    double *mb)
 {
-	double w = vnorm(chord, dim), ca, cb, da, db;
+	double da = 1 + alpha * cb + (1 - alpha) * ca;
+	double db = 1 + alpha * ca + (1 - alpha) * cb;
 
-	if (!(w > 0))
-		return LOFT_EGEOM;
-	ca = vdot(ta, chord, dim) / w;
-	cb = vdot(tb, chord, dim) / w;
-	da = 1 + alpha * cb + (1 - alpha) * ca;
-	db = 1 + alpha * ca + (1 - alpha) * cb;
 	if (!(da > NORMALISE_MIN) || !(db > NORMALISE_MIN))
 		return LOFT_EGEOM;
 	*ma = 2 * w / da;
 	*mb = 2 * w / db;
 	return 0;
+}
+
+int
+loft_normalise(const double *chord, const double *ta, const double *tb,
+    int dim, double alpha, double *ma, double *mb)
+{
+	double w = vnorm(chord, dim);
+
+	if (!(w > 0))
+		return LOFT_EGEOM;
+	return loft__normalise_cos(w, vdot(ta, chord, dim) / w,
+	    vdot(tb, chord, dim) / w, alpha, ma, mb);
 }

@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "loft.h"
 
@@ -84,6 +85,11 @@ vunit(double *a, int dim)
 	return n;
 }
 
+/* cubic.c: eq. 9 from the chord's length w and the cosines ca, cb of the
+ * angles the unit tangents at A and B make with it; as loft_normalise. */
+int loft__normalise_cos(double w, double ca, double cb, double alpha,
+    double *ma, double *mb);
+
 /* fit.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
 int loft__check_knots(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, struct loft_error *err);
@@ -95,6 +101,27 @@ int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
 /* cspline.c: the Ferguson and chord-length baselines of loft_fit. */
 int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, double *seg, struct loft_error *err);
+
+/*
+ * dtoa.c: exact decimal conversion.  Each returns 0, or -1 in a rare
+ * case its 128-bit arithmetic cannot decide; the caller then asks the C
+ * library.  x is finite and positive.
+ * loft__shortest: the fewest significant digits d (maybe with trailing
+ * zeros) with d 10^e reading back to x, the nearest such to x.
+ * loft__round_digits: x rounded to p (1..17) significant digits, ties to
+ * even, as printf rounds: d has p digits.
+ * loft__decimal_to_double: w 10^e rounded to the nearest double, normal
+ * doubles only (-1 for subnormal or overflowing results).
+ * loft__decimal_text: d 10^e (d > 0) laid out as printf's %.{prec}g lays
+ * out those digits, trailing zeros dropped; returns the length written.
+ */
+int loft__shortest(double x, uint64_t *d, int *e);
+int loft__round_digits(double x, int p, uint64_t *d, int *e);
+int loft__decimal_to_double(uint64_t w, int e, double *x);
+int loft__decimal_text(char *buf, uint64_t d, int e, int prec);
+/* floor(log10(2^q)) and floor(log10(3/4 2^q)), for |q| <= 1200 */
+int loft__floor_log10_pow2(int q);
+int loft__floor_log10_3q_pow2(int q);
 
 /* Grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);

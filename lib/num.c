@@ -4,6 +4,7 @@
  */
 #include <errno.h>
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -52,32 +53,61 @@ isdigit_(int c)
 	return c >= '0' && c <= '9';
 }
 
-/* Length of the longest prefix of s[0..len) that is a strict decimal. */
+/*
+ * A strict decimal's value as (w + f) 10^e: w the integer of its first 19
+ * significant digits (any more are counted into e; *inexact says whether
+ * they were not all zeros, 0 < f < 1).  Returns the length of the longest
+ * prefix of s[0..len) that is a strict decimal (0: none).
+ */
 static size_t
-scan_decimal(const char *s, size_t len)
+scan_decimal(const char *s, size_t len, int *neg, uint64_t *w, long *e,
+    int *inexact)
 {
 	size_t i = 0, mant = 0;
+	int sig = 0;
 
+	*neg = 0;
+	*w = 0;
+	*e = 0;
+	*inexact = 0;
 	if (i < len && (s[i] == '+' || s[i] == '-'))
-		i++;
-	while (i < len && isdigit_(s[i]))
-		i++, mant++;
-	if (i < len && s[i] == '.') {
-		i++;
-		while (i < len && isdigit_(s[i]))
-			i++, mant++;
+		*neg = s[i++] == '-';
+	for (int frac = 0; i < len; i++) {
+		int d = s[i] - '0';
+
+		if (s[i] == '.' && !frac) {
+			frac = 1;
+			continue;
+		}
+		if (!isdigit_(s[i]))
+			break;
+		mant++;
+		if (sig < 19 && (sig > 0 || d != 0)) {
+			*w = 10 * *w + (uint64_t)d;
+			sig++;
+			*e -= frac;
+		} else if (sig == 0) {
+			*e -= frac;     /* a leading zero */
+		} else {
+			*e += !frac;    /* a digit past the 19th */
+			*inexact |= d != 0;
+		}
 	}
 	if (mant == 0)
 		return 0;
 	if (i < len && (s[i] == 'e' || s[i] == 'E')) {
 		size_t j = i + 1, exp = 0;
+		long x = 0;
+		int eneg = 0;
 
 		if (j < len && (s[j] == '+' || s[j] == '-'))
-			j++;
-		while (j < len && isdigit_(s[j]))
-			j++, exp++;
+			eneg = s[j++] == '-';
+		for (; j < len && isdigit_(s[j]); j++, exp++)
+			if (x < 100000)         /* far past any double */
+				x = 10 * x + (s[j] - '0');
 		if (exp == 0)
 			return 0;
+		*e += eneg ? -x : x;
 		i = j;
 	}
 	return i;
@@ -86,18 +116,60 @@ scan_decimal(const char *s, size_t len)
 /* Longest number token we convert; longer ones are refused, not cut. */
 #define NUM_MAXLEN 400
 
+/* Powers of ten that doubles hold exactly. */
+static const double exact10[] = {
+	1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
+	1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22
+};
+
+/*
+ * The double nearest (w + f) 10^e without the C library: Clinger's fast
+ * path where w and 10^e are exact doubles (one rounding, the right one),
+ * else dtoa.c's product; where some digits were dropped, w and w + 1
+ * must give the same double.  Returns 0, or -1 to ask strtod.
+ */
+static int
+decimal_value(uint64_t w, long e, int inexact, double *x)
+{
+	double hi;
+
+	if (w == 0) {
+		*x = 0;
+		return 0;
+	}
+	if (!inexact && w <= (uint64_t)1 << 53 && e >= -22 && e <= 22) {
+		*x = e < 0 ? (double)w / exact10[-e] : (double)w * exact10[e];
+		return 0;
+	}
+	if (e < INT_MIN / 2 || e > INT_MAX / 2 ||
+	    loft__decimal_to_double(w, (int)e, x) != 0)
+		return -1;
+	if (inexact && (loft__decimal_to_double(w + 1, (int)e, &hi) != 0 ||
+	    hi != *x))
+		return -1;
+	return 0;
+}
+
 int
 loft_parse_num(const char *s, size_t len, double *x, struct loft_error *err)
 {
 	char tmp[NUM_MAXLEN + 1];
+	uint64_t w;
+	long e;
+	int neg, inexact;
 	double v;
 
-	if (len == 0 || scan_decimal(s, len) != len)
+	if (len == 0 ||
+	    scan_decimal(s, len, &neg, &w, &e, &inexact) != len)
 		return loft_fail(err, LOFT_EINPUT, -1, "'%.*s' is not a number",
 		    (int)(len > 40 ? 40 : len), s);
 	if (len > NUM_MAXLEN)
 		return loft_fail(err, LOFT_EINPUT, -1,
 		    "number of %zu characters is too long", len);
+	if (decimal_value(w, e, inexact, &v) == 0) {
+		*x = neg ? -v : v;
+		return 0;
+	}
 	memcpy(tmp, s, len);
 	tmp[len] = '\0';
 	errno = 0;
@@ -183,36 +255,56 @@ loft_parse_word(const char *s, const char *const *words, int *i,
 }
 
 /*
- * Lossless output: the shortest of %.15g, %.16g and %.17g that reads back
- * to x.  17 significant digits always do (DBL_DECIMAL_DIG); numbers read
- * from a person's file usually round-trip at 15.  Where the shorter
- * precision switched to exponent form, %.17g may still be shorter (a
- * 17-digit integer), so it is tried too.  One place, so a faster
- * shortest-digits algorithm can replace it.
+ * The C library's digits, where dtoa.c cannot decide (the tests never
+ * saw it happen): printf's %e rounding to the precision asked, or else
+ * the fewest digits of it that read back to x > 0.  Laid out as usual.
+ */
+static int
+format_slow(char *buf, double x, int digits)
+{
+	char tmp[48], *p;
+	uint64_t d = 0;
+	int prec = digits, e;
+
+	for (prec = digits ? digits : 1; digits == 0 && prec < 17; prec++) {
+		snprintf(tmp, sizeof tmp, "%.*e", prec - 1, x);
+		if (strtod(tmp, NULL) == x)
+			break;
+	}
+	snprintf(tmp, sizeof tmp, "%.*e", prec - 1, x);
+	for (p = tmp; *p != 'e'; p++)
+		if (isdigit_(*p))
+			d = 10 * d + (uint64_t)(*p - '0');
+	e = atoi(p + 1) - (prec - 1);
+	return loft__decimal_text(buf, d, e, digits ? digits : 17);
+}
+
+/*
+ * Lossless output: the fewest significant digits that read back to x
+ * (the nearest to x of those), from dtoa.c; or x rounded to digits
+ * significant digits.  Laid out as printf's %.17g (or %.{digits}g) lays
+ * out digits: positional for decimal exponents from -4 up to the
+ * precision less one, else d.ddde+XX; no trailing zeros.
  */
 int
 loft_format_num(char *buf, double x, int digits)
 {
-	char alt[LOFT_NUMBUF];
-	int len = 0, alen;
+	uint64_t d;
+	int e, rc, sign = 0;
 
-	if (x == 0)
-		x = 0;          /* minus zero prints as 0 */
-	if (digits > 0)
-		return snprintf(buf, LOFT_NUMBUF, "%.*g", digits, x);
-	for (int d = DBL_DIG; d < 17; d++) {
-		len = snprintf(buf, LOFT_NUMBUF, "%.*g", d, x);
-		if (strtod(buf, NULL) == x) {
-			if (memchr(buf, 'e', (size_t)len) == NULL)
-				return len;
-			break;
-		}
-		len = 0;
+	if (x == 0 || !isfinite(x)) {
+		if (x == 0)
+			x = 0;  /* minus zero prints as 0 */
+		return snprintf(buf, LOFT_NUMBUF, "%g", x);
 	}
-	alen = snprintf(alt, sizeof alt, "%.17g", x);
-	if (len == 0 || alen < len) {
-		memcpy(buf, alt, (size_t)alen + 1);
-		len = alen;
+	if (x < 0) {
+		buf[sign++] = '-';
+		x = -x;
 	}
-	return len;
+	rc = digits > 0 ? loft__round_digits(x, digits, &d, &e) :
+	    loft__shortest(x, &d, &e);
+	if (rc != 0)
+		return sign + format_slow(buf + sign, x, digits);
+	return sign + loft__decimal_text(buf + sign, d, e, digits > 0 ? digits :
+	    17);
 }

@@ -385,15 +385,19 @@ loft_put_attrs_except(struct loft_writer *w, const struct loft_record *rec,
 void
 loft_put_num(struct loft_writer *w, double x)
 {
-	char buf[LOFT_NUMBUF];
-
 	if (!isfinite(x)) {
 		w->bad = LOFT_EGEOM;
 		return;
 	}
+	/* room for a space and the number: format it in place */
+	if (w->bad || loft__grow((void **)&w->buf, &w->cap, w->len +
+	    LOFT_NUMBUF + 1, 1) != 0) {
+		w->bad = w->bad ? w->bad : LOFT_ENOMEM;
+		return;
+	}
 	if (w->col++ > 0)
-		put(w, " ", 1);
-	put(w, buf, (size_t)loft_format_num(buf, x, w->digits));
+		w->buf[w->len++] = ' ';
+	w->len += (size_t)loft_format_num(w->buf + w->len, x, w->digits);
 }
 
 void

@@ -29,5 +29,7 @@ suite bin/test/patch
 suite sh tests/patch.sh
 suite bin/test/bezier
 suite sh tests/bezapprox.sh
+suite bin/test/numtest
+suite bin/test/pow10gen -c lib/pow10.h
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
