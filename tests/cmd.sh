@@ -6,40 +6,7 @@
 B=bin
 T=bin/test/cmd
 rm -rf "$T" && mkdir -p "$T" || exit 2
-pass=0
-fail=0
-
-ok() { pass=$((pass + 1)); }
-no() { fail=$((fail + 1)); printf 'FAIL %s\n' "$*" >&2; }
-
-# run CMD: run it in sh, keeping its stdout, stderr and exit status
-run() {
-	sh -c "$1" >"$T/out" 2>"$T/err"
-	echo $? >"$T/rc"
-	what=$1
-}
-status() {
-	[ "$(cat "$T/rc")" = "$1" ] && ok ||
-	    no "$what: exit $(cat "$T/rc"), want $1; stderr: $(head -3 "$T/err")"
-}
-says() {
-	grep -F -q -- "$1" "$T/err" && ok ||
-	    no "$what: stderr lacks '$1': $(head -3 "$T/err")"
-}
-out_is() {
-	printf '%s\n' "$1" | cmp -s - "$T/out" && ok ||
-	    no "$what: stdout is '$(head -5 "$T/out")', want '$1'"
-}
-out_empty() {
-	[ ! -s "$T/out" ] && ok || no "$what: stdout not empty: $(head -3 "$T/out")"
-}
-# fails STATUS MESSAGE CMD: exits STATUS, says MESSAGE, writes nothing
-fails() {
-	run "$3"
-	status "$1"
-	says "$2"
-	out_empty
-}
+. tests/harness.sh
 
 printf '0 0\n1 0\n1 1\n0 1\n' >"$T/square.knots"
 printf '10 0\n3.5 9.4\n0 2\n-3.5 9.4\n-10 0\n-7 -7\n0 -10\n7 -7\n' \

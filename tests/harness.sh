@@ -1,0 +1,39 @@
+# harness.sh: what the shell suites share, sourced from the top of the
+# tree after the suite sets T, its scratch directory.  ok and no count a
+# pass and a failure; run keeps a command's stdout, stderr and status in
+# $T/out, $T/err and $T/rc for the checks below.
+
+pass=0
+fail=0
+
+ok() { pass=$((pass + 1)); }
+no() { fail=$((fail + 1)); printf 'FAIL %s\n' "$*" >&2; }
+
+# run CMD: run it in sh, keeping its stdout, stderr and exit status
+run() {
+	sh -c "$1" >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	what=$1
+}
+status() {
+	[ "$(cat "$T/rc")" = "$1" ] && ok ||
+	    no "$what: exit $(cat "$T/rc"), want $1; stderr: $(head -3 "$T/err")"
+}
+says() {
+	grep -F -q -- "$1" "$T/err" && ok ||
+	    no "$what: stderr lacks '$1': $(head -3 "$T/err")"
+}
+out_is() {
+	printf '%s\n' "$1" | cmp -s - "$T/out" && ok ||
+	    no "$what: stdout is '$(head -5 "$T/out")', want '$1'"
+}
+out_empty() {
+	[ ! -s "$T/out" ] && ok || no "$what: stdout not empty: $(head -3 "$T/out")"
+}
+# fails STATUS MESSAGE CMD: exits STATUS, says MESSAGE, writes nothing
+fails() {
+	run "$3"
+	status "$1"
+	says "$2"
+	out_empty
+}
