@@ -630,7 +630,8 @@ num(struct doc *d, double x)
 	int n = snprintf(buf, sizeof buf, "%.*f", d->decimals, x);
 
 	if (n < 0 || n >= (int)sizeof buf) {
-		d->bad = 1;
+		/* a tiny drawing far from the origin: every digit */
+		out(d, "%.17g", x);
 		return;
 	}
 	if (strchr(buf, '.') != NULL) {
@@ -888,7 +889,7 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	out(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
 	    "width=\"%.1f\" height=\"%.1f\" viewBox=\"",
-	    PICTURE_PX * vb[2] / big, PICTURE_PX * vb[3] / big);
+	    PICTURE_PX * (vb[2] / big), PICTURE_PX * (vb[3] / big));
 	for (int k = 0; k < 4; k++) {
 		out(d, k ? " " : "");
 		num(d, vb[k]);
