@@ -1,5 +1,6 @@
 # loft: make builds bin/ and libloft.a; make check runs every test;
-# make demo fits the bundled insole; make install PREFIX=... installs.
+# make demo grades and fits the bundled insole, make figures draws the
+# papers' figures; make install PREFIX=... installs.
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -8,13 +9,13 @@ LDLIBS  = -lm
 PREFIX  = /usr/local
 DESTDIR =
 
-PROGS   = splinefit sample
+PROGS   = splinefit sample plot grade
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o
-BINS    = bin/splinefit bin/sample
+BINS    = bin/splinefit bin/sample bin/plot bin/grade
 TESTS   = bin/test/unit bin/test/paper
 LIB     = bin/libloft.a
-MAN1    = man/splinefit.1 man/sample.1
+MAN1    = man/splinefit.1 man/sample.1 man/plot.1 man/grade.1
 MAN5    = man/loft.5
 
 all: $(BINS) $(LIB)
@@ -39,9 +40,13 @@ check: all $(TESTS)
 	@sh tests/run.sh
 
 demo: all
-	bin/splinefit man/figures/insole.knots | bin/sample -n 20 > bin/insole.pts
-	@echo "demo: wrote bin/insole.pts ($$(grep -c . bin/insole.pts) points" \
-	    "on the curve through the 22 knots of man/figures/insole.knots)"
+	bin/grade -s -3:4 man/figures/insole.knots | bin/splinefit | \
+	    bin/plot -l size > bin/insoles.svg
+	@echo "demo: wrote $$(pwd)/bin/insoles.svg: the insole of" \
+	    "man/figures/insole.knots graded into 8 sizes, -3 to +4, each fitted"
+
+figures: all
+	$(MAKE) -C man/figures
 
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
@@ -56,5 +61,5 @@ install: all
 clean:
 	rm -rf bin
 
-.PHONY: all check demo install clean
+.PHONY: all check demo figures install clean
 .SECONDARY:
