@@ -671,25 +671,36 @@ tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
 	tip[1] = base[1] - scale * kn[1];
 }
 
+/* Open a path element of class cls in record rec's colour, with the
+ * stroke width width_px pixels (0: the group's); the caller adds any
+ * other attributes, then d. */
+static void
+path_open(struct doc *d, const char *cls, int rec, double width_px)
+{
+	out(d, "<path class=\"%s\" stroke=\"%s\"", cls, colour(rec));
+	if (width_px > 0) {
+		out(d, " stroke-width=\"");
+		num(d, width_px * d->px);
+		out(d, "\"");
+	}
+}
+
 static void
 draw_comb(struct doc *d, const struct pic *pc, const struct stroke *s,
     double scale)
 {
 	double tip[2];
 
-	out(d, "<path class=\"comb\" stroke=\"%s\" stroke-opacity=\"0.55\" "
-	    "stroke-width=\"", colour(s->rec));
-	num(d, THIN_PX * d->px);
-	out(d, "\" d=\"");
+	path_open(d, "comb", s->rec, THIN_PX);
+	out(d, " stroke-opacity=\"0.55\" d=\"");
 	for (size_t j = 0; j < s->n / 2; j++) {
 		tooth_tip(pc, s, j, scale, tip);
 		point(d, j ? " M" : "M", pc->pt + 2 * (s->first + 2 * j));
 		point(d, " L", tip);
 	}
-	out(d, "\"/>\n<path class=\"comb-envelope\" stroke=\"%s\" "
-	    "stroke-width=\"", colour(s->rec));
-	num(d, THIN_PX * d->px);
-	out(d, "\" d=\"");
+	out(d, "\"/>\n");
+	path_open(d, "comb-envelope", s->rec, THIN_PX);
+	out(d, " d=\"");
 	for (size_t j = 0; j < s->n / 2; j++) {
 		tooth_tip(pc, s, j, scale, tip);
 		point(d, j ? " L" : "M", tip);
@@ -708,7 +719,8 @@ draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
 	const double *p = pc->pt + 2 * s->first, *start = p;
 
-	out(d, "<path class=\"curve\" stroke=\"%s\" d=\"", colour(s->rec));
+	path_open(d, "curve", s->rec, 0);
+	out(d, " d=\"");
 	if (s->kind == K_BEZIER) {
 		for (size_t i = 0; i < s->n / 4; i++, p += 8) {
 			if (i == 0 || !same_point(p - 2, p))
@@ -733,13 +745,11 @@ draw_handles(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
 	const double *p = pc->pt + 2 * s->first;
 
-	out(d, "<path class=\"tangents\" stroke=\"%s\" stroke-dasharray=\"",
-	    colour(s->rec));
+	path_open(d, "tangents", s->rec, THIN_PX);
+	out(d, " stroke-dasharray=\"");
 	num(d, 3 * d->px);
 	out(d, " ");
 	num(d, 2 * d->px);
-	out(d, "\" stroke-width=\"");
-	num(d, THIN_PX * d->px);
 	out(d, "\" d=\"");
 	for (size_t j = 0; j < s->n; j += 2) {
 		point(d, j ? " M" : "M", p + 2 * j);
