@@ -1,6 +1,7 @@
 # loft: make builds bin/ and libloft.a; make check runs every test;
-# make demo fits the bundled insole; make install PREFIX=... installs;
-# make bench times the programs against GNU spline (tests/bench/run.sh).
+# make demo grades and fits the bundled insole; make figures draws the
+# papers' figures; make bench times the programs against GNU spline
+# (tests/bench/run.sh); make install PREFIX=... installs.
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -9,19 +10,21 @@ LDLIBS  = -lm
 PREFIX  = /usr/local
 DESTDIR =
 
-PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin
+PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
+          plot grade
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
-          bin/patchsplit bin/patchdrag bin/patchjoin
+          bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
-          man/patchsplit.1 man/patchdrag.1 man/patchjoin.1
+          man/patchsplit.1 man/patchdrag.1 man/patchjoin.1 man/plot.1 \
+          man/grade.1
 MAN5    = man/loft.5
 
 all: $(BINS) $(LIB)
@@ -54,9 +57,13 @@ bench: all $(BENCH)
 	@sh tests/bench/run.sh
 
 demo: all
-	bin/splinefit man/figures/insole.knots | bin/sample -n 20 > bin/insole.pts
-	@echo "demo: wrote bin/insole.pts ($$(grep -c . bin/insole.pts) points" \
-	    "on the curve through the 22 knots of man/figures/insole.knots)"
+	bin/grade -s -3:4 man/figures/insole.knots | bin/splinefit | \
+	    bin/plot -l size > bin/insoles.svg
+	@echo "demo: wrote $$(pwd)/bin/insoles.svg: the insole of" \
+	    "man/figures/insole.knots graded into 8 sizes, -3 to +4, each fitted"
+
+figures: all
+	$(MAKE) -C man/figures
 
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
@@ -71,5 +78,5 @@ install: all
 clean:
 	rm -rf bin
 
-.PHONY: all check bench demo install clean
+.PHONY: all check bench demo figures install clean
 .SECONDARY:

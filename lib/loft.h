@@ -211,6 +211,16 @@ int loft_run_files(struct loft_run *run, int nfiles, char **files);
  */
 int loft_run_made(struct loft_run *run);
 
+/*
+ * For programs that write one document from all the records (plot):
+ * after loft_run_files has handed every record to a handler that kept
+ * what it needs and wrote nothing, write doc[0..len) to run->out and
+ * flush it, with loft_run_files' manners for a failed write (a message
+ * on run->msg, none for a closed pipe).  Returns the exit status:
+ * run->status, or 1 when the write failed.
+ */
+int loft_run_write(struct loft_run *run, const char *doc, size_t len);
+
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
     const struct loft_error *err);

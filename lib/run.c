@@ -225,3 +225,13 @@ loft_run_design(struct loft_run *run, int nfiles, char **files,
 	free(c.recs);
 	return status;
 }
+
+int
+loft_run_write(struct loft_run *run, const char *doc, size_t len)
+{
+	errno = 0;
+	if ((len > 0 && fwrite(doc, 1, len, run->out) != len) ||
+	    fflush(run->out) != 0 || ferror(run->out))
+		return write_failed(run);
+	return run->status;
+}

@@ -31,5 +31,6 @@ suite bin/test/bezier
 suite sh tests/bezapprox.sh
 suite bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
+suite sh tests/plot.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,1012 @@
+/*
+ * plot: draw every record of the input as one SVG picture: curves as
+ * paths (exact cubic Bezier segments for cubic records, sampled
+ * polylines for other curve types), point records as polylines, knots as
+ * markers, and on request curvature combs and end tangents.
+ *
+ * plot reads all its input before it writes: the picture's frame depends
+ * on every record.  Bad records are reported and left out; the picture
+ * of the good ones is written whole, and plot exits 1.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "loft.h"
+
+/* The picture's larger side, in pixels (the width and height written). */
+#define PICTURE_PX 640
+/* Sizes in pixels of that picture, so that they do not depend on the
+ * drawing's units: curve and thin strokes, knot marker radius, labels. */
+#define CURVE_PX 1.5
+#define THIN_PX 0.6
+#define KNOT_PX 2.5
+#define FONT_PX 12
+/* An estimate of a label's advance per character, as a fraction of the
+ * font size, generous for digits and signs in a sans-serif face. */
+#define CHAR_EM 0.62
+/* The margin around the drawing, a fraction of its larger side. */
+#define MARGIN 0.04
+/* Without -C, the longest comb tooth is this fraction of the larger side
+ * of the curves' extent: long enough to read, short enough not to hide
+ * the drawing. */
+#define COMB_LENGTH 0.15
+/* Coordinates are written to this fraction of the picture's larger side,
+ * 1/1600 of a pixel: below anything a screen or printer shows, yet short
+ * text. */
+#define RESOLUTION 1e-6
+
+/* Kinds of stroke, in the order they are drawn (later on top). */
+enum kind {
+	K_COMB,         /* pairs: base point, projected curvature vector */
+	K_LINE,         /* a polyline */
+	K_BEZIER,       /* four control points per cubic piece */
+	K_HANDLE,       /* pairs: end of a piece, end of its tangent / 3 */
+	K_MARKS,        /* knot markers of a point record (-m) */
+	K_KNOTS,        /* knot markers from -K */
+	NKIND
+};
+
+enum view { V_XY, V_YZ, V_XZ, V_ISO };
+
+struct stroke {
+	enum kind kind;
+	int rec;                /* record number, from 0; -1 for -K knots */
+	int closed;             /* close the path (Z) where it ends at its start */
+	size_t first, n;        /* its points in pic.pt */
+};
+
+struct label {
+	int rec;
+	double at[2];           /* where the label's text begins */
+	char *text;
+};
+
+/* A box in the plane: lo[0..1], hi[0..1]; empty while lo > hi. */
+struct box {
+	double lo[2], hi[2];
+};
+
+struct pic {
+	/* options */
+	enum view view;
+	long steps;             /* samples per piece for polylines and combs */
+	int comb, handles, marks;
+	double comb_scale;      /* 0: automatic */
+	const char *label_key;
+	/* the picture */
+	double *pt;             /* projected points, 2 numbers each */
+	size_t npt, ptcap;
+	struct stroke *st;
+	size_t nst, stcap;
+	struct label *lb;
+	size_t nlb, lbcap;
+	struct box box;         /* of the curves, points and knots */
+	double kmax;            /* largest curvature of any comb tooth */
+	int nrec;               /* records drawn */
+	int failed;             /* out of memory */
+};
+
+/* The picture's text, built in memory and written at once. */
+struct doc {
+	char *buf;
+	size_t len, cap;
+	int bad;
+	int decimals;           /* of every coordinate */
+	double px;              /* one pixel in the drawing's units */
+};
+
+static const char usage_text[] =
+    "usage: plot [-cmt] [-C scale] [-K file] [-l key] [-n steps] "
+    "[-v xy|yz|xz|iso] [file ...]\n";
+
+/* Colours of records 0, 1, ... in turn; the -K knots are black. */
+static const char *const colours[] = {
+	"#1f4e9c", "#c0392b", "#2e7d32", "#7b3fa0", "#d35400", "#00838f",
+	"#6d4c41", "#ad1457",
+};
+#define NCOLOURS (sizeof colours / sizeof colours[0])
+
+static void
+usage(int status)
+{
+	fputs(usage_text, status ? stderr : stdout);
+	exit(status);
+}
+
+/* ------------------------------------------------------------------ */
+/* Collecting the picture */
+
+static void
+box_empty(struct box *b)
+{
+	b->lo[0] = b->lo[1] = HUGE_VAL;
+	b->hi[0] = b->hi[1] = -HUGE_VAL;
+}
+
+static void
+box_add(struct box *b, const double *q)
+{
+	for (int k = 0; k < 2; k++) {
+		if (q[k] < b->lo[k])
+			b->lo[k] = q[k];
+		if (q[k] > b->hi[k])
+			b->hi[k] = q[k];
+	}
+}
+
+static void
+box_join(struct box *b, const struct box *c)
+{
+	if (c->lo[0] <= c->hi[0]) {
+		box_add(b, c->lo);
+		box_add(b, c->hi);
+	}
+}
+
+/*
+ * The view -v: a linear map of a point or vector of dim coordinates to
+ * the plane (so it maps cubic pieces to cubic pieces).  iso is the
+ * orthographic view from the direction (1, 1, 1): z up, x to the lower
+ * left, y to the lower right.
+ */
+static void
+project(enum view v, const double *p, int dim, double *q)
+{
+	double x = p[0], y = p[1], z = dim > 2 ? p[2] : 0;
+
+	switch (v) {
+	case V_XY: q[0] = x; q[1] = y; break;
+	case V_YZ: q[0] = y; q[1] = z; break;
+	case V_XZ: q[0] = x; q[1] = z; break;
+	case V_ISO:
+		q[0] = (y - x) / sqrt(2);
+		q[1] = (2 * z - x - y) / sqrt(6);
+		break;
+	}
+}
+
+static int
+grow(void **buf, size_t *cap, size_t need, size_t sz)
+{
+	size_t n = *cap ? *cap : 64;
+	void *b;
+
+	if (need <= *cap)
+		return 0;
+	while (n < need)
+		n *= 2;
+	if ((b = realloc(*buf, n * sz)) == NULL)
+		return -1;
+	*buf = b;
+	*cap = n;
+	return 0;
+}
+
+/* Start a stroke of kind for the current record; NULL: out of memory. */
+static struct stroke *
+new_stroke(struct pic *pc, enum kind kind, int rec)
+{
+	struct stroke *s;
+
+	if (grow((void **)&pc->st, &pc->stcap, pc->nst + 1, sizeof *pc->st))
+		return NULL;
+	s = &pc->st[pc->nst++];
+	s->kind = kind;
+	s->rec = rec;
+	s->closed = 0;
+	s->first = pc->npt;
+	s->n = 0;
+	return s;
+}
+
+/* Append a plane point to stroke s (the last one started). */
+static int
+add_point(struct pic *pc, struct stroke *s, const double *q,
+    struct loft_error *err)
+{
+	if (!isfinite(q[0]) || !isfinite(q[1]))
+		return loft_fail(err, LOFT_EGEOM, -1, "coordinates too large "
+		    "to draw");
+	if (grow((void **)&pc->pt, &pc->ptcap, pc->npt + 1, 2 * sizeof *pc->pt))
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	pc->pt[2 * pc->npt] = q[0];
+	pc->pt[2 * pc->npt + 1] = q[1];
+	pc->npt++;
+	s->n++;
+	return 0;
+}
+
+/* What one record adds beside its strokes: its extent, and the point
+ * furthest right, where its label goes. */
+struct extent {
+	struct box box;
+	double right[2];
+};
+
+static void
+see(struct extent *e, const double *q)
+{
+	if (e->box.lo[0] > e->box.hi[0] || q[0] > e->right[0]) {
+		e->right[0] = q[0];
+		e->right[1] = q[1];
+	}
+	box_add(&e->box, q);
+}
+
+/* Add the point p (dim coordinates) to stroke s, projected, and see it. */
+static int
+add_seen(struct pic *pc, struct stroke *s, struct extent *e, const double *p,
+    int dim, struct loft_error *err)
+{
+	double q[2];
+
+	project(pc->view, p, dim, q);
+	if (add_point(pc, s, q, err) != 0)
+		return -1;
+	see(e, q);
+	return 0;
+}
+
+/* Knot markers at the rows of a point record. */
+static int
+add_marks(struct pic *pc, const struct loft_record *rec, enum kind kind,
+    int recno, struct extent *e, struct loft_error *err)
+{
+	struct stroke *s = new_stroke(pc, kind, recno);
+
+	if (s == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t i = 0; i < rec->nrows; i++)
+		if (add_seen(pc, s, e, rec->num + i * rec->ncols, rec->ncols,
+		    err) != 0)
+			return (err->row = i), -1;
+	return 0;
+}
+
+static int
+check_points(const struct loft_record *rec, struct loft_error *err)
+{
+	if (rec->nrows == 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "record has no points");
+	if (rec->ncols < 2 || rec->ncols > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, 0, "points have %d number%s; "
+		    "plot reads 2 or 3 coordinates (no extra columns)",
+		    rec->ncols, rec->ncols == 1 ? "" : "s");
+	return 0;
+}
+
+/* A point record: a polyline through its rows, and markers with -m. */
+static int
+draw_points(struct pic *pc, const struct loft_record *rec, struct extent *e,
+    struct loft_error *err)
+{
+	struct stroke *s;
+
+	if (check_points(rec, err) != 0)
+		return -1;
+	if ((s = new_stroke(pc, K_LINE, pc->nrec)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t i = 0; i < rec->nrows; i++)
+		if (add_seen(pc, s, e, rec->num + i * rec->ncols, rec->ncols,
+		    err) != 0)
+			return (err->row = i), -1;
+	return pc->marks ? add_marks(pc, rec, K_MARKS, pc->nrec, e, err) : 0;
+}
+
+/*
+ * The extremes of one coordinate of a cubic Bezier piece with control
+ * values b[0..3] (stride 2 in a plane point array): the roots in (0, 1)
+ * of its derivative, the quadratic 3(a t^2 + 2 b t + c) with
+ * a = b3 - 3b2 + 3b1 - b0, b = b2 - 2b1 + b0, c = b1 - b0.  Stores the
+ * roots in t, returns their count.
+ */
+static int
+extreme_params(const double *cp, int k, double *t)
+{
+	double b0 = cp[k], b1 = cp[2 + k], b2 = cp[4 + k], b3 = cp[6 + k];
+	double a = b3 - 3 * b2 + 3 * b1 - b0, b = b2 - 2 * b1 + b0, c = b1 - b0;
+	double r[2], disc;
+	int n = 0, m = 0;
+
+	if (a == 0) {
+		if (b != 0)
+			r[n++] = -c / (2 * b);
+	} else if ((disc = b * b - a * c) >= 0) {
+		/* the stable form of the two roots */
+		double q = -(b + copysign(sqrt(disc), b));
+
+		r[n++] = q / a;
+		if (q != 0)
+			r[n++] = c / q;
+	}
+	for (int i = 0; i < n; i++)
+		if (r[i] > 0 && r[i] < 1)
+			t[m++] = r[i];
+	return m;
+}
+
+/* See the whole of the Bezier piece cp (4 plane points): its ends and
+ * its extremes in x and y, so the frame fits the curve, not its control
+ * polygon. */
+static void
+see_bezier(struct extent *e, const double *cp)
+{
+	double t[2], q[2];
+
+	see(e, cp);
+	see(e, cp + 6);
+	for (int k = 0; k < 2; k++) {
+		int n = extreme_params(cp, k, t);
+
+		for (int i = 0; i < n; i++) {
+			double s = 1 - t[i];
+
+			for (int j = 0; j < 2; j++)
+				q[j] = s * s * s * cp[j] +
+				    3 * s * s * t[i] * cp[2 + j] +
+				    3 * s * t[i] * t[i] * cp[4 + j] +
+				    t[i] * t[i] * t[i] * cp[6 + j];
+			see(e, q);
+		}
+	}
+}
+
+/*
+ * A cubic piece as a Bezier segment, exactly: with P and P' its point
+ * and u-derivative at the ends, the control points are
+ *   B0 = P(0), B1 = P(0) + P'(0)/3, B2 = P(1) - P'(1)/3, B3 = P(1)
+ * (the Bernstein form of eq. 7 of Manning's paper).  The view is linear,
+ * so the projected control points are those of the projected piece.
+ */
+static int
+add_bezier_piece(struct pic *pc, struct stroke *s, struct extent *e,
+    const struct loft_curve *c, size_t i, struct loft_error *err)
+{
+	double p0[LOFT_MAXDIM], d0[LOFT_MAXDIM], p1[LOFT_MAXDIM],
+	    d1[LOFT_MAXDIM], b[4][LOFT_MAXDIM];
+
+	loft_curve_eval(c, i, 0, p0, d0, NULL);
+	loft_curve_eval(c, i, 1, p1, d1, NULL);
+	for (int k = 0; k < c->dim; k++) {
+		b[0][k] = p0[k];
+		b[1][k] = p0[k] + d0[k] / 3;
+		b[2][k] = p1[k] - d1[k] / 3;
+		b[3][k] = p1[k];
+	}
+	for (int j = 0; j < 4; j++) {
+		double q[2];
+
+		project(pc->view, b[j], c->dim, q);
+		if (add_point(pc, s, q, err) != 0)
+			return (err->row = i), -1;
+	}
+	see_bezier(e, pc->pt + 2 * (pc->npt - 4));
+	return 0;
+}
+
+/* Evaluate piece i at u into p, d1, d2; an error where it overflows. */
+static int
+eval_finite(const struct loft_curve *c, size_t i, double u, double *p,
+    double *d1, double *d2, struct loft_error *err)
+{
+	loft_curve_eval(c, i, u, p, d1, d2);
+	for (int k = 0; k < c->dim; k++)
+		if (!isfinite(p[k]) || !isfinite(d1[k]) || !isfinite(d2[k]))
+			return loft_fail(err, LOFT_EGEOM, (long)i, "segment %zu "
+			    "overflows at u = %g: coefficients too large",
+			    i + 1, u);
+	return 0;
+}
+
+/* Pieces of other types: a polyline through steps points per piece. */
+static int
+add_sampled_piece(struct pic *pc, struct stroke *s, struct extent *e,
+    const struct loft_curve *c, size_t i, struct loft_error *err)
+{
+	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+
+	for (long j = i == 0 ? 0 : 1; j <= pc->steps; j++) {
+		if (eval_finite(c, i, (double)j / pc->steps, p, d1, d2, err))
+			return -1;
+		if (add_seen(pc, s, e, p, c->dim, err) != 0)
+			return (err->row = i), -1;
+	}
+	return 0;
+}
+
+/*
+ * The comb: at steps + 1 points of every piece, both ends included, so
+ * that a jump of curvature at a join shows as two teeth, the point and
+ * its curvature vector d2P/ds2 (eq. 2 of Manning's paper), projected.
+ * The teeth are drawn later, when the scale is known.
+ */
+static int
+add_comb(struct pic *pc, const struct loft_curve *c, struct loft_error *err)
+{
+	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM],
+	    kn[LOFT_MAXDIM], q[2], len;
+	struct stroke *s = new_stroke(pc, K_COMB, pc->nrec);
+
+	if (s == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t i = 0; i < c->npieces; i++)
+		for (long j = 0; j <= pc->steps; j++) {
+			double u = (double)j / pc->steps;
+
+			if (eval_finite(c, i, u, p, d1, d2, err) != 0)
+				return -1;
+			if (loft_curvature_vector(d1, d2, c->dim, kn) != 0)
+				return loft_fail(err, LOFT_EGEOM, (long)i, "the "
+				    "tangent vanishes in segment %zu at u = %g: "
+				    "no curvature for the comb", i + 1, u);
+			len = 0;
+			for (int k = 0; k < c->dim; k++)
+				len += kn[k] * kn[k];
+			if (!isfinite(len))
+				return loft_fail(err, LOFT_EGEOM, (long)i,
+				    "curvature too large to draw in segment %zu",
+				    i + 1);
+			if (sqrt(len) > pc->kmax)
+				pc->kmax = sqrt(len);
+			project(pc->view, p, c->dim, q);
+			if (add_point(pc, s, q, err) != 0)
+				return -1;
+			project(pc->view, kn, c->dim, q);
+			if (add_point(pc, s, q, err) != 0)
+				return -1;
+		}
+	return 0;
+}
+
+/* -t: each piece's end tangents, a third of dP/du long (for a cubic
+ * piece, the legs of its Bezier control polygon). */
+static int
+add_handles(struct pic *pc, const struct loft_curve *c, struct extent *e,
+    struct loft_error *err)
+{
+	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM],
+	    tip[LOFT_MAXDIM];
+	struct stroke *s = new_stroke(pc, K_HANDLE, pc->nrec);
+
+	if (s == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t i = 0; i < c->npieces; i++)
+		for (int end = 0; end < 2; end++) {
+			if (eval_finite(c, i, end, p, d1, d2, err) != 0)
+				return -1;
+			for (int k = 0; k < c->dim; k++)
+				tip[k] = p[k] + (end ? -d1[k] : d1[k]) / 3;
+			if (add_seen(pc, s, e, p, c->dim, err) != 0 ||
+			    add_seen(pc, s, e, tip, c->dim, err) != 0)
+				return (err->row = i), -1;
+		}
+	return 0;
+}
+
+/*
+ * A curve record of any type lib/curve.c knows: exact Bezier segments
+ * for cubic records, a sampled polyline for the others.
+ */
+static int
+draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
+    struct loft_error *err)
+{
+	int exact = strcmp(c->type, "cubic") == 0;
+	struct stroke *s = new_stroke(pc, exact ? K_BEZIER : K_LINE, pc->nrec);
+
+	if (s == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	s->closed = c->closed;
+	for (size_t i = 0; i < c->npieces; i++)
+		if ((exact ? add_bezier_piece : add_sampled_piece)(pc, s, e, c,
+		    i, err) != 0)
+			return -1;
+	if (pc->comb && add_comb(pc, c, err) != 0)
+		return -1;
+	if (pc->handles && add_handles(pc, c, e, err) != 0)
+		return -1;
+	return 0;
+}
+
+static int
+add_label(struct pic *pc, const struct loft_record *rec,
+    const struct extent *e, struct loft_error *err)
+{
+	const char *v = loft_attr(rec, pc->label_key);
+	char num[24];
+	struct label *l;
+
+	if (v == NULL) {
+		snprintf(num, sizeof num, "%d", pc->nrec + 1);
+		v = num;
+	}
+	if (grow((void **)&pc->lb, &pc->lbcap, pc->nlb + 1, sizeof *pc->lb) ||
+	    (pc->lb[pc->nlb].text = strdup(v)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	l = &pc->lb[pc->nlb++];
+	l->rec = pc->nrec;
+	l->at[0] = e->right[0];
+	l->at[1] = e->right[1];
+	return 0;
+}
+
+/*
+ * The handler: add what rec draws to the picture.  A record that fails
+ * takes back everything it added, so the picture holds good records
+ * only.
+ */
+static int
+keep_record(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	struct pic *pc = run->ctx;
+	size_t npt = pc->npt, nst = pc->nst, nlb = pc->nlb;
+	double kmax = pc->kmax;
+	struct loft_curve c;
+	struct extent e;
+	int rc;
+
+	box_empty(&e.box);
+	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
+		rc = draw_points(pc, rec, &e, err);
+	/*
+	 * Surfaces: when lib/surface.c lands, a record it recognises is
+	 * drawn here as a wireframe, its parameter lines added as K_LINE
+	 * strokes like add_sampled_piece's.  Until then plot draws the
+	 * point records that sample writes for them.
+	 */
+	else if ((rc = loft_curve_from_record(rec, &c, err)) == 0)
+		rc = draw_curve(pc, &c, &e, err);
+	if (rc == 0 && pc->label_key != NULL)
+		rc = add_label(pc, rec, &e, err);
+	if (rc != 0) {
+		pc->npt = npt;
+		pc->nst = nst;
+		while (pc->nlb > nlb)
+			free(pc->lb[--pc->nlb].text);
+		pc->kmax = kmax;
+		return LOFT_EINPUT;
+	}
+	box_join(&pc->box, &e.box);
+	pc->nrec++;
+	return 0;
+}
+
+/* The handler for -K: knot markers from point records. */
+static int
+keep_knots(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	struct pic *pc = run->ctx;
+	size_t npt = pc->npt, nst = pc->nst;
+	struct extent e;
+
+	box_empty(&e.box);
+	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "%s record: -K reads "
+		    "knots (point records)", rec->type);
+	if (check_points(rec, err) != 0 ||
+	    add_marks(pc, rec, K_KNOTS, -1, &e, err) != 0) {
+		pc->npt = npt;
+		pc->nst = nst;
+		return LOFT_EINPUT;
+	}
+	box_join(&pc->box, &e.box);
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Writing the picture */
+
+static void
+out(struct doc *d, const char *fmt, ...)
+{
+	va_list ap;
+	int n;
+
+	if (d->bad)
+		return;
+	va_start(ap, fmt);
+	n = vsnprintf(NULL, 0, fmt, ap);
+	va_end(ap);
+	if (n < 0 || grow((void **)&d->buf, &d->cap, d->len + n + 1, 1)) {
+		d->bad = 1;
+		return;
+	}
+	va_start(ap, fmt);
+	vsnprintf(d->buf + d->len, (size_t)n + 1, fmt, ap);
+	va_end(ap);
+	d->len += n;
+}
+
+/* A number to d->decimals places, without trailing zeros or "-0". */
+static void
+num(struct doc *d, double x)
+{
+	char buf[400];
+	int n = snprintf(buf, sizeof buf, "%.*f", d->decimals, x);
+
+	if (n < 0 || n >= (int)sizeof buf) {
+		/* a tiny drawing far from the origin: every digit */
+		out(d, "%.17g", x);
+		return;
+	}
+	if (strchr(buf, '.') != NULL) {
+		while (buf[n - 1] == '0')
+			buf[--n] = '\0';
+		if (buf[n - 1] == '.')
+			buf[--n] = '\0';
+	}
+	out(d, "%s", strcmp(buf, "-0") == 0 ? "0" : buf);
+}
+
+/* A plane point in SVG coordinates: y runs down the page. */
+static void
+point(struct doc *d, const char *cmd, const double *q)
+{
+	out(d, "%s", cmd);
+	num(d, q[0]);
+	out(d, " ");
+	num(d, -q[1]);
+}
+
+static const char *
+colour(int rec)
+{
+	return rec < 0 ? "#000" : colours[rec % NCOLOURS];
+}
+
+/* The comb tooth of point pair j of s: from the curve, away from the
+ * centre of curvature, scale times the curvature long. */
+static void
+tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
+    double scale, double *tip)
+{
+	const double *base = pc->pt + 2 * (s->first + 2 * j), *kn = base + 2;
+
+	tip[0] = base[0] - scale * kn[0];
+	tip[1] = base[1] - scale * kn[1];
+}
+
+/* Open a path element of class cls in record rec's colour, with the
+ * stroke width width_px pixels (0: the group's); the caller adds any
+ * other attributes, then d. */
+static void
+path_open(struct doc *d, const char *cls, int rec, double width_px)
+{
+	out(d, "<path class=\"%s\" stroke=\"%s\"", cls, colour(rec));
+	if (width_px > 0) {
+		out(d, " stroke-width=\"");
+		num(d, width_px * d->px);
+		out(d, "\"");
+	}
+}
+
+static void
+draw_comb(struct doc *d, const struct pic *pc, const struct stroke *s,
+    double scale)
+{
+	double tip[2];
+
+	path_open(d, "comb", s->rec, THIN_PX);
+	out(d, " stroke-opacity=\"0.55\" d=\"");
+	for (size_t j = 0; j < s->n / 2; j++) {
+		tooth_tip(pc, s, j, scale, tip);
+		point(d, j ? " M" : "M", pc->pt + 2 * (s->first + 2 * j));
+		point(d, " L", tip);
+	}
+	out(d, "\"/>\n");
+	path_open(d, "comb-envelope", s->rec, THIN_PX);
+	out(d, " d=\"");
+	for (size_t j = 0; j < s->n / 2; j++) {
+		tooth_tip(pc, s, j, scale, tip);
+		point(d, j ? " L" : "M", tip);
+	}
+	out(d, "\"/>\n");
+}
+
+static int
+same_point(const double *a, const double *b)
+{
+	return a[0] == b[0] && a[1] == b[1];
+}
+
+static void
+draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
+{
+	const double *p = pc->pt + 2 * s->first, *start = p;
+
+	path_open(d, "curve", s->rec, 0);
+	out(d, " d=\"");
+	if (s->kind == K_BEZIER) {
+		for (size_t i = 0; i < s->n / 4; i++, p += 8) {
+			if (i == 0 || !same_point(p - 2, p))
+				point(d, i ? " M" : "M", start = p);
+			point(d, " C", p + 2);
+			point(d, " ", p + 4);
+			point(d, " ", p + 6);
+		}
+		p -= 2;
+	} else {
+		for (size_t i = 0; i < s->n; i++)
+			point(d, i ? " L" : "M", p + 2 * i);
+		p += 2 * (s->n - 1);
+	}
+	if (s->closed && same_point(p, start))
+		out(d, " Z");
+	out(d, "\"/>\n");
+}
+
+static void
+draw_handles(struct doc *d, const struct pic *pc, const struct stroke *s)
+{
+	const double *p = pc->pt + 2 * s->first;
+
+	path_open(d, "tangents", s->rec, THIN_PX);
+	out(d, " stroke-dasharray=\"");
+	num(d, 3 * d->px);
+	out(d, " ");
+	num(d, 2 * d->px);
+	out(d, "\" d=\"");
+	for (size_t j = 0; j < s->n; j += 2) {
+		point(d, j ? " M" : "M", p + 2 * j);
+		point(d, " L", p + 2 * j + 2);
+	}
+	out(d, "\"/>\n");
+}
+
+/* Markers: small discs, each two half-circle arcs. */
+static void
+draw_marks(struct doc *d, const struct pic *pc, const struct stroke *s)
+{
+	double r = KNOT_PX * d->px, q[2];
+
+	out(d, "<path class=\"%s\" fill=\"%s\" stroke=\"none\" d=\"",
+	    s->kind == K_KNOTS ? "knots" : "points", colour(s->rec));
+	for (size_t j = 0; j < s->n; j++) {
+		q[0] = pc->pt[2 * (s->first + j)] - r;
+		q[1] = pc->pt[2 * (s->first + j) + 1];
+		point(d, j ? " M" : "M", q);
+		out(d, " a");
+		num(d, r);
+		out(d, " ");
+		num(d, r);
+		out(d, " 0 1 0 ");
+		num(d, 2 * r);
+		out(d, " 0 a");
+		num(d, r);
+		out(d, " ");
+		num(d, r);
+		out(d, " 0 1 0 ");
+		num(d, -2 * r);
+		out(d, " 0Z");
+	}
+	out(d, "\"/>\n");
+}
+
+static void
+text(struct doc *d, const char *s)
+{
+	for (; *s; s++)
+		switch (*s) {
+		case '&': out(d, "&amp;"); break;
+		case '<': out(d, "&lt;"); break;
+		case '>': out(d, "&gt;"); break;
+		case '"': out(d, "&quot;"); break;
+		default: out(d, "%c", *s);
+		}
+}
+
+/* The box label l takes with font size font: its text begins a gap to
+ * the right of its point, centred on it in height. */
+static void
+label_box(const struct label *l, double font, struct box *b)
+{
+	double q[2];
+
+	box_empty(b);
+	q[0] = l->at[0] + font / 2;
+	q[1] = l->at[1] - font / 2;
+	box_add(b, q);
+	q[0] += CHAR_EM * font * strlen(l->text);
+	q[1] += font;
+	box_add(b, q);
+}
+
+static int
+overlap(const struct box *a, const struct box *b)
+{
+	return a->lo[0] < b->hi[0] && b->lo[0] < a->hi[0] &&
+	    a->lo[1] < b->hi[1] && b->lo[1] < a->hi[1];
+}
+
+/*
+ * Place the labels: each at its record's rightmost point, moved down a
+ * line at a time while it overlaps a label placed before it (records
+ * that share their rightmost point get their labels one under another).
+ * Adds their boxes to frame.
+ */
+static int
+place_labels(struct pic *pc, double font, struct box *frame)
+{
+	struct box *placed = malloc(pc->nlb * sizeof *placed);
+
+	if (placed == NULL)
+		return -1;
+	for (size_t i = 0; i < pc->nlb; i++) {
+		label_box(&pc->lb[i], font, &placed[i]);
+		for (size_t j = 0; j < i; j++)
+			if (overlap(&placed[i], &placed[j])) {
+				pc->lb[i].at[1] = placed[j].lo[1] - 0.6 * font;
+				label_box(&pc->lb[i], font, &placed[i]);
+				j = (size_t)-1;         /* check them all again */
+			}
+		box_join(frame, &placed[i]);
+	}
+	free(placed);
+	return 0;
+}
+
+/* Write the whole picture into d; 0, or -1 with err filled. */
+static int
+write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
+{
+	struct box b = pc->box;
+	double w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2],
+	    vb[4];
+
+	/* the comb's scale, from the curves' extent, and its teeth's tips */
+	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
+	if (scale == 0 && pc->kmax > 0)
+		scale = COMB_LENGTH * big / pc->kmax;
+	for (size_t i = 0; i < pc->nst; i++)
+		for (size_t j = 0; pc->st[i].kind == K_COMB &&
+		    j < pc->st[i].n / 2; j++) {
+			tooth_tip(pc, &pc->st[i], j, scale, tip);
+			box_add(&b, tip);
+		}
+	/* the frame: the drawing, a margin, and room for the labels */
+	w = b.hi[0] - b.lo[0];
+	h = b.hi[1] - b.lo[1];
+	if (!isfinite(w) || !isfinite(h))
+		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
+		    "to frame");
+	big = fmax(w, h);
+	if (big == 0)   /* one point: a frame of unit size around it */
+		big = fmax(1, fmax(fabs(b.lo[0]), fabs(b.lo[1])));
+	margin = MARGIN * big;
+	if (pc->nlb > 0) {
+		font = FONT_PX * (big + 2 * margin) / PICTURE_PX;
+		if (place_labels(pc, font, &b) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	vb[0] = b.lo[0] - margin;
+	vb[1] = -(b.hi[1] + margin);
+	vb[2] = b.hi[0] - b.lo[0] + 2 * margin;
+	vb[3] = b.hi[1] - b.lo[1] + 2 * margin;
+	big = fmax(vb[2], vb[3]);
+	if (!isfinite(big) || !(big > 0))
+		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
+		    "to frame");
+	d->px = big / PICTURE_PX;
+	d->decimals = (int)ceil(-log10(RESOLUTION * big));
+	if (d->decimals < 0)
+		d->decimals = 0;
+
+	out(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+	    "width=\"%.1f\" height=\"%.1f\" viewBox=\"",
+	    PICTURE_PX * (vb[2] / big), PICTURE_PX * (vb[3] / big));
+	for (int k = 0; k < 4; k++) {
+		out(d, k ? " " : "");
+		num(d, vb[k]);
+	}
+	out(d, "\">\n<g fill=\"none\" stroke-linecap=\"round\" "
+	    "stroke-linejoin=\"round\" stroke-width=\"");
+	num(d, CURVE_PX * d->px);
+	out(d, "\">\n");
+	for (int kind = 0; kind < NKIND; kind++)
+		for (size_t i = 0; i < pc->nst; i++) {
+			const struct stroke *s = &pc->st[i];
+
+			if ((int)s->kind != kind || s->n == 0)
+				continue;
+			switch (s->kind) {
+			case K_COMB: draw_comb(d, pc, s, scale); break;
+			case K_LINE:
+			case K_BEZIER: draw_path(d, pc, s); break;
+			case K_HANDLE: draw_handles(d, pc, s); break;
+			default: draw_marks(d, pc, s); break;
+			}
+		}
+	out(d, "</g>\n");
+	if (pc->nlb > 0) {
+		/* font sizes of a small fraction of a unit do not render
+		 * everywhere: the text is set at FONT_PX and scaled */
+		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\">\n",
+		    FONT_PX);
+		for (size_t i = 0; i < pc->nlb; i++) {
+			double q[2] = { pc->lb[i].at[0] + font / 2,
+			    pc->lb[i].at[1] - 0.35 * font };
+
+			out(d, "<text class=\"label\" fill=\"%s\" "
+			    "transform=\"translate(", colour(pc->lb[i].rec));
+			point(d, "", q);
+			out(d, ") scale(%.6g)\">", font / FONT_PX);
+			text(d, pc->lb[i].text);
+			out(d, "</text>\n");
+		}
+		out(d, "</g>\n");
+	}
+	out(d, "</svg>\n");
+	if (d->bad)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	return 0;
+}
+
+static void
+free_pic(struct pic *pc)
+{
+	for (size_t i = 0; i < pc->nlb; i++)
+		free(pc->lb[i].text);
+	free(pc->lb);
+	free(pc->pt);
+	free(pc->st);
+}
+
+int
+main(int argc, char *argv[])
+{
+	static const char *const views[] = { "xy", "yz", "xz", "iso", NULL };
+	struct pic pc = { .steps = 16 };
+	struct loft_run run = { .prog = "plot", .out = stdout, .msg = stderr,
+	    .handle = keep_record, .ctx = &pc };
+	struct doc d = { 0 };
+	struct loft_error err;
+	char *knots = NULL;
+	int c, rc = 0, word, status;
+
+	while ((c = getopt(argc, argv, "cmtC:K:l:n:v:h")) != -1) {
+		switch (c) {
+		case 'c': pc.comb = 1; break;
+		case 'm': pc.marks = 1; break;
+		case 't': pc.handles = 1; break;
+		case 'C': rc = loft_parse_real(optarg, 1e-300, 1e300,
+		    &pc.comb_scale, &err); pc.comb = 1; break;
+		case 'K': knots = optarg; break;
+		case 'l': pc.label_key = optarg; break;
+		case 'n': rc = loft_parse_int(optarg, 1, 10000, &pc.steps, &err);
+		    break;
+		case 'v': rc = loft_parse_word(optarg, views, &word, &err);
+		    pc.view = word; break;
+		case 'h': usage(0); break;
+		default: usage(2);
+		}
+		if (rc != 0) {
+			fprintf(stderr, "plot: -%c %s\n", c, err.msg);
+			usage(2);
+		}
+	}
+	box_empty(&pc.box);
+	if (knots != NULL) {
+		run.handle = keep_knots;
+		loft_run_files(&run, 1, &knots);
+		run.handle = keep_record;
+	}
+	loft_run_files(&run, argc - optind, argv + optind);
+	if (pc.nst == 0) {
+		fputs("plot: nothing to draw\n", stderr);
+		status = 1;
+	} else if (write_svg(&d, &pc, &err) != 0) {
+		fprintf(stderr, "plot: %s\n", err.msg);
+		status = 1;
+	} else {
+		status = loft_run_write(&run, d.buf, d.len);
+	}
+	free(d.buf);
+	free_pic(&pc);
+	return status;
+}

@@ -1,0 +1,517 @@
+#!/bin/sh
+# plot.sh: command tests of plot and grade, and the figures of
+# man/figures, run from the top of the tree.  Expected values are
+# derived by hand in the comments; the last line is
+# "plot: N passed, M failed".
+
+B=bin
+T=bin/test/plot
+. tests/lib.sh
+
+# ---- an XML well-formedness checker, independent of plot --------------
+# Elements nest and close, one root, attributes name="value" given once,
+# '&' only in entities, no text outside the root.  Stricter than XML
+# (no single quotes, no CDATA), which plot never needs.
+XMLCHECK='
+function bad(m) { print FILENAME ": " m > "/dev/stderr"; failed = 1; exit 1 }
+function entities(s,   t) {
+	t = s
+	gsub(/&(amp|lt|gt|quot|apos|#[0-9]+|#x[0-9a-fA-F]+);/, "", t)
+	return index(t, "&") == 0 && index(t, "<") == 0
+}
+{ doc = doc $0 "\n" }
+END {
+	if (failed)
+		exit 1
+	s = doc
+	while ((i = index(s, "<")) > 0) {
+		text = substr(s, 1, i - 1)
+		if (!entities(text)) bad("bad & in text")
+		if (depth == 0 && text ~ /[^ \t\r\n]/) bad("text outside the root")
+		s = substr(s, i)
+		if (substr(s, 1, 4) == "<!--") {
+			j = index(s, "-->")
+			if (!j) bad("comment not closed")
+			s = substr(s, j + 3)
+			continue
+		}
+		j = index(s, ">")
+		if (!j) bad("tag not closed")
+		tag = substr(s, 1, j)
+		s = substr(s, j + 1)
+		if (tag ~ /^<\?/) {
+			if (tag !~ /\?>$/ || roots) bad("bad processing instruction")
+			continue
+		}
+		if (tag ~ /^<\//) {
+			name = substr(tag, 3, length(tag) - 3)
+			if (depth == 0 || name != stack[depth])
+				bad("</" name "> closes <" stack[depth] ">")
+			depth--
+			continue
+		}
+		if (!match(tag, /^<[A-Za-z_][-A-Za-z0-9_.:]*/)) bad("bad tag " tag)
+		name = substr(tag, 2, RLENGTH - 1)
+		rest = substr(tag, RLENGTH + 1)
+		empty = rest ~ /\/>$/
+		sub(/\/?>$/, "", rest)
+		split("", seen)
+		while (match(rest, /^[ \t\r\n]+[A-Za-z_:][-A-Za-z0-9_.:]*="[^"<]*"/)) {
+			a = substr(rest, 1, RLENGTH)
+			rest = substr(rest, RLENGTH + 1)
+			an = a
+			sub(/^[ \t\r\n]+/, "", an)
+			sub(/=.*/, "", an)
+			if (an in seen) bad("attribute " an " given twice")
+			seen[an] = 1
+			v = a
+			sub(/^[^"]*"/, "", v)
+			if (!entities(v)) bad("bad & in attribute " an)
+		}
+		if (rest ~ /[^ \t\r\n]/) bad("bad attributes in " tag)
+		if (depth == 0 && roots++) bad("two root elements")
+		if (!empty)
+			stack[++depth] = name
+	}
+	if (depth) bad("<" stack[depth] "> not closed")
+	if (!roots) bad("no root element")
+	if (s ~ /[^ \t\r\n]/) bad("text after the root")
+}'
+xml_ok() {
+	awk "$XMLCHECK" "$1" 2>>"$T/xmlerr"
+}
+# svg_ok FILE: well-formed (and to xmllint, where there is one), an svg
+# root with a viewBox, at least one path, nothing that runs or fetches
+svg_ok() {
+	if ! xml_ok "$1"; then
+		no "$1: not well-formed: $(tail -1 "$T/xmlerr")"
+		return
+	fi
+	if command -v xmllint >/dev/null 2>&1 &&
+	    ! xmllint --noout "$1" 2>>"$T/xmlerr"; then
+		no "$1: xmllint: $(tail -1 "$T/xmlerr")"
+		return
+	fi
+	grep -q '^<svg xmlns="http://www.w3.org/2000/svg" version="1.1" .*viewBox="' "$1" &&
+	    grep -q '<path ' "$1" && ! grep -q -i 'script\|href\|url(' "$1" &&
+	    ok || no "$1: no svg root with a viewBox, no path, or a script or link"
+}
+
+# The checker must be able to fail.
+for bad in '<svg><g></svg>' '<svg a="1" a="2"/>' '<svg>&</svg>' \
+    '<svg/><svg/>' '<svg x=1/>' '<svg><g>' 'text<svg/>'; do
+	printf '%s\n' "$bad" >"$T/bad.xml"
+	xml_ok "$T/bad.xml" && no "checker passes $bad" || ok
+done
+printf '<?xml version="1.0"?>\n<svg a="&amp;&#38;"><g/><!-- x --></svg>\n' \
+    >"$T/good.xml"
+xml_ok "$T/good.xml" && ok || no "checker fails a good document"
+
+# The d attribute of each path of class $1 in file $2, one a line.
+path_d() {
+	sed -n 's/.*<path class="'"$1"'"[^>]* d="\([^"]*\)".*/\1/p' "$2"
+}
+# The value of attribute $1 of the svg element of file $2.
+svg_attr() {
+	sed -n 's/^<svg .* '"$1"'="\([^"]*\)".*/\1/p' "$2"
+}
+
+printf 'cubic closed=0\n0 0 1 0 0 2 0 -2\n' >"$T/seg.cubic"
+printf 'points name=rect\n0 0\n0 -20\n100 -20\n100 20\n0 20\n' \
+    >"$T/rect.knots"
+
+# ---- usage -------------------------------------------------------------
+for p in plot grade; do
+	run "$B/$p -h"
+	status 0
+	grep -q "^usage: $p " "$T/out" && ok || no "$p -h prints no usage"
+	run "$B/$p -Z"
+	status 2
+	says "usage: $p"
+done
+fails 2 "-v 'zx': want xy, yz, xz or iso" "$B/plot -v zx $T/seg.cubic"
+fails 2 "-n '0'" "$B/plot -n 0 $T/seg.cubic"
+fails 2 "-C '0'" "$B/plot -C 0 $T/seg.cubic"
+fails 2 "-s from:to is needed" "$B/grade $T/rect.knots"
+fails 2 "-s '3:1': want from:to" "$B/grade -s 3:1 $T/rect.knots"
+fails 2 "-s '1'" "$B/grade -s 1 $T/rect.knots"
+fails 2 "-s '-1:x'" "$B/grade -s -1:x $T/rect.knots"
+fails 2 "-s '0:1001'" "$B/grade -s 0:1001 $T/rect.knots"
+fails 2 "-l '-1'" "$B/grade -s 0:1 -l -1 $T/rect.knots"
+fails 2 "-o '1': want 2 numbers" "$B/grade -s 0:1 -o 1 $T/rect.knots"
+
+# ---- plot: the Bezier conversion and the frame, by hand ---------------
+# The segment P_A = (0,0), P_B = (1,0), P'_A = (0,2), P'_B = (0,-2):
+# B1 = P_A + P'_A/3 = (0, 2/3), B2 = P_B - P'_B/3 = (1, 2/3); SVG's y
+# runs down, so y is written negated.  The curve's top is P(1/2) =
+# (0.5, 0.5) (its control polygon reaches 2/3, the frame must not), so
+# the frame is [0,1] x [0,0.5] with a margin of 4% of 1: viewBox
+# -0.04 -0.54 1.08 0.58, coordinates to 1e-6 of 1.08, 6 decimals; the
+# picture is 640 wide and 640 x 0.58/1.08 = 343.7 high (equal scales).
+run "$B/plot $T/seg.cubic"
+status 0
+cp "$T/out" "$T/seg.svg"
+svg_ok "$T/seg.svg"
+[ "$(path_d curve "$T/seg.svg")" = "M0 0 C0 -0.666667 1 -0.666667 1 0" ] &&
+    ok || no "Bezier of the segment: $(path_d curve "$T/seg.svg")"
+[ "$(svg_attr viewBox "$T/seg.svg")" = "-0.04 -0.54 1.08 0.58" ] && ok ||
+    no "viewBox of the segment: $(svg_attr viewBox "$T/seg.svg")"
+[ "$(svg_attr width "$T/seg.svg") $(svg_attr height "$T/seg.svg")" = \
+    "640.0 343.7" ] && ok || no "size of the segment's picture"
+
+# A 3-D segment and the views: P_A = (0,0,0), P_B = (0,0,3),
+# P'_A = (3,0,0), P'_B = (0,3,0): B1 = (1,0,0), B2 = (0,-1,3).
+# -v xz: (0,0) (1,0) (0,3) (0,3); -v yz: (0,0) (0,0) (-1,3) (0,3).
+printf 'cubic\n0 0 0 0 0 3 3 0 0 0 3 0\n' >"$T/space.cubic"
+run "$B/plot -v xz $T/space.cubic"
+[ "$(path_d curve "$T/out")" = "M0 0 C1 0 0 -3 0 -3" ] && ok ||
+    no "-v xz: $(path_d curve "$T/out")"
+run "$B/plot -v yz $T/space.cubic"
+[ "$(path_d curve "$T/out")" = "M0 0 C0 0 -1 -3 0 -3" ] && ok ||
+    no "-v yz: $(path_d curve "$T/out")"
+# Points at the origin and on the axes, -v iso (the view from (1,1,1)):
+# (x,y,z) -> ((y-x)/sqrt 2, (2z-x-y)/sqrt 6): (0,0), (-0.707107,
+# -0.408248), (0.707107, -0.408248), (0, 0.816497); y negated.
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$T/axes.pts"
+run "$B/plot -v iso $T/axes.pts"
+status 0
+[ "$(path_d curve "$T/out")" = \
+    "M0 0 L-0.707107 0.408248 L0.707107 0.408248 L0 -0.816497" ] && ok ||
+    no "-v iso: $(path_d curve "$T/out")"
+run "$B/plot $T/axes.pts"
+[ "$(path_d curve "$T/out")" = "M0 0 L1 0 L0 -1 L0 0" ] && ok ||
+    no "3-D points, default xy: $(path_d curve "$T/out")"
+
+# ---- plot's Bezier curve is sample's curve ------------------------------
+# Evaluate every Bezier segment of the insole's path at u = j/8 by the
+# Bernstein form and compare with sample -n 8 (the same parameters).
+# Coordinates are written to 1e-6 of the 356 mm frame: within 1e-3 mm.
+$B/splinefit man/figures/insole.knots >"$T/insole.cubic"
+$B/plot -K man/figures/insole.knots "$T/insole.cubic" >"$T/insole.svg"
+svg_ok "$T/insole.svg"
+$B/sample -n 8 "$T/insole.cubic" >"$T/insole.pts"
+path_d curve "$T/insole.svg" | awk -v n=8 '
+NR == FNR {
+	gsub(/[MCLZ]/, " & ")
+	m = split($0, w, " ")
+	for (i = 1; i <= m; i++) {
+		if (w[i] == "M") { x0 = w[i + 1]; y0 = w[i + 2]; i += 2 }
+		else if (w[i] == "C") {
+			x1 = w[i + 1]; y1 = w[i + 2]; x2 = w[i + 3]; y2 = w[i + 4]
+			x3 = w[i + 5]; y3 = w[i + 6]; i += 6
+			for (j = 0; j < n; j++) {
+				u = j / n; s = 1 - u
+				bx[++k] = s*s*s*x0 + 3*s*s*u*x1 + 3*s*u*u*x2 + u*u*u*x3
+				by[k] = -(s*s*s*y0 + 3*s*s*u*y1 + 3*s*u*u*y2 + u*u*u*y3)
+			}
+			x0 = x3; y0 = y3
+		}
+	}
+	bx[++k] = x0; by[k] = -y0
+	next
+}
+NF == 2 {
+	r++
+	d = sqrt((bx[r] - $1) ^ 2 + (by[r] - $2) ^ 2)
+	if (d > worst) worst = d
+}
+END {
+	if (r != k || r != 22 * n + 1 || worst > 1e-3) {
+		printf "%d points of sample, %d of the path, apart by %g\n",
+		    r, k, worst
+		exit 1
+	}
+}' - "$T/insole.pts" >"$T/msg" && ok || no "Bezier vs sample: $(cat "$T/msg")"
+
+# The frame holds every point of the curve and every knot, and is tight:
+# on each side the margin is 4% of the larger extent (265 mm), give or
+# take 0.5 mm that sampling misses of the extremes.
+$B/sample -n 64 "$T/insole.cubic" | cat - man/figures/insole.knots |
+    awk -v vb="$(svg_attr viewBox "$T/insole.svg")" '
+BEGIN { split(vb, v, " "); x0 = v[1]; y0 = v[2]; x1 = x0 + v[3]; y1 = y0 + v[4]
+	lo = 1e300; hi = -1e300; ylo = 1e300; yhi = -1e300 }
+NF == 2 && $1 !~ /#/ {
+	x = $1; y = -$2
+	if (x < x0 || x > x1 || y < y0 || y > y1) { print "outside: " $0; bad = 1 }
+	if (x < lo) lo = x; if (x > hi) hi = x
+	if (y < ylo) ylo = y; if (y > yhi) yhi = y
+}
+END {
+	m = 0.04 * (hi - lo)
+	if (bad || (lo - x0 - m) ^ 2 > 0.25 || (x1 - hi - m) ^ 2 > 0.25 ||
+	    (ylo - y0 - m) ^ 2 > 0.25 || (y1 - yhi - m) ^ 2 > 0.25) {
+		print "frame " vb " about " lo " " hi " " ylo " " yhi; exit 1 }
+}' >"$T/msg" && ok || no "viewBox: $(cat "$T/msg")"
+# equal scales: width/height = the viewBox's, to the 0.05 px rounding
+awk -v vb="$(svg_attr viewBox "$T/insole.svg")" \
+    -v w="$(svg_attr width "$T/insole.svg")" \
+    -v h="$(svg_attr height "$T/insole.svg")" 'BEGIN { split(vb, v, " ")
+	d = w / v[3] - h / v[4]; exit !((w == 640 || h == 640) &&
+	d * d < (0.05 / v[4]) ^ 2) }' && ok || no "unequal scales"
+# the knots: 22 markers
+[ "$(grep -c 'class="knots"' "$T/insole.svg")" = 1 ] &&
+    [ "$(grep -o ' a[0-9.]* [0-9.]* 0 1 0 [0-9.]* 0 ' "$T/insole.svg" |
+    wc -l)" -eq 22 ] && ok || no "22 knot markers"
+
+# ---- the comb ----------------------------------------------------------
+# The segment above at u = 0, 1/2, 1 (-n 2): P' = (0,2), (1.5,0), (0,-2),
+# P'' = (6,-4), (0,-4), (-6,-4); eq. 2, kn = (P'' - (P'.P''/P'.P') P') /
+# P'.P', gives (1.5,0), (0,-1.777778), (-1.5,0).  With -C 1 each tooth
+# is -kn, away from the centre of curvature: (0,0)-(-1.5,0),
+# (0.5,0.5)-(0.5,2.277778), (1,0)-(2.5,0).  The frame, [-1.5,2.5] x
+# [0,2.28] and 4% of 4, is 4.32 wide: 6 decimals.
+run "$B/plot -C 1 -n 2 $T/seg.cubic"
+status 0
+[ "$(path_d comb "$T/out")" = \
+    "M0 0 L-1.5 0 M0.5 -0.5 L0.5 -2.277778 M1 0 L2.5 0" ] && ok ||
+    no "comb of the segment: $(path_d comb "$T/out")"
+[ "$(path_d comb-envelope "$T/out")" = "M-1.5 0 L0.5 -2.277778 L2.5 0" ] &&
+    ok || no "comb envelope: $(path_d comb-envelope "$T/out")"
+# On the insole every tooth is normal to the curve (sample -d's unit
+# tangent), on the side away from the centre of curvature (opposite
+# the sign of sample -k's curvature), and 600 times the curvature long.
+# Teeth come at u = j/8, j = 0..8, per segment; sample's rows at
+# j = 0..7.  Coordinates are good to 1e-4 mm.
+$B/plot -C 600 -n 8 "$T/insole.cubic" >"$T/comb.svg"
+svg_ok "$T/comb.svg"
+$B/sample -n 8 -d -k "$T/insole.cubic" >"$T/insole.dk"
+path_d comb "$T/comb.svg" | awk '
+NR == FNR {
+	gsub(/[ML]/, " & ")
+	m = split($0, w, " ")
+	for (i = 1; i <= m; i += 3) {
+		if (w[i] == "M") { t++; bx[t] = w[i + 1]; by[t] = -w[i + 2] }
+		else { dx[t] = w[i + 1] - bx[t]; dy[t] = -w[i + 2] - by[t] }
+	}
+	next
+}
+NF == 5 {
+	r++
+	if (r > 22 * 8) next
+	t = int((r - 1) / 8) * 9 + (r - 1) % 8 + 1
+	if ((bx[t] - $1) ^ 2 + (by[t] - $2) ^ 2 > 1e-8) {
+		print "tooth " t " is not at point " r; exit 1 }
+	cross = $3 * dy[t] - $4 * dx[t]
+	along = $3 * dx[t] + $4 * dy[t]
+	len = sqrt(dx[t] ^ 2 + dy[t] ^ 2)
+	k = $5 < 0 ? -$5 : $5
+	if (along ^ 2 > 1e-7 || cross * $5 > 0 || (len - 600 * k) ^ 2 > 1e-7) {
+		print "tooth " t ": along " along ", cross " cross ", length " \
+		    len " for curvature " $5; exit 1 }
+	n++
+}
+END { if (n != 22 * 8) { print n " teeth checked"; exit 1 } }
+' - "$T/insole.dk" >"$T/msg" && ok || no "comb on the insole: $(cat "$T/msg")"
+# a 3-D curve's comb: Fig. 14's seam in each view, well-formed
+for v in xy yz xz iso; do
+	run "$B/splinefit man/figures/manning-fig14.knots | $B/plot -c -v $v"
+	status 0
+	cp "$T/out" "$T/seam-$v.svg"
+	svg_ok "$T/seam-$v.svg"
+done
+
+# ---- tangents, labels, several records --------------------------------
+# -t: the segment's tangents / 3, from the ends: (0,0)-(0,2/3) and
+# (1,0)-(1,2/3).
+run "$B/plot -t $T/seg.cubic"
+[ "$(path_d tangents "$T/out")" = "M0 0 L0 -0.666667 M1 0 L1 -0.666667" ] &&
+    ok || no "-t: $(path_d tangents "$T/out")"
+# Labels: the attribute's value, escaped, or the record's number.
+run "{ printf 'points name=a<b&\"c\"\n0 0\n1 1\n\npoints\n0 1\n1 0\n'; } |
+    $B/plot -l name"
+status 0
+cp "$T/out" "$T/labels.svg"
+svg_ok "$T/labels.svg"
+[ "$(sed -n 's/.*<text [^>]*>\(.*\)<\/text>/\1/p' "$T/labels.svg" |
+    tr '\n' ' ')" = "a&lt;b&amp;&quot;c&quot; 2 " ] && ok ||
+    no "labels: $(grep '<text' "$T/labels.svg")"
+# Two records share their rightmost point (1,1): the second label goes
+# below the first.
+run "printf '0 0\n1 1\n\n0 1\n1 1\n' | $B/plot -l n"
+sed -n 's/.*translate([^ ]* \([^)]*\)).*/\1/p' "$T/out" |
+    awk 'NR == 1 { a = $1 } NR == 2 { b = $1 } END { exit !(NR == 2 && b > a) }' &&
+    ok || no "labels at one point overlap: $(grep '<text' "$T/out")"
+# -m marks the rows of a point record; a graded set, labelled by size.
+run "$B/plot -m $T/rect.knots"
+grep -q 'class="points"' "$T/out" && ok || no "-m draws no markers"
+run "$B/grade -s -1:1 man/figures/insole.knots | $B/splinefit | $B/plot -l size"
+status 0
+cp "$T/out" "$T/graded.svg"
+svg_ok "$T/graded.svg"
+[ "$(grep -c 'class="curve"' "$T/graded.svg")" = 3 ] &&
+    [ "$(sed -n 's/.*<text [^>]*>\(.*\)<\/text>/\1/p' "$T/graded.svg" |
+    tr '\n' ' ')" = "-1 0 +1 " ] && ok || no "graded set: 3 curves, -1 0 +1"
+
+# ---- plot: bad input ----------------------------------------------------
+# Good records around bad ones: the bad are reported, the picture of the
+# good is written whole, exit 1.
+{ cat "$T/seg.cubic"; printf '\ncubic\n1 2 3\n\n'; cat "$T/rect.knots"
+  printf '\nspline\n1 2\n'; } >"$T/mixed"
+run "$B/plot $T/mixed"
+status 1
+says "plot: $T/mixed:5: cubic rows need 8 or 12 numbers, not 3"
+says "plot: $T/mixed:14: unknown record type 'spline'"
+cp "$T/out" "$T/mixed.svg"
+svg_ok "$T/mixed.svg"
+[ "$(grep -c 'class="curve"' "$T/mixed.svg")" = 2 ] && ok ||
+    no "good records around bad ones: 2 curves"
+fails 1 "plot: nothing to draw" "$B/plot /dev/null"
+fails 1 "plot: <stdin>:2: cubic rows need" "printf 'cubic\n1 2 3\n' | $B/plot"
+fails 1 "points have 4 numbers; plot reads 2 or 3" \
+    "printf '1 2 3 4\n' | $B/plot"
+fails 1 "points have 1 number;" "printf '1\n2\n' | $B/plot"
+fails 1 "cubic record: -K reads knots" "$B/plot -K $T/seg.cubic /dev/null"
+fails 1 "tangent vanishes in segment 1 at u = 0: no curvature for the comb" \
+    "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/plot -c"
+run "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/plot"
+status 0
+# Coordinates near the largest double are drawn; a drawing wider than
+# it is not.
+run "printf 'cubic\n0 0 1e308 0 1e308 1e308 1e308 1e308\n' | $B/plot"
+status 0
+cp "$T/out" "$T/huge.svg"
+svg_ok "$T/huge.svg"
+fails 1 "too large to frame" "printf -- '-1e308 0\n1e308 0\n' | $B/plot"
+fails 1 "<stdin>:2: coordinates too large to draw" \
+    "printf 'cubic\n-1e308 0 1e308 0 1 1 1 1\n' | $B/plot"
+fails 1 "attribute closed=2: want 0 or 1" \
+    "printf 'cubic closed=2\n0 0 1 0 0 2 0 -2\n' | $B/plot"
+# A -K file that is missing: reported; the curve is still drawn.
+run "$B/plot -K $T/nonexistent $T/seg.cubic"
+status 1
+says "plot: $T/nonexistent: No such file or directory"
+grep -q 'class="curve"' "$T/out" && ok || no "curve drawn without its -K"
+run "$B/plot $T/seg.cubic > /dev/full"
+status 1
+says "plot: write error"
+# Fig. 1: knots alone
+run "$B/plot -K man/figures/insole.knots < /dev/null"
+status 0
+
+# ---- grade: the formula by hand ----------------------------------------
+# The rectangle: L = 100 long (x), W = 40 wide (y), heel point (0,0), the
+# first knot of smallest x.  -l 10 -w 2: x' = x + x k 10/100,
+# y' = y + y k 2/40; size -1: 100 -> 90, 20 -> 19; size +1: 110, 21.
+# Lengths grow by 10 and widths by 2 a step: not a proportional
+# enlargement (factors 1.1 and 1.05).
+run "$B/grade -s -1:1 -l 10 -w 2 $T/rect.knots"
+status 0
+out_is "points size=-1 name=rect
+0 0
+0 -19
+90 -19
+90 19
+0 19
+
+points size=0 name=rect
+0 0
+0 -20
+100 -20
+100 20
+0 20
+
+points size=+1 name=rect
+0 0
+0 -21
+110 -21
+110 21
+0 21
+"
+# -o 100,0: x' = x + (x - 100) 10/100: 0 -> -10, 100 stays.
+run "$B/grade -s 1:1 -l 10 -w 2 -o 100,0 $T/rect.knots"
+out_is "points size=+1 name=rect
+-10 0
+-10 -21
+100 -21
+100 21
+-10 21
+"
+# start= and end= directions stretch with the outline: (1.1, 1.05).
+run "printf 'points size=-1 start=1,1 end=0,-1\n0 0\n100 20\n50 -20\n' |
+    $B/grade -s 1:1 -l 10 -w 2"
+out_is "points size=0 start=1.1,1.05 end=0,-1.05
+0 0
+110 21
+55 -21
+"
+# The insole with the default steps, 8.46 and 2.54 mm: size k is exactly
+# 265 + 8.46 k long and 95 + 2.54 k wide, for k = -3..4.
+$B/grade -s -3:4 man/figures/insole.knots | awk '
+/^points/ { if (n) check(); split($2, s, "="); k = s[2] + 0; n = 0; next }
+NF == 2 { if (!n++) { x0 = x1 = $1; y0 = y1 = $2 }
+	if ($1 < x0) x0 = $1; if ($1 > x1) x1 = $1
+	if ($2 < y0) y0 = $2; if ($2 > y1) y1 = $2 }
+function check() { recs++
+	if ((x1 - x0 - 265 - 8.46 * k) ^ 2 > 1e-22 ||
+	    (y1 - y0 - 95 - 2.54 * k) ^ 2 > 1e-22) {
+		print "size " k ": " x1 - x0 " by " y1 - y0; bad = 1 } }
+END { check(); exit bad || recs != 8 }' >"$T/msg" && ok ||
+    no "insole sizes: $(cat "$T/msg")"
+# -s 0:0 is the identity: the rows come back as they went in.
+run "$B/grade -s 0:0 man/figures/insole.knots"
+{ echo "points size=0"; sed '/^#/d' man/figures/insole.knots; echo; } |
+    cmp -s - "$T/out" && ok || no "-s 0:0 changes the knots"
+# Two steps of one are one step of two: L grows by l each time, so the
+# factors (L+l)/L and (L+2l)/(L+l) multiply to (L+2l)/L; the heel point
+# stays where it is.
+$B/grade -s 1:1 man/figures/insole.knots | $B/grade -s 1:1 >"$T/twice"
+$B/grade -s 2:2 man/figures/insole.knots >"$T/once"
+paste -d ' ' "$T/twice" "$T/once" | awk '
+NR == 1 { if ($0 != "points size=+2 points size=+2") bad = 1; next }
+NF == 4 { if (($1 - $3) ^ 2 + ($2 - $4) ^ 2 > 1e-20) bad = 1; n++ }
+END { exit bad || n != 22 }' && ok || no "grade twice by 1 differs from by 2"
+# many records in, many out, in order
+run "sed 's/rect/second/' $T/rect.knots | $B/grade -s -1:0 - $T/rect.knots"
+[ "$(grep '^points' "$T/out" | tr '\n' ' ')" = \
+    "points size=-1 name=second points size=0 name=second points size=-1 name=rect points size=0 name=rect " ] &&
+    ok || no "many records: $(grep '^points' "$T/out" | tr '\n' ' ')"
+
+# ---- grade: bad input -----------------------------------------------------
+fails 1 "cubic record: grade reads knots" "$B/grade -s 0:1 $T/seg.cubic"
+fails 1 "knots have 3 coordinates; grade reads plane outlines" \
+    "printf '0 0 0\n1 1 1\n' | $B/grade -s 0:1"
+fails 1 "<stdin>:1: the knots have no extent along x" \
+    "printf '0 0\n0 1\n' | $B/grade -s 0:1"
+fails 1 "no extent along y" "printf '0 0\n1 0\n' | $B/grade -s 0:1"
+fails 1 "size step -10 leaves the outline no length (100 -100)" \
+    "$B/grade -s -10:0 -l 10 $T/rect.knots"
+fails 1 "attribute size=big: want a whole number" \
+    "printf 'points size=big\n0 0\n1 1\n' | $B/grade -s 0:1"
+fails 1 "attribute start=1: want 2 numbers" \
+    "printf 'points start=1\n0 0\n1 1\n' | $B/grade -s 0:1"
+fails 1 "record has no knots" "printf 'points\n' | $B/grade -s 0:0"
+{ printf '0 0\n0 1\n\n'; cat "$T/rect.knots"; } >"$T/gmixed"
+run "$B/grade -s 0:0 $T/gmixed"
+status 1
+says "grade: $T/gmixed:1: the knots have no extent along x"
+[ "$(grep -c '^points size=0 name=rect$' "$T/out")" = 1 ] && ok ||
+    no "grade: the good record after a bad one"
+run "$B/grade -s 0:0 $T/rect.knots > /dev/full"
+status 1
+says "grade: write error"
+
+# ---- the figures: regenerated from nothing but the programs -------------
+# In a copy of man/figures, so the tree is left alone: every figure is
+# made without a message, is a good SVG, and equals the committed one.
+mkdir -p "$T/figures"
+cp man/figures/* "$T/figures/"
+rm -f "$T/figures/"*.svg
+if make -s -C "$T/figures" BIN="$(pwd)/$B" >"$T/out" 2>"$T/err" &&
+    [ ! -s "$T/err" ]; then
+	ok
+else
+	no "make -C man/figures: $(head -3 "$T/err")"
+fi
+n=0
+for f in man/figures/*.svg; do
+	n=$((n + 1))
+	g="$T/figures/${f##*/}"
+	svg_ok "$g"
+	cmp -s "$f" "$g" && ok ||
+	    no "$f differs from what the programs make now (make figures)"
+done
+[ "$n" -ge 22 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
+    no "$n figures committed, $(ls "$T/figures/"*.svg | wc -l) made"
+
+echo "plot: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
