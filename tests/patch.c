@@ -294,7 +294,7 @@ static double cont_pos, cont_slope;
 static int
 check_continuity(const struct loft_design *d, double size, const char *what)
 {
-	int links = 0;
+	int links = 0, dangling = 0, oneway = 0;
 	double pos = 0, slope = 0;
 
 	for (size_t i = 0; i < d->n; i++)
@@ -305,20 +305,20 @@ check_continuity(const struct loft_design *d, double size, const char *what)
 				long qi = loft_design_find(d, l->id);
 				int f = 0;
 
-				CHECK(qi >= 0, "%s: link to %ld dangles", what,
-				    l->id);
-				if (qi < 0)
+				if (qi < 0) {
+					dangling++;
 					continue;
+				}
 				q = &d->p[qi];
 				for (f = 0; f < 4 && m == NULL; f++)
 					for (size_t r = 0; r < q->nlink[f]; r++)
 						if (q->link[f][r].id == p->id)
 							m = &q->link[f][r];
 				f--;
-				CHECK(m != NULL, "%s: %ld -> %ld has no link back",
-				    what, p->id, q->id);
-				if (m == NULL)
+				if (m == NULL) {
+					oneway++;
 					continue;
+				}
 				links++;
 				for (int j = 0; j <= 10; j++) {
 					double s = l->a + (l->b - l->a) * j / 10;
@@ -336,6 +336,8 @@ check_continuity(const struct loft_design *d, double size, const char *what)
 					    fmax(norm(gx, p->dim), 1e-300));
 				}
 			}
+	CHECK(dangling == 0, "%s: %d links dangle", what, dangling);
+	CHECK(oneway == 0, "%s: %d links have none back", what, oneway);
 	CHECK(pos < 1e-12, "%s: edges apart by %g of the size", what, pos);
 	CHECK(slope < 1e-10, "%s: slopes differ by %g", what, slope);
 	cont_pos = fmax(cont_pos, pos);
@@ -358,9 +360,8 @@ split_tracked(struct loft_design *d, struct region *reg, size_t i, int dir,
 	CHECK(loft_design_split(d, i, dir, t, &err) == 0, "split: %s",
 	    err.msg);
 	a.r[2 * dir + 1] = b.r[2 * dir] = lo + t * (hi - lo);
-	memmove(&reg[i + 2], &reg[i + 1], (d->n - i - 2) * sizeof *reg);
-	reg[i] = a;
-	reg[i + 1] = b;
+	reg[i] = a;             /* the first half in place, the second last */
+	reg[d->n - 1] = b;
 }
 
 /* The design against the original patch b0 at points of each region. */
@@ -419,7 +420,7 @@ test_fig4(void)
 	loft_design_new(&d, b0, 3, 1, &err);
 	split_tracked(&d, reg, 0, 0, 1.0 / 3);
 	split_tracked(&d, reg, 1, 0, 0.5);
-	for (size_t i = 0; i < 6; i += 2)
+	for (size_t i = 0; i < 3; i++)   /* each column; halves go last */
 		split_tracked(&d, reg, i, 1, 0.5);
 	CHECK(d.n == 6, "Fig. 4: %zu patches", d.n);
 	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0, "Fig. 4: %s",
@@ -520,6 +521,87 @@ test_split_everywhere(void)
 	NEAR(check_identity(&d, reg, b0, size), 0, 1e-12,
 	    "30 random splits: identity");
 	loft_design_free(&d);
+}
+
+/*
+ * A large design: one patch cut into a 160 x 125 grid (20000 patches,
+ * 19999 splits), then every patch split again (40000).  Invariants, no
+ * timing: the grid's count of links, every link continuous, the design
+ * identical to the first patch, every id found where it is, the ids of
+ * split patches gone.  Linear lookups made this minutes of work.
+ */
+static void
+test_large_design(void)
+{
+	enum { NU = 160, NV = 125 };
+	struct loft_design d = { 0 };
+	struct region *reg = malloc(2 * NU * NV * sizeof *reg);
+	struct loft_error err;
+	double b0[75], size;
+	size_t n0, found = 0, whole = 0;
+	double scale_err = 0;
+	int links;
+
+	CHECK(reg != NULL, "large design: out of memory");
+	if (reg == NULL)
+		return;
+	hull_patch(b0);
+	size = loft_patch_size(b0, 3);
+	loft_design_new(&d, b0, 3, 1, &err);
+	reg[0] = (struct region){ { 0, 1, 0, 1 } };
+	/* columns: cut one off the rest, which goes last, each time */
+	for (int k = 0; k < NU - 1; k++)
+		split_tracked(&d, reg, d.n - 1, 0, 1.0 / (NU - k));
+	/* rows of column c, which is patch c: the same down the rest */
+	for (size_t c = 0; c < NU; c++)
+		for (int k = 0; k < NV - 1; k++)
+			split_tracked(&d, reg, k == 0 ? c : d.n - 1, 1,
+			    1.0 / (NV - k));
+	CHECK(d.n == NU * NV, "large design: %zu patches", d.n);
+	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0,
+	    "large design: %s", err.msg);
+	links = check_continuity(&d, size, "large design");
+	CHECK(links == 2 * ((NU - 1) * NV + NU * (NV - 1)),
+	    "large design: %d links", links);
+	for (size_t i = 0; i < d.n; i++) {
+		scale_err = fmax(scale_err, fmax(fabs(d.p[i].scale[0] * NU - 1),
+		    fabs(d.p[i].scale[1] * NV - 1)));
+		for (int e = 0; e < 4; e++)
+			for (size_t k = 0; k < d.p[i].nlink[e]; k++)
+				whole += d.p[i].link[e][k].a == 0 &&
+				    d.p[i].link[e][k].b == 1;
+	}
+	CHECK(scale_err < 1e-12, "large design: scale factors 1/%d, 1/%d "
+	    "within %g", NU, NV, scale_err);
+	CHECK(whole == (size_t)links, "large design: %zu of %d links are "
+	    "whole edges", whole, links);
+	/* every patch split across v: 40000 */
+	n0 = d.n;
+	for (size_t i = 0; i < n0; i++)
+		split_tracked(&d, reg, i, 1, 0.5);
+	CHECK(d.n == 2 * n0, "large design split: %zu patches", d.n);
+	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0,
+	    "large design split: %s", err.msg);
+	links = check_continuity(&d, size, "large design split");
+	CHECK(links == 2 * ((NU - 1) * 2 * NV + NU * (2 * NV - 1)),
+	    "large design split: %d links", links);
+	NEAR(check_identity(&d, reg, b0, size), 0, 1e-12,
+	    "large design split: identity");
+	for (size_t i = 0; i < d.n; i++)
+		found += loft_design_find(&d, d.p[i].id) == (long)i;
+	CHECK(found == d.n, "large design: %zu of %zu ids found in place",
+	    found, d.n);
+	/* ids 1 .. maxid - 2 n0 are the patches split on the way */
+	found = 0;
+	for (long id = 1; id <= d.maxid - (long)d.n; id++)
+		found += loft_design_find(&d, id) >= 0;
+	CHECK(found == 0, "large design: %zu split ids still found", found);
+	CHECK(d.maxid == 1 + 2 * (long)(NU * NV - 1 + n0),
+	    "large design: largest id %ld", d.maxid);
+	printf("large design: %zu patches, %d links, all continuous and "
+	    "identical to the first patch\n", d.n, links);
+	loft_design_free(&d);
+	free(reg);
 }
 
 /* ------------------------------------------------------------------ */
@@ -866,6 +948,7 @@ main(void)
 	test_fig4();
 	test_fig5();
 	test_split_everywhere();
+	test_large_design();
 	test_drag_central();
 	test_drag_edge();
 	test_drag_curve();
