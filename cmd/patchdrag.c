@@ -3,6 +3,7 @@
  * by a displacement or to a target, changing as little of the design as
  * the paper allows (MacCallum 1970, section 4).
  */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -19,9 +20,10 @@
 #define EDGE_DEFAULT 0.25
 
 struct opts {
-	long id;                /* -i, or 0 */
+	long id;                /* -i */
+	int have_id;
 	double u, v;
-	int have_v;
+	int have_u, have_v;
 	double move[LOFT_MAXDIM], view[LOFT_MAXDIM];
 	int nmove, nview;       /* coordinates given; nview 0: no -w */
 	int target;             /* -t rather than -b */
@@ -46,6 +48,14 @@ bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "patchdrag: -%c %s\n", c, err->msg);
 	usage(2);
+}
+
+/* An option's value that dragging cannot use: bad input, exit 1. */
+static void
+bad_value(int c, const char *arg, const char *why)
+{
+	fprintf(stderr, "patchdrag: -%c %s: %s\n", c, arg, why);
+	exit(1);
 }
 
 /*
@@ -112,9 +122,8 @@ drag_curve(struct loft_run *run, const struct loft_record *rec,
 		if (o->verbose) {
 			fprintf(run->msg, "patchdrag: %s:%ld: %s rule%s%s: "
 			    "segment%s %ld", rec->file, rec->line,
-			    rule_name[info.rule], info.why ? ", as " : "",
-			    info.why ? info.why : "", info.other >= 0 ? "s" : "",
-			    info.piece + 1);
+			    rule_name[info.rule], info.why[0] ? ", as " : "",
+			    info.why, info.other >= 0 ? "s" : "", info.piece + 1);
 			if (info.other >= 0)
 				fprintf(run->msg, " and %ld", info.other + 1);
 			fprintf(run->msg, " moved, H_d = %.6g\n", info.hd);
@@ -162,10 +171,8 @@ drag_patch(struct loft_run *run, struct loft_design *d, size_t i,
 			    d->p[info.other].id, info.hd, info.hp / info.hd);
 		else
 			fprintf(run->msg, "%s%s%s: (hh) moved by %.6g of the "
-			    "drag\n", info.why ? " (near " : "", info.why ?
-			    loft_edge_name[info.edge] : "", info.why ?
-			    info.why[0] == 'n' ? ": no neighbour there)" :
-			    ": a T-junction there)" : "", 1 / info.hd);
+			    "drag\n", info.why[0] ? " (" : "", info.why,
+			    info.why[0] ? ")" : "", 1 / info.hd);
 	}
 	return 0;
 }
@@ -184,12 +191,12 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 	long found = -1;
 	struct loft_error err;
 
-	if (o->id == 0 && n != 1) {
+	if (!o->have_id && n != 1) {
 		fprintf(run->msg, "patchdrag: the input holds %zu records: "
 		    "name the one to drag with -i\n", n);
 		return -1;
 	}
-	if (o->id == 0)
+	if (!o->have_id)
 		return 0;
 	for (size_t i = 0; i < n; i++) {
 		const char *v = loft_attr(&recs[i], "id");
@@ -252,17 +259,26 @@ parse_vector(int c, const char *arg, double *v, int *n)
 		    "separated by commas", arg);
 		bad_option(c, &err);
 	}
-	if (c == 'w' && v[0] == 0 && v[1] == 0 && (*n == 2 || v[2] == 0)) {
-		snprintf(err.msg, sizeof err.msg, "'%s': a direction cannot be "
-		    "zero", arg);
+	if (c == 'w' && v[0] == 0 && v[1] == 0 && (*n == 2 || v[2] == 0))
+		bad_value(c, arg, "a direction cannot be zero");
+}
+
+/* A number, any: its range is the method's to judge (exit 1, not 2). */
+static double
+parse_number(int c, const char *arg)
+{
+	struct loft_error err;
+	double x;
+
+	if (loft_parse_num(arg, strlen(arg), &x, &err) != 0)
 		bad_option(c, &err);
-	}
+	return x;
 }
 
 int
 main(int argc, char *argv[])
 {
-	struct opts o = { .u = -1, .edge = EDGE_DEFAULT };
+	struct opts o = { .edge = EDGE_DEFAULT };
 	struct loft_run run = { .prog = "patchdrag", .out = stdout,
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
@@ -271,18 +287,19 @@ main(int argc, char *argv[])
 
 	while ((c = getopt(argc, argv, "i:u:v:b:t:w:e:Vp:h")) != -1) {
 		switch (c) {
-		case 'i': rc = loft_parse_int(optarg, 1, 1000000000, &o.id,
-		    &err); break;
-		case 'u': rc = loft_parse_real(optarg, 0, 1e9, &o.u, &err);
-		    break;
-		case 'v': rc = loft_parse_real(optarg, 0, 1, &o.v, &err);
-		    o.have_v = 1; break;
+		case 'i': rc = loft_parse_int(optarg, 0, LONG_MAX, &o.id,
+		    &err); o.have_id = 1; break;
+		case 'u': o.u = parse_number(c, optarg); o.have_u = 1; break;
+		case 'v': o.v = parse_number(c, optarg); o.have_v = 1; break;
 		case 'b':
 		case 't': parse_vector(c, optarg, o.move, &o.nmove);
 		    o.target = c == 't'; moves++; break;
 		case 'w': parse_vector(c, optarg, o.view, &o.nview); break;
-		case 'e': rc = loft_parse_real(optarg, 0, 0.5, &o.edge, &err);
-		    break;
+		case 'e':
+			o.edge = parse_number(c, optarg);
+			if (!(o.edge >= 0 && o.edge <= 0.5))
+				bad_value(c, optarg, "want a reach from 0 to 0.5");
+			break;
 		case 'V': o.verbose = 1; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
@@ -292,7 +309,7 @@ main(int argc, char *argv[])
 		if (rc != 0)
 			bad_option(c, &err);
 	}
-	if (o.u < 0 || moves != 1) {
+	if (!o.have_u || moves != 1) {
 		fputs("patchdrag: give -u, and one of -b and -t\n", stderr);
 		usage(2);
 	}

@@ -3,6 +3,7 @@
  * nearest edges, with continuous slopes across it (MacCallum 1970,
  * section 6).
  */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 
 struct opts {
 	long principal, subsidiary;
+	int have_p, have_s;
 	int verbose;
 };
 
@@ -84,10 +86,10 @@ main(int argc, char *argv[])
 
 	while ((c = getopt(argc, argv, "P:S:vp:h")) != -1) {
 		switch (c) {
-		case 'P': rc = loft_parse_int(optarg, 1, 1000000000,
-		    &o.principal, &err); break;
-		case 'S': rc = loft_parse_int(optarg, 1, 1000000000,
-		    &o.subsidiary, &err); break;
+		case 'P': rc = loft_parse_int(optarg, 0, LONG_MAX,
+		    &o.principal, &err); o.have_p = 1; break;
+		case 'S': rc = loft_parse_int(optarg, 0, LONG_MAX,
+		    &o.subsidiary, &err); o.have_s = 1; break;
 		case 'v': o.verbose = 1; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
@@ -99,10 +101,9 @@ main(int argc, char *argv[])
 			usage(2);
 		}
 	}
-	if (o.principal == 0 || o.subsidiary == 0 ||
-	    o.principal == o.subsidiary) {
-		fputs("patchjoin: give two different patches with -P and "
-		    "-S\n", stderr);
+	if (!o.have_p || !o.have_s) {
+		fputs("patchjoin: give the two patches with -P and -S\n",
+		    stderr);
 		usage(2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,

@@ -3,6 +3,7 @@
  * points or from four boundary curves, written as a `patch` record.
  */
 #include <errno.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -162,8 +163,15 @@ main(int argc, char *argv[])
 			o.ncorner++;
 			break;
 		case 'b': o.boundary = 1; break;
-		case 'i': rc = loft_parse_int(optarg, 1, 1000000000, &o.id,
-		    &err); break;
+		case 'i':
+			rc = loft_parse_int(optarg, 0, LONG_MAX, &o.id, &err);
+			if (rc == 0 && !(o.id >= 1 && o.id <= 1000000000)) {
+				/* a number no patch can have: bad input */
+				fprintf(stderr, "patchnew: -i %s: want an id from "
+				    "1 to 1000000000\n", optarg);
+				exit(1);
+			}
+			break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
 		case 'h': usage(0); break;

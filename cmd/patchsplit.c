@@ -3,6 +3,7 @@
  * (MacCallum 1970, section 5); the two halves are identical to the
  * patch they replace.
  */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -12,7 +13,8 @@
 struct opts {
 	int dir;                /* 0: -u, 1: -v, -1: not given */
 	double t;
-	long id;                /* -i, or 0: every patch */
+	long id;                /* -i */
+	int have_id;            /* 0: every patch */
 };
 
 static const char usage_text[] =
@@ -31,6 +33,8 @@ split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	const struct opts *o = run->ctx;
 	struct loft_design d = { 0 };
 	struct loft_error err;
+	size_t count;
+	long at = -1;           /* -i: the index of the patch split */
 	int rc = 0;
 
 	for (size_t i = 0; i < n && rc == 0; i++)
@@ -44,8 +48,9 @@ split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 		}
 	if (rc == 0 && loft_design_from_records(run, recs, n, &d) != 0)
 		rc = 1;
-	if (rc == 0 && o->id != 0) {
-		long i = loft_design_find(&d, o->id);
+	count = d.n;
+	if (rc == 0 && o->have_id) {
+		long i = at = loft_design_find(&d, o->id);
 
 		if (i < 0) {
 			fprintf(run->msg, "patchsplit: no patch with id %ld in "
@@ -57,17 +62,19 @@ split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 			rc = 1;
 		}
 	} else if (rc == 0) {
-		/* each patch of the input in turn; its halves follow it */
-		size_t count = d.n;
-
-		for (size_t k = 0, i = 0; k < count && rc == 0; k++, i += 2)
+		for (size_t i = 0; i < count && rc == 0; i++)
 			if (loft_design_split(&d, i, o->dir, o->t, &err) != 0) {
 				loft_report(run, d.p[i].rec, &err);
 				rc = 1;
 			}
 	}
-	for (size_t i = 0; rc == 0 && i < d.n; i++)
+	/* input order, each split patch's second half (appended to d, in
+	 * the order of the splits) after its first */
+	for (size_t i = 0, j = count; rc == 0 && i < count; i++) {
 		loft_design_put(&run->w, &d, i);
+		if (j < d.n && (!o->have_id || (long)i == at))
+			loft_design_put(&run->w, &d, j++);
+	}
 	loft_design_free(&d);
 	return rc;
 }
@@ -82,11 +89,15 @@ parse_t(int c, const char *arg, struct opts *o)
 		fputs("patchsplit: give one of -u and -v\n", stderr);
 		usage(2);
 	}
-	if (loft_parse_real(arg, 0, 1, &o->t, &err) != 0 ||
-	    !(o->t > 0 && o->t < 1)) {
-		fprintf(stderr, "patchsplit: -%c '%s': want a number between "
-		    "0 and 1, both excluded\n", c, arg);
+	if (loft_parse_num(arg, strlen(arg), &o->t, &err) != 0) {
+		fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
 		usage(2);
+	}
+	if (!(o->t > 0 && o->t < 1)) {
+		/* a number splitting cannot use: bad input, not usage */
+		fprintf(stderr, "patchsplit: -%c %s: want a number between 0 "
+		    "and 1, both excluded\n", c, arg);
+		exit(1);
 	}
 	o->dir = c == 'u' ? 0 : 1;
 }
@@ -106,8 +117,9 @@ main(int argc, char *argv[])
 		case 'u':
 		case 'v': parse_t(c, optarg, &o); break;
 		case 'i':
-			if (loft_parse_int(optarg, 1, 1000000000, &o.id, &err))
+			if (loft_parse_int(optarg, 0, LONG_MAX, &o.id, &err))
 				goto bad;
+			o.have_id = 1;
 			break;
 		case 'p':
 			if (loft_parse_int(optarg, 1, 17, &whole, &err))

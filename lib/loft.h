@@ -576,7 +576,7 @@ struct loft_drag_info {
 	long other;             /* the neighbour that changed too, or -1 */
 	int edge;               /* patches: the nearer edge (enum loft_edge) */
 	double hd, hp;          /* H_d at the dragged point, H_p at the join */
-	const char *why;        /* LOFT_DRAG_FALLBACK: the reason */
+	char why[160];          /* LOFT_DRAG_FALLBACK: the reason, or "" */
 };
 
 /*
@@ -664,6 +664,7 @@ struct loft_design {
 	struct loft_patch *p;
 	size_t n, cap;
 	long maxid;             /* the largest id in use */
+	struct loft_design_index *index;        /* ids to patches, patch.c's */
 };
 
 /* The edge names of loft.5, "u0" "u1" "v0" "v1", by enum loft_edge. */
@@ -687,13 +688,15 @@ int loft_design_new(struct loft_design *d, const double *b, int dim,
 
 void loft_design_free(struct loft_design *d);
 
-/* The index of the patch with id, or -1. */
+/* The index of the patch with id, or -1; O(log n) (the first lookup
+ * after patches were added out of order of id sorts d's index once). */
 long loft_design_find(const struct loft_design *d, long id);
 
 /*
  * Check that ids are unique, every patch has the same dim, and each
  * neighbour named exists and names the patch back with the same sense.
- * Returns 0, or LOFT_EINPUT with *bad the index of the patch at fault.
+ * Returns 0, or LOFT_EINPUT with *bad the index of the patch at fault,
+ * or LOFT_ENOMEM.  O(n log n) in the count of patches and links.
  */
 int loft_design_check(const struct loft_design *d, size_t *bad,
     struct loft_error *err);
@@ -713,10 +716,11 @@ void loft_design_put(struct loft_writer *w, const struct loft_design *d,
 
 /*
  * Section 5: split patch i along u = t (dir 0) or v = t (dir 1) into
- * two patches with new ids (d->maxid + 1, + 2) that take its place at
- * i and i + 1, scale factors multiplied by t and 1 - t, and neighbour
- * links updated on both sides, T-junctions included.  Returns 0 or
- * LOFT_ENOMEM.
+ * two patches with new ids (d->maxid + 1, + 2), the first (parameter
+ * 0 to t) in its place at i, the second appended at d->n - 1; scale
+ * factors multiplied by t and 1 - t, and neighbour links updated on
+ * both sides, T-junctions included.  No other patch moves in d->p.
+ * Returns 0 or LOFT_ENOMEM.
  */
 int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
     struct loft_error *err);

@@ -225,6 +225,110 @@ loft_patch_coons(const double *const *cv, int dim, double *b,
 }
 
 /* ------------------------------------------------------------------ */
+/* The index of ids: nothing in a design is quadratic in its patches */
+
+/*
+ * Entries (id, index of the patch in d->p), sorted by id, then index,
+ * so that a lookup is a binary search.  Entries are appended as patches
+ * come; while ids come in increasing order (a split's new ids are the
+ * largest) the index stays sorted, and otherwise the next lookup sorts
+ * it, once.  A split patch's entry is marked gone, and gone entries are
+ * dropped when they are half of all, so each split costs O(log n)
+ * amortised.
+ */
+struct slot {
+	long id;
+	size_t i;
+	int gone;
+};
+
+struct loft_design_index {
+	struct slot *e;
+	size_t n, cap;
+	size_t sorted;          /* e[0..sorted) is in order */
+	size_t gone;            /* entries marked gone */
+};
+
+static int
+slot_cmp(const void *a, const void *b)
+{
+	const struct slot *x = a, *y = b;
+
+	if (x->id != y->id)
+		return x->id < y->id ? -1 : 1;
+	return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* Make room for k more entries, so that index_add cannot fail. */
+static int
+index_reserve(struct loft_design *d, size_t k)
+{
+	if (d->index == NULL && (d->index = calloc(1, sizeof *d->index)) ==
+	    NULL)
+		return LOFT_ENOMEM;
+	if (loft__grow((void **)&d->index->e, &d->index->cap,
+	    d->index->n + k, sizeof *d->index->e) != 0)
+		return LOFT_ENOMEM;
+	return 0;
+}
+
+/* Append (id, i); index_reserve made room. */
+static void
+index_add(struct loft_design *d, long id, size_t i)
+{
+	struct loft_design_index *x = d->index;
+	struct slot s = { id, i, 0 };
+
+	if (x->sorted == x->n && (x->n == 0 ||
+	    slot_cmp(&x->e[x->n - 1], &s) < 0))
+		x->sorted++;
+	x->e[x->n++] = s;
+}
+
+/* Sort the index if patches came out of order; the first entry with id. */
+static size_t
+index_lower(const struct loft_design *d, long id)
+{
+	struct loft_design_index *x = d->index;
+	size_t lo = 0, hi = x->n;
+
+	if (x->sorted < x->n) {
+		qsort(x->e, x->n, sizeof *x->e, slot_cmp);
+		x->sorted = x->n;
+	}
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (x->e[mid].id < id)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/* Mark the entry of patch i, with id, gone. */
+static void
+index_drop(struct loft_design *d, long id, size_t i)
+{
+	struct loft_design_index *x = d->index;
+	size_t k = index_lower(d, id), m = 0;
+
+	while (k < x->n && x->e[k].id == id && x->e[k].i != i)
+		k++;
+	if (k == x->n || x->e[k].id != id || x->e[k].gone)
+		return;
+	x->e[k].gone = 1;
+	if (++x->gone * 2 <= x->n)
+		return;
+	for (k = 0; k < x->n; k++)
+		if (!x->e[k].gone)
+			x->e[m++] = x->e[k];
+	x->n = x->sorted = m;
+	x->gone = 0;
+}
+
+/* ------------------------------------------------------------------ */
 /* Designs: patch records and neighbour links */
 
 static int
@@ -232,9 +336,18 @@ add_link(struct loft_patch *p, int e, long id, double a, double b)
 {
 	size_t i;
 
-	if (loft__grow((void **)&p->link[e], &p->linkcap[e], p->nlink[e] + 1,
-	    sizeof *p->link[e]) != 0)
-		return LOFT_ENOMEM;
+	/* most edges have one or two neighbours: start small (a design
+	 * of n patches holds 4 n of these lists) */
+	if (p->nlink[e] == p->linkcap[e]) {
+		size_t cap = p->linkcap[e] ? 2 * p->linkcap[e] : 2;
+		struct loft_link *l = cap > (size_t)-1 / sizeof *l ? NULL :
+		    realloc(p->link[e], cap * sizeof *l);
+
+		if (l == NULL)
+			return LOFT_ENOMEM;
+		p->link[e] = l;
+		p->linkcap[e] = cap;
+	}
 	/* keep the list sorted by where each link starts on the edge */
 	for (i = p->nlink[e]; i > 0 && fmin(p->link[e][i - 1].a,
 	    p->link[e][i - 1].b) > fmin(a, b); i--)
@@ -346,8 +459,9 @@ loft_design_new(struct loft_design *d, const double *b, int dim, long id,
 {
 	struct loft_patch *p;
 
-	if (design_grow(d, err) != 0)
-		return LOFT_ENOMEM;
+	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	index_add(d, id, d->n);
 	p = &d->p[d->n++];
 	p->id = id;
 	p->dim = dim;
@@ -378,8 +492,8 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 		    "numbers, not %d", rec->ncols);
 	if ((v = loft_attr(rec, "id")) == NULL)
 		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
-	if (design_grow(d, err) != 0)
-		return LOFT_ENOMEM;
+	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	p = &d->p[d->n];
 	if (loft_parse_int(v, 1, ID_MAX, &p->id, err) != 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
@@ -405,6 +519,7 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 		}
 	if (p->id > d->maxid)
 		d->maxid = p->id;
+	index_add(d, p->id, d->n);
 	d->n++;
 	return 0;
 }
@@ -415,31 +530,82 @@ loft_design_free(struct loft_design *d)
 	for (size_t i = 0; i < d->n; i++)
 		patch_free(&d->p[i]);
 	free(d->p);
+	if (d->index != NULL)
+		free(d->index->e);
+	free(d->index);
 	memset(d, 0, sizeof *d);
 }
 
+/* With duplicate ids (loft_design_check refuses them), the first. */
 long
 loft_design_find(const struct loft_design *d, long id)
 {
-	for (size_t i = 0; i < d->n; i++)
-		if (d->p[i].id == id)
-			return (long)i;
+	size_t k;
+
+	if (d->index == NULL)
+		return -1;
+	for (k = index_lower(d, id); k < d->index->n &&
+	    d->index->e[k].id == id; k++)
+		if (!d->index->e[k].gone)
+			return (long)d->index->e[k].i;
 	return -1;
 }
 
-/* Check patch i's links; 0 or LOFT_EINPUT. */
+/*
+ * Every link of a design, as (patch index, neighbour id, where), sorted
+ * by the first two: loft_design_check finds a link back, and a
+ * neighbour named twice, by binary search.
+ */
+struct named {
+	size_t from;
+	long to;
+	int e;
+	size_t k;
+};
+
 static int
-check_links(const struct loft_design *d, size_t i, struct loft_error *err)
+named_cmp(const void *a, const void *b)
+{
+	const struct named *x = a, *y = b;
+
+	if (x->from != y->from)
+		return x->from < y->from ? -1 : 1;
+	if (x->to != y->to)
+		return x->to < y->to ? -1 : 1;
+	return x->e != y->e ? x->e - y->e : (x->k > y->k) - (x->k < y->k);
+}
+
+/* The first of all[0..n) that patch from has to id, or NULL. */
+static const struct named *
+named_find(const struct named *all, size_t n, size_t from, long to)
+{
+	size_t lo = 0, hi = n;
+
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (all[mid].from < from || (all[mid].from == from &&
+		    all[mid].to < to))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo < n && all[lo].from == from && all[lo].to == to ?
+	    &all[lo] : NULL;
+}
+
+/* Check patch i's links against all[0..nall); 0 or LOFT_EINPUT. */
+static int
+check_links(const struct loft_design *d, size_t i, const struct named *all,
+    size_t nall, struct loft_error *err)
 {
 	const struct loft_patch *p = &d->p[i];
 
 	for (int e = 0; e < 4; e++)
 		for (size_t k = 0; k < p->nlink[e]; k++) {
-			const struct loft_link *l = &p->link[e][k];
+			const struct loft_link *l = &p->link[e][k], *m;
 			long n = loft_design_find(d, l->id);
-			const struct loft_patch *q;
-			int f, g, count = 0;
-			size_t m, r;
+			const struct named *x;
 
 			if (l->id == p->id)
 				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
@@ -449,20 +615,19 @@ check_links(const struct loft_design *d, size_t i, struct loft_error *err)
 				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld: "
 				    "neighbour %ld across %s is not in the "
 				    "design", p->id, l->id, loft_edge_name[e]);
-			for (g = 0; g < 4; g++)
-				for (r = 0; r < p->nlink[g]; r++)
-					count += p->link[g][r].id == l->id;
-			if (count > 1)
+			x = named_find(all, nall, i, l->id);
+			if (x + 1 < all + nall && x[1].from == i &&
+			    x[1].to == l->id)
 				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
 				    "names neighbour %ld more than once",
 				    p->id, l->id);
-			q = &d->p[n];
-			if (!find_link(q, p->id, &f, &m))
+			if ((x = named_find(all, nall, (size_t)n, p->id)) == NULL)
 				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld "
 				    "names %ld across %s, but %ld does not name "
 				    "%ld", p->id, l->id, loft_edge_name[e],
 				    l->id, p->id);
-			if ((l->a < l->b) != (q->link[f][m].a < q->link[f][m].b))
+			m = &d->p[n].link[x->e][x->k];
+			if ((l->a < l->b) != (m->a < m->b))
 				return loft_fail(err, LOFT_EINPUT, -1, "patches "
 				    "%ld and %ld disagree on which way their "
 				    "common edge runs", p->id, l->id);
@@ -470,25 +635,63 @@ check_links(const struct loft_design *d, size_t i, struct loft_error *err)
 	return 0;
 }
 
+/*
+ * The first patch whose id an earlier patch has, or d->n: in the sorted
+ * index, every entry after the first of a run of equal ids.
+ */
+static size_t
+first_duplicate(const struct loft_design *d)
+{
+	const struct loft_design_index *x = d->index;
+	size_t dup = d->n;
+
+	if (x == NULL || d->n == 0)
+		return dup;
+	(void)index_lower(d, 0);        /* sorts */
+	for (size_t k = 1; k < x->n; k++)
+		if (!x->e[k].gone && !x->e[k - 1].gone &&
+		    x->e[k].id == x->e[k - 1].id && x->e[k].i < dup)
+			dup = x->e[k].i;
+	return dup;
+}
+
 int
 loft_design_check(const struct loft_design *d, size_t *bad,
     struct loft_error *err)
 {
-	for (size_t i = 0; i < d->n; i++) {
+	struct named *all = NULL;
+	size_t nall = 0, dup = first_duplicate(d);
+	int rc = 0;
+
+	*bad = 0;
+	for (size_t i = 0; i < d->n; i++)
+		for (int e = 0; e < 4; e++)
+			nall += d->p[i].nlink[e];
+	if (nall > 0 && (all = malloc(nall * sizeof *all)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	nall = 0;
+	for (size_t i = 0; i < d->n; i++)
+		for (int e = 0; e < 4; e++)
+			for (size_t k = 0; k < d->p[i].nlink[e]; k++)
+				all[nall++] = (struct named){ i,
+				    d->p[i].link[e][k].id, e, k };
+	if (nall > 0)
+		qsort(all, nall, sizeof *all, named_cmp);
+	for (size_t i = 0; i < d->n && rc == 0; i++) {
 		*bad = i;
 		if (d->p[i].dim != d->p[0].dim)
-			return loft_fail(err, LOFT_EINPUT, -1, "patch %ld has %d "
+			rc = loft_fail(err, LOFT_EINPUT, -1, "patch %ld has %d "
 			    "coordinates, patch %ld %d: a design has one "
 			    "dimension", d->p[i].id, d->p[i].dim, d->p[0].id,
 			    d->p[0].dim);
-		for (size_t j = 0; j < i; j++)
-			if (d->p[j].id == d->p[i].id)
-				return loft_fail(err, LOFT_EINPUT, -1, "id %ld is "
-				    "used twice", d->p[i].id);
-		if (check_links(d, i, err) != 0)
-			return LOFT_EINPUT;
+		else if (i == dup)
+			rc = loft_fail(err, LOFT_EINPUT, -1, "id %ld is used "
+			    "twice", d->p[i].id);
+		else
+			rc = check_links(d, i, all, nall, err);
 	}
-	return 0;
+	free(all);
+	return rc;
 }
 
 static void
@@ -579,6 +782,13 @@ rename_link(struct loft_patch *p, long old, long new)
 		p->link[e][k].id = new;
 }
 
+/* An edge parameter within LINK_EPS of an end of the edge is that end. */
+static double
+snap(double s)
+{
+	return s < LINK_EPS ? 0 : s > 1 - LINK_EPS ? 1 : s;
+}
+
 /*
  * The part of a cut edge's link l = (q, a, b) that falls on child c
  * (0: parameter 0 to t, 1: t to 1) of the patch being split, as links
@@ -595,12 +805,12 @@ cut_link(struct loft_design *d, struct loft_patch *child, int e, int c,
 	p1 = c == 0 ? fmin(hi, t) : hi;
 	if (!(p1 - p0 > LINK_EPS))
 		return 0;
-	s0 = c == 0 ? p0 / t : (p0 - t) / (1 - t);
-	s1 = c == 0 ? p1 / t : (p1 - t) / (1 - t);
+	s0 = snap(c == 0 ? p0 / t : (p0 - t) / (1 - t));
+	s1 = snap(c == 0 ? p1 / t : (p1 - t) / (1 - t));
 	if (add_link(child, e, l->id, l->a < l->b ? s0 : s1,
 	    l->a < l->b ? s1 : s0) != 0 ||
-	    add_link(&d->p[qi], f, child->id, across(l, back, p0),
-	    across(l, back, p1)) != 0)
+	    add_link(&d->p[qi], f, child->id, snap(across(l, back, p0)),
+	    snap(across(l, back, p1))) != 0)
 		return LOFT_ENOMEM;
 	return 0;
 }
@@ -618,8 +828,8 @@ loft_design_split(struct loft_design *d, size_t i, int dir, double t,
 	if (d->maxid > ID_MAX - 2)
 		return loft_fail(err, LOFT_EINPUT, -1, "ids are used up (the "
 		    "largest is %ld)", d->maxid);
-	if (design_grow(d, err) != 0)
-		return LOFT_ENOMEM;
+	if (design_grow(d, err) != 0 || index_reserve(d, 2) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	q = &d->p[i];
 	memset(ch, 0, sizeof ch);
 	for (int c = 0; c < 2; c++) {
@@ -667,10 +877,12 @@ loft_design_split(struct loft_design *d, size_t i, int dir, double t,
 					goto nomem;
 		}
 	}
+	index_drop(d, q->id, i);
 	patch_free(q);
-	memmove(&d->p[i + 2], &d->p[i + 1], (d->n - i - 1) * sizeof *d->p);
 	d->p[i] = ch[0];
-	d->p[i + 1] = ch[1];
+	d->p[d->n] = ch[1];
+	index_add(d, ch[0].id, i);
+	index_add(d, ch[1].id, d->n);
 	d->n++;
 	d->maxid += 2;
 	return 0;
@@ -708,28 +920,54 @@ add_tensor(double *b, int dim, const double *x, const double *y,
 }
 
 /*
- * Whether patch p's edge e has one neighbour that shares all of it and
- * all of whose own edge it shares; 1 and its index and edge, else 0 and
- * why not.
+ * The neighbour that the edge rule can drag with p across p's edge e,
+ * near which the dragged point lies, at edge parameter s.  Along the
+ * edge the bump must be c H5 over all of p's edge, to keep p's two
+ * edges beside it (a quartic with double roots at both ends is c H5);
+ * for the same reason it is c H5 over all of the neighbour's edge.  So
+ * the neighbour covering s must lie along all of p's edge and p along
+ * all of the neighbour's: at a T-junction, on either side, no patch
+ * but a third could take up the difference, and the central rule
+ * applies.  Returns 1 with its index and edge, or 0 with why not.
  */
 static int
-whole_neighbour(const struct loft_design *d, const struct loft_patch *p,
-    int e, long *qi, int *f, const char **why)
+edge_neighbour(const struct loft_design *d, const struct loft_patch *p,
+    int e, double s, long *qi, int *f, char *why, size_t len)
 {
-	const struct loft_link *l;
-	size_t r;
+	const char *name = loft_edge_name[e], *along = e == LOFT_U0 ||
+	    e == LOFT_U1 ? "v" : "u", *back_along;
+	const struct loft_link *l = NULL, *m;
+	size_t k, r;
 
-	if (p->nlink[e] == 0) {
-		*why = "no neighbour across that edge";
+	for (k = 0; k < p->nlink[e] && l == NULL; k++)
+		if (s >= fmin(p->link[e][k].a, p->link[e][k].b) - LINK_EPS &&
+		    s <= fmax(p->link[e][k].a, p->link[e][k].b) + LINK_EPS)
+			l = &p->link[e][k];
+	if (l == NULL) {
+		snprintf(why, len, p->nlink[e] == 0 ? "no neighbour across %s" :
+		    "no neighbour across %s at %s=%g", name, along, s);
 		return 0;
 	}
-	l = &p->link[e][0];
-	*qi = loft_design_find(d, l->id);
-	if (p->nlink[e] > 1 || fabs(l->a - l->b) < 1 - LINK_EPS || *qi < 0 ||
-	    !find_link(&d->p[*qi], p->id, f, &r) ||
-	    fabs(d->p[*qi].link[*f][r].a - d->p[*qi].link[*f][r].b) <
-	    1 - LINK_EPS) {
-		*why = "a T-junction on that edge: no one neighbour spans it";
+	if (fabs(l->a - l->b) < 1 - LINK_EPS) {
+		snprintf(why, len, "a T-junction on %s: neighbour %ld lies "
+		    "along %s=%g to %g of it, and the edge rule needs one "
+		    "along all of it", name, l->id, along, fmin(l->a, l->b),
+		    fmax(l->a, l->b));
+		return 0;
+	}
+	if ((*qi = loft_design_find(d, l->id)) < 0 ||
+	    !find_link(&d->p[*qi], p->id, f, &r)) {
+		snprintf(why, len, "neighbour %ld across %s does not name "
+		    "this patch", l->id, name);     /* loft_design_check */
+		return 0;
+	}
+	m = &d->p[*qi].link[*f][r];
+	back_along = *f == LOFT_U0 || *f == LOFT_U1 ? "v" : "u";
+	if (fabs(m->a - m->b) < 1 - LINK_EPS) {
+		snprintf(why, len, "a T-junction on %s of neighbour %ld: this "
+		    "patch lies along %s=%g to %g of it, and the edge rule "
+		    "would move %ld's other neighbours there", loft_edge_name[*f],
+		    l->id, back_along, fmin(m->a, m->b), fmax(m->a, m->b), l->id);
 		return 0;
 	}
 	return 1;
@@ -768,7 +1006,8 @@ loft_design_drag(struct loft_design *d, size_t i, double u, double v,
 	info->edge = e;
 	info->rule = LOFT_DRAG_CENTRAL;
 	if (rho[e] < edge) {
-		if (whole_neighbour(d, p, e, &qi, &f, &info->why)) {
+		if (edge_neighbour(d, p, e, normal_dir(e) == 0 ? v : u, &qi,
+		    &f, info->why, sizeof info->why)) {
 			struct loft_patch *q = &d->p[qi];
 			int n = normal_dir(e), nq = normal_dir(f);
 			double rp = p->scale[n], rq = q->scale[nq];
@@ -800,9 +1039,9 @@ loft_design_drag(struct loft_design *d, size_t i, double u, double v,
 	hd = loft__h5(u) * loft__h5(v);
 	if (!(hd > 0))
 		return loft_fail(err, LOFT_EGEOM, -1, "the point at u=%g v=%g "
-		    "is on the patch's edge %s%s, which dragging keeps fixed",
-		    u, v, loft_edge_name[e], info->why ? " (it has no "
-		    "neighbour that spans it)" : "");
+		    "is on the patch's edge %s, which dragging keeps fixed%s%s%s",
+		    u, v, loft_edge_name[e], info->why[0] ? " (" : "",
+		    info->why, info->why[0] ? ")" : "");
 	vaxpy(BIJ(p->b, 4, 4, dim), 1 / hd, delta, dim);
 	info->hd = hd;
 	return 0;

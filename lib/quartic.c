@@ -3,6 +3,7 @@
  * 4): the blending functions H1..H5, evaluation, conversion from a cubic,
  * and dragging a curve of quartic segments.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "internal.h"
@@ -190,8 +191,9 @@ loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
 			return 0;
 		}
 		info->rule = LOFT_DRAG_FALLBACK;
-		info->why = near_end ? "the curve ends there" :
-		    "the curve starts there";
+		snprintf(info->why, sizeof info->why, "%s",
+		    near_end ? "the curve ends there" :
+		    "the curve starts there");
 	} else {
 		info->rule = LOFT_DRAG_CENTRAL;
 	}

@@ -294,7 +294,7 @@ static double cont_pos, cont_slope;
 static int
 check_continuity(const struct loft_design *d, double size, const char *what)
 {
-	int links = 0;
+	int links = 0, dangling = 0, oneway = 0;
 	double pos = 0, slope = 0;
 
 	for (size_t i = 0; i < d->n; i++)
@@ -305,20 +305,20 @@ check_continuity(const struct loft_design *d, double size, const char *what)
 				long qi = loft_design_find(d, l->id);
 				int f = 0;
 
-				CHECK(qi >= 0, "%s: link to %ld dangles", what,
-				    l->id);
-				if (qi < 0)
+				if (qi < 0) {
+					dangling++;
 					continue;
+				}
 				q = &d->p[qi];
 				for (f = 0; f < 4 && m == NULL; f++)
 					for (size_t r = 0; r < q->nlink[f]; r++)
 						if (q->link[f][r].id == p->id)
 							m = &q->link[f][r];
 				f--;
-				CHECK(m != NULL, "%s: %ld -> %ld has no link back",
-				    what, p->id, q->id);
-				if (m == NULL)
+				if (m == NULL) {
+					oneway++;
 					continue;
+				}
 				links++;
 				for (int j = 0; j <= 10; j++) {
 					double s = l->a + (l->b - l->a) * j / 10;
@@ -336,6 +336,8 @@ check_continuity(const struct loft_design *d, double size, const char *what)
 					    fmax(norm(gx, p->dim), 1e-300));
 				}
 			}
+	CHECK(dangling == 0, "%s: %d links dangle", what, dangling);
+	CHECK(oneway == 0, "%s: %d links have none back", what, oneway);
 	CHECK(pos < 1e-12, "%s: edges apart by %g of the size", what, pos);
 	CHECK(slope < 1e-10, "%s: slopes differ by %g", what, slope);
 	cont_pos = fmax(cont_pos, pos);
@@ -358,9 +360,8 @@ split_tracked(struct loft_design *d, struct region *reg, size_t i, int dir,
 	CHECK(loft_design_split(d, i, dir, t, &err) == 0, "split: %s",
 	    err.msg);
 	a.r[2 * dir + 1] = b.r[2 * dir] = lo + t * (hi - lo);
-	memmove(&reg[i + 2], &reg[i + 1], (d->n - i - 2) * sizeof *reg);
-	reg[i] = a;
-	reg[i + 1] = b;
+	reg[i] = a;             /* the first half in place, the second last */
+	reg[d->n - 1] = b;
 }
 
 /* The design against the original patch b0 at points of each region. */
@@ -419,7 +420,7 @@ test_fig4(void)
 	loft_design_new(&d, b0, 3, 1, &err);
 	split_tracked(&d, reg, 0, 0, 1.0 / 3);
 	split_tracked(&d, reg, 1, 0, 0.5);
-	for (size_t i = 0; i < 6; i += 2)
+	for (size_t i = 0; i < 3; i++)   /* each column; halves go last */
 		split_tracked(&d, reg, i, 1, 0.5);
 	CHECK(d.n == 6, "Fig. 4: %zu patches", d.n);
 	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0, "Fig. 4: %s",
@@ -520,6 +521,87 @@ test_split_everywhere(void)
 	NEAR(check_identity(&d, reg, b0, size), 0, 1e-12,
 	    "30 random splits: identity");
 	loft_design_free(&d);
+}
+
+/*
+ * A large design: one patch cut into a 160 x 125 grid (20000 patches,
+ * 19999 splits), then every patch split again (40000).  Invariants, no
+ * timing: the grid's count of links, every link continuous, the design
+ * identical to the first patch, every id found where it is, the ids of
+ * split patches gone.  Linear lookups made this minutes of work.
+ */
+static void
+test_large_design(void)
+{
+	enum { NU = 160, NV = 125 };
+	struct loft_design d = { 0 };
+	struct region *reg = malloc(2 * NU * NV * sizeof *reg);
+	struct loft_error err;
+	double b0[75], size;
+	size_t n0, found = 0, whole = 0;
+	double scale_err = 0;
+	int links;
+
+	CHECK(reg != NULL, "large design: out of memory");
+	if (reg == NULL)
+		return;
+	hull_patch(b0);
+	size = loft_patch_size(b0, 3);
+	loft_design_new(&d, b0, 3, 1, &err);
+	reg[0] = (struct region){ { 0, 1, 0, 1 } };
+	/* columns: cut one off the rest, which goes last, each time */
+	for (int k = 0; k < NU - 1; k++)
+		split_tracked(&d, reg, d.n - 1, 0, 1.0 / (NU - k));
+	/* rows of column c, which is patch c: the same down the rest */
+	for (size_t c = 0; c < NU; c++)
+		for (int k = 0; k < NV - 1; k++)
+			split_tracked(&d, reg, k == 0 ? c : d.n - 1, 1,
+			    1.0 / (NV - k));
+	CHECK(d.n == NU * NV, "large design: %zu patches", d.n);
+	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0,
+	    "large design: %s", err.msg);
+	links = check_continuity(&d, size, "large design");
+	CHECK(links == 2 * ((NU - 1) * NV + NU * (NV - 1)),
+	    "large design: %d links", links);
+	for (size_t i = 0; i < d.n; i++) {
+		scale_err = fmax(scale_err, fmax(fabs(d.p[i].scale[0] * NU - 1),
+		    fabs(d.p[i].scale[1] * NV - 1)));
+		for (int e = 0; e < 4; e++)
+			for (size_t k = 0; k < d.p[i].nlink[e]; k++)
+				whole += d.p[i].link[e][k].a == 0 &&
+				    d.p[i].link[e][k].b == 1;
+	}
+	CHECK(scale_err < 1e-12, "large design: scale factors 1/%d, 1/%d "
+	    "within %g", NU, NV, scale_err);
+	CHECK(whole == (size_t)links, "large design: %zu of %d links are "
+	    "whole edges", whole, links);
+	/* every patch split across v: 40000 */
+	n0 = d.n;
+	for (size_t i = 0; i < n0; i++)
+		split_tracked(&d, reg, i, 1, 0.5);
+	CHECK(d.n == 2 * n0, "large design split: %zu patches", d.n);
+	CHECK(loft_design_check(&d, &(size_t){ 0 }, &err) == 0,
+	    "large design split: %s", err.msg);
+	links = check_continuity(&d, size, "large design split");
+	CHECK(links == 2 * ((NU - 1) * 2 * NV + NU * (2 * NV - 1)),
+	    "large design split: %d links", links);
+	NEAR(check_identity(&d, reg, b0, size), 0, 1e-12,
+	    "large design split: identity");
+	for (size_t i = 0; i < d.n; i++)
+		found += loft_design_find(&d, d.p[i].id) == (long)i;
+	CHECK(found == d.n, "large design: %zu of %zu ids found in place",
+	    found, d.n);
+	/* ids 1 .. maxid - 2 n0 are the patches split on the way */
+	found = 0;
+	for (long id = 1; id <= d.maxid - (long)d.n; id++)
+		found += loft_design_find(&d, id) >= 0;
+	CHECK(found == 0, "large design: %zu split ids still found", found);
+	CHECK(d.maxid == 1 + 2 * (long)(NU * NV - 1 + n0),
+	    "large design: largest id %ld", d.maxid);
+	printf("large design: %zu patches, %d links, all continuous and "
+	    "identical to the first patch\n", d.n, links);
+	loft_design_free(&d);
+	free(reg);
 }
 
 /* ------------------------------------------------------------------ */
@@ -730,6 +812,248 @@ test_drag_curve(void)
 	    "closed curve: the first and last segments are neighbours");
 }
 
+/*
+ * Section 4's conditions on dragging, worded as issue 4 words them, on
+ * central drags at random points at least EDGE from the ends:
+ * (a) the largest movement is small against the length (at most
+ *     delta / H_d, and H_d >= H5(EDGE) per direction);
+ * (b) the effective segment keeps its end points and end slopes, and
+ *     nothing outside it moves (bit for bit);
+ * (c) the largest deviation lies within C_DISTANCE of the dragged point
+ *     in each parameter, the distance patchdrag.1 documents;
+ * (d) the deviation has one sign: it is a non-negative multiple of delta.
+ */
+#define EDGE 0.25
+#define C_DISTANCE (0.5 - EDGE)
+#define SAMPLES 200
+
+/* The deviation dev from a drag delta: 1 when it is lambda delta, with
+ * lambda >= 0, to rounding of the size s. */
+static int
+one_sign(const double *dev, const double *delta, int dim, double s)
+{
+	double along = 0, dd = 0, off[3];
+
+	for (int k = 0; k < dim; k++) {
+		along += dev[k] * delta[k];
+		dd += delta[k] * delta[k];
+	}
+	for (int k = 0; k < dim; k++)
+		off[k] = dev[k] - along / dd * delta[k];
+	return along >= -1e-14 * s * sqrt(dd) && norm(off, dim) <= 1e-14 * s;
+}
+
+/* a[0..n) == b[0..n), as numbers (minus zero is zero) */
+static int
+same(const double *a, const double *b, int n)
+{
+	for (int k = 0; k < n; k++)
+		if (a[k] != b[k])
+			return 0;
+	return 1;
+}
+
+static void
+test_drag_conditions_curve(void)
+{
+	enum { NSEG = 4 };
+	const double r = 10, arc = M_PI / 3;   /* a circular arc */
+	double q[NSEG][10], q0[NSEG][10], len = 0, worst_a = 0, worst_c = 0;
+	int bad_b = 0, bad_d = 0;
+
+	/* segment i: from angle i arc to (i + 1) arc, slopes r arc
+	 * tangent, (h) on the circle (a quartic near the arc) */
+	for (int i = 0; i < NSEG; i++) {
+		double t0 = i * arc, t1 = t0 + arc, th = t0 + arc / 2;
+		double c[10] = { r * cos(t0), r * sin(t0), r * cos(t1),
+		    r * sin(t1), -r * arc * sin(t0), r * arc * cos(t0),
+		    -r * arc * sin(t1), r * arc * cos(t1), r * cos(th),
+		    r * sin(th) };
+
+		memcpy(q0[i], c, sizeof c);
+	}
+	for (int i = 0; i < NSEG; i++)
+		for (int m = 0; m < SAMPLES; m++) {
+			double a[2], b[2];
+
+			loft_quartic_eval(q0[i], 2, (double)m / SAMPLES, a, NULL,
+			    NULL);
+			loft_quartic_eval(q0[i], 2, (double)(m + 1) / SAMPLES, b,
+			    NULL, NULL);
+			len += dist(a, b, 2);
+		}
+	NEAR(len, r * arc * NSEG, 1e-3 * len, "the arc's length");
+	for (int n = 0; n < 200; n++) {
+		struct loft_drag_info info;
+		struct loft_error err;
+		int i = (int)rnd(0, NSEG), mi = 0;
+		double u = rnd(EDGE, 1 - EDGE), ang = rnd(0, 2 * M_PI);
+		double delta[2] = { 1e-3 * len * cos(ang), 1e-3 * len * sin(ang) };
+		double most = 0, x0[2], x1[2], d0[2], d1[2];
+
+		memcpy(q, q0, sizeof q);
+		CHECK(loft_quartic_drag(&q[0][0], NSEG, 2, 0, i + u, delta, EDGE,
+		    &info, &err) == 0 && info.rule == LOFT_DRAG_CENTRAL,
+		    "curve condition: central drag at %g", i + u);
+		for (int j = 0; j < NSEG; j++)
+			bad_b += !same(q[j], q0[j], j == i ? 8 : 10);
+		for (int e = 0; e <= 1; e++) {
+			loft_quartic_eval(q0[i], 2, e, x0, d0, NULL);
+			loft_quartic_eval(q[i], 2, e, x1, d1, NULL);
+			bad_b += !same(x0, x1, 2) || !same(d0, d1, 2);
+		}
+		for (int m = 0; m <= SAMPLES; m++) {
+			double dev[2];
+
+			loft_quartic_eval(q0[i], 2, (double)m / SAMPLES, x0, NULL,
+			    NULL);
+			loft_quartic_eval(q[i], 2, (double)m / SAMPLES, x1, NULL,
+			    NULL);
+			dev[0] = x1[0] - x0[0];
+			dev[1] = x1[1] - x0[1];
+			bad_d += !one_sign(dev, delta, 2, len);
+			if (norm(dev, 2) > most) {
+				most = norm(dev, 2);
+				mi = m;
+			}
+		}
+		CHECK(most <= norm(delta, 2) / h5(u) * (1 + 1e-12) &&
+		    most <= 16.0 / 9 * norm(delta, 2) * (1 + 1e-12),
+		    "(a) curve: largest movement %g for a drag of %g", most,
+		    norm(delta, 2));
+		worst_a = fmax(worst_a, most / len);
+		worst_c = fmax(worst_c, fabs((double)mi / SAMPLES - u));
+	}
+	CHECK(worst_a <= 16.0 / 9 * 1e-3 * (1 + 1e-12), "(a) curve: largest "
+	    "movement %g of the length for drags of 1e-3 of it", worst_a);
+	CHECK(bad_b == 0, "(b) curve: %d drags moved an end, an end slope or "
+	    "another segment", bad_b);
+	CHECK(worst_c <= C_DISTANCE + 1.0 / SAMPLES, "(c) curve: largest "
+	    "deviation %g from the dragged point", worst_c);
+	CHECK(bad_d == 0, "(d) curve: %d samples off one sign", bad_d);
+	/* near a join the effective segment is two segments: their outer
+	 * ends and slopes stay, the others do not move, one sign over both */
+	for (int n = 0; n < 50; n++) {
+		struct loft_drag_info info;
+		struct loft_error err;
+		int i = 1 + (int)rnd(0, NSEG - 2), j, lo, bad = 0;
+		double u = n % 2 ? rnd(0.8, 1) : rnd(0.01, 0.2);
+		double delta[2] = { rnd(-0.01, 0.01), rnd(-0.01, 0.01) };
+		double x0[2], x1[2], d0[2], d1[2];
+
+		memcpy(q, q0, sizeof q);
+		CHECK(loft_quartic_drag(&q[0][0], NSEG, 2, 0, i + u, delta, EDGE,
+		    &info, &err) == 0 && info.rule == LOFT_DRAG_EDGE,
+		    "curve condition: edge drag at %g", i + u);
+		j = (int)info.other;
+		lo = i < j ? i : j;
+		for (int k = 0; k < NSEG; k++)
+			if (k != i && k != j)
+				bad += !same(q[k], q0[k], 10);
+		loft_quartic_eval(q0[lo], 2, 0, x0, d0, NULL);
+		loft_quartic_eval(q[lo], 2, 0, x1, d1, NULL);
+		bad += !same(x0, x1, 2) || !same(d0, d1, 2);
+		loft_quartic_eval(q0[lo + 1], 2, 1, x0, d0, NULL);
+		loft_quartic_eval(q[lo + 1], 2, 1, x1, d1, NULL);
+		bad += !same(x0, x1, 2) || !same(d0, d1, 2);
+		CHECK(bad == 0, "(b) curve edge drag at %g: %d changes outside",
+		    i + u, bad);
+		for (int k = lo; k <= lo + 1; k++)
+			for (int m = 0; m <= SAMPLES; m++) {
+				double dev[2];
+
+				loft_quartic_eval(q0[k], 2, (double)m / SAMPLES,
+				    x0, NULL, NULL);
+				loft_quartic_eval(q[k], 2, (double)m / SAMPLES,
+				    x1, NULL, NULL);
+				dev[0] = x1[0] - x0[0];
+				dev[1] = x1[1] - x0[1];
+				bad_d += !one_sign(dev, delta, 2, len);
+			}
+	}
+	CHECK(bad_d == 0, "(d) curve edge drags: %d samples off one sign",
+	    bad_d);
+	printf("curve drags: largest movement %.3g of the length for drags "
+	    "of 1e-3 of it; largest deviation at most %.3g from the dragged "
+	    "point\n", worst_a, worst_c);
+}
+
+static void
+test_drag_conditions_patch(void)
+{
+	enum { G = 40 };
+	struct loft_design d = { 0 };
+	struct region reg[4] = { { { 0, 1, 0, 1 } } };
+	struct loft_error err;
+	double b0[75], size, worst_a = 0, worst_c = 0;
+	int bad_b = 0, bad_d = 0;
+
+	hull_patch(b0);
+	size = loft_patch_size(b0, 3);
+	loft_design_new(&d, b0, 3, 1, &err);
+	split_tracked(&d, reg, 0, 0, 0.5);     /* 2 | 3 */
+	for (int n = 0; n < 100; n++) {
+		struct loft_design e = { 0 };
+		struct loft_drag_info info;
+		size_t i = (size_t)n % 2;
+		double u = rnd(EDGE, 1 - EDGE), v = rnd(EDGE, 1 - EDGE);
+		double delta[3], most = 0, mu = 0, mv = 0;
+
+		for (int k = 0; k < 3; k++)
+			delta[k] = rnd(-1, 1) * 1e-3 * size;
+		for (size_t k = 0; k < d.n; k++)
+			loft_design_new(&e, d.p[k].b, 3, d.p[k].id, &err);
+		CHECK(loft_design_drag(&e, i, u, v, delta, EDGE, &info, &err) ==
+		    0 && info.rule == LOFT_DRAG_CENTRAL,
+		    "patch condition: central drag at %g %g", u, v);
+		bad_b += !same(e.p[1 - i].b, d.p[1 - i].b, 75);
+		for (int m = 0; m <= 10; m++)
+			for (int ed = 0; ed < 4; ed++) {
+				double s = m / 10.0, x0[3], x1[3], g0[6], g1[6];
+				double eu = ed < 2 ? ed : s, ev = ed < 2 ? s : ed - 2;
+
+				loft_patch_eval(d.p[i].b, 3, eu, ev, x0, g0, g0 + 3);
+				loft_patch_eval(e.p[i].b, 3, eu, ev, x1, g1, g1 + 3);
+				bad_b += !same(x0, x1, 3) || !same(g0, g1, 6);
+			}
+		for (int a = 0; a <= G; a++)
+			for (int c = 0; c <= G; c++) {
+				double x0[3], x1[3], dev[3];
+
+				loft_patch_eval(d.p[i].b, 3, (double)a / G,
+				    (double)c / G, x0, NULL, NULL);
+				loft_patch_eval(e.p[i].b, 3, (double)a / G,
+				    (double)c / G, x1, NULL, NULL);
+				for (int k = 0; k < 3; k++)
+					dev[k] = x1[k] - x0[k];
+				bad_d += !one_sign(dev, delta, 3, size);
+				if (norm(dev, 3) > most) {
+					most = norm(dev, 3);
+					mu = (double)a / G;
+					mv = (double)c / G;
+				}
+			}
+		CHECK(most <= norm(delta, 3) / (h5(u) * h5(v)) * (1 + 1e-12) &&
+		    most <= 16.0 / 9 * 16.0 / 9 * norm(delta, 3) * (1 + 1e-12),
+		    "(a) patch: largest movement %g for a drag of %g", most,
+		    norm(delta, 3));
+		worst_a = fmax(worst_a, most / size);
+		worst_c = fmax(worst_c, fmax(fabs(mu - u), fabs(mv - v)));
+		loft_design_free(&e);
+	}
+	CHECK(worst_a <= 256.0 / 81 * sqrt(3) * 1e-3 * (1 + 1e-12),
+	    "(a) patch: largest movement %g of the size", worst_a);
+	CHECK(bad_b == 0, "(b) patch: %d changes on the rim or in the other "
+	    "patch", bad_b);
+	CHECK(worst_c <= C_DISTANCE + 1.0 / G, "(c) patch: largest deviation "
+	    "%g from the dragged point", worst_c);
+	CHECK(bad_d == 0, "(d) patch: %d samples off one sign", bad_d);
+	printf("patch drags: largest movement %.3g of the size for drags of "
+	    "1e-3 of it per coordinate; largest deviation at most %.3g from "
+	    "the dragged point per parameter\n", worst_a, worst_c);
+	loft_design_free(&d);
+}
+
 static void
 test_project(void)
 {
@@ -755,7 +1079,8 @@ rough_patch(double *b, const double *corner)
 		c[k] = corner[k] + rnd(-0.02, 0.02);
 	loft_patch_bilinear(c, 3, b);
 	for (int k = 2 * 5 * 3; k < 75; k++)   /* slopes, twists, (h) */
-		b[k] += rnd(-0.3, 0.3);
+		b[k] += k / 3 % 5 > 1 ? rnd(-0.3, 0.3) :
+		    rnd(-0.02, 0.02);  /* columns 0, 1: the edges v = 0, 1 */
 }
 
 static void
@@ -866,9 +1191,12 @@ main(void)
 	test_fig4();
 	test_fig5();
 	test_split_everywhere();
+	test_large_design();
 	test_drag_central();
 	test_drag_edge();
 	test_drag_curve();
+	test_drag_conditions_curve();
+	test_drag_conditions_patch();
 	test_project();
 	test_join();
 	test_coons();

@@ -26,15 +26,30 @@ for p in patchnew patchsplit patchdrag patchjoin; do
 done
 fails 2 "give four corners with -c" "$B/patchnew -c 0,0 -c 1,0 -c 0,1"
 fails 2 "want 2 numbers" "$B/patchnew -c 0,0 -c 1,0 -c 0,1 -c 1,1,1"
-fails 2 "-u '1.5': want a number between 0 and 1" \
+# malformed option syntax is a usage error (2); a number the method
+# cannot use is bad input (1), as in issue 4
+fails 2 "-u '0.5x' is not a number" "$B/patchsplit -u 0.5x /dev/null"
+fails 2 "usage: patchsplit" "$B/patchsplit -u"
+fails 2 "-i '2.5': want a whole number" "$B/patchsplit -i 2.5 -u 0.5 /dev/null"
+fails 1 "patchsplit: -u 1.5: want a number between 0 and 1, both excluded" \
     "$B/patchsplit -u 1.5 /dev/null"
-fails 2 "-v '0': want a number between 0 and 1" "$B/patchsplit -v 0 /dev/null"
+fails 1 "-v 0: want a number between 0 and 1" "$B/patchsplit -v 0 /dev/null"
+fails 1 "-v -0.5: want a number between 0 and 1" "$B/patchsplit -v -0.5 /dev/null"
 fails 2 "give -u t or -v t" "$B/patchsplit /dev/null"
 fails 2 "give one of -u and -v" "$B/patchsplit -u 0.5 -v 0.5 /dev/null"
 fails 2 "give -u, and one of -b and -t" "$B/patchdrag -u 0.5 /dev/null"
-fails 2 "-w '0,0,0': a direction cannot be zero" \
+fails 1 "patchdrag: -w 0,0,0: a direction cannot be zero" \
     "$B/patchdrag -u 0.5 -b 0,0,1 -w 0,0,0 /dev/null"
-fails 2 "give two different patches" "$B/patchjoin -P 1 -S 1 /dev/null"
+fails 1 "patchdrag: -e 0.7: want a reach from 0 to 0.5" \
+    "$B/patchdrag -e 0.7 -u 0.5 -b 0,0,1 /dev/null"
+fails 2 "-u 'half' is not a number" "$B/patchdrag -u half -b 0,0,1 /dev/null"
+fails 2 "-b 'x' is not a number" "$B/patchdrag -u 0.5 -b 0,0,x /dev/null"
+fails 2 "give the two patches with -P and -S" "$B/patchjoin -P 1 /dev/null"
+fails 2 "-S 'x': want a whole number" "$B/patchjoin -P 1 -S x /dev/null"
+fails 1 "patchnew: -i 0: want an id from 1 to 1000000000" \
+    "$B/patchnew -i 0 -c 0,0 -c 1,0 -c 0,1 -c 1,1"
+fails 2 "-i '1.5': want a whole number" \
+    "$B/patchnew -i 1.5 -c 0,0 -c 1,0 -c 0,1 -c 1,1"
 fails 2 "-f obj has none" "$B/sample -f obj -u /dev/null"
 fails 2 "want points or obj" "$B/sample -f stl /dev/null"
 
@@ -147,7 +162,7 @@ fails 1 "-b has 2 coordinates but the record has 3" \
     "$B/patchdrag -u 0.5 -v 0.5 -b 0,1 $T/hull.patch"
 fails 1 "patch 1: -v V is needed to drag a patch" \
     "$B/patchdrag -u 0.5 -b 0,0,1 $T/hull.patch"
-fails 1 "is on the patch's edge u0 (it has no neighbour that spans it)" \
+fails 1 "is on the patch's edge u0, which dragging keeps fixed (no neighbour across u0)" \
     "$B/patchdrag -u 0 -v 0.5 -b 0,0,1 $T/hull.patch"
 fails 1 "the input holds 2 records: name the one to drag with -i" \
     "$B/patchdrag -u 0.5 -v 0.5 -b 0,0,1 $T/two.patch"
@@ -155,6 +170,32 @@ fails 1 "no record with id 7 in the input" \
     "$B/patchdrag -i 7 -u 0.5 -v 0.5 -b 0,0,1 $T/two.patch"
 fails 1 "-u 2 -v 0.5 is outside the patch's parameter square" \
     "$B/patchdrag -u 2 -v 0.5 -b 0,0,1 $T/hull.patch"
+fails 1 "-u -0.5 -v 0.5 is outside the patch's parameter square" \
+    "$B/patchdrag -u -0.5 -v 0.5 -b 0,0,1 $T/hull.patch"
+fails 1 "no record with id 0 in the input" \
+    "$B/patchdrag -i 0 -u 0.5 -v 0.5 -b 0,0,1 $T/two.patch"
+fails 1 "no patch with id 0 in the input" "$B/patchsplit -i 0 -u 0.5 $T/two.patch"
+fails 1 "hull.patch:1: a patch cannot be joined to itself" \
+    "$B/patchjoin -P 1 -S 1 $T/hull.patch"
+# T-junctions (Fig. 5: 3's edge u0 holds 4 for v 0..0.5 and 5 for
+# 0.5..1): the central rule, only (hh) of the dragged patch changes
+# (row 5 of its record: line 6 of patch 4, line 20 of patch 3), and -V
+# says which side of the junction stops the edge rule
+$B/patchsplit -u 0.4 "$T/hull.patch" | $B/patchsplit -i 2 -v 0.5 >"$T/fig5.patch"
+run "$B/patchdrag -V -i 3 -u 0.1 -v 0.25 -b 0,0,0.1 $T/fig5.patch"
+status 0
+says "fig5.patch:15: patch 3: central rule (a T-junction on u0: neighbour 4 lies along v=0 to 0.5 of it, and the edge rule needs one along all of it)"
+diff "$T/fig5.patch" "$T/out" | grep -c '^[<>]' | grep -q '^2$' &&
+    [ "$(diff "$T/fig5.patch" "$T/out" | head -1)" = 20c20 ] && ok ||
+    no "T-junction drag of 3 changed more than (hh): $(diff "$T/fig5.patch" "$T/out")"
+run "$B/patchdrag -V -i 4 -u 0.9 -v 0.5 -b 0,0,0.1 $T/fig5.patch"
+status 0
+says "patch 4: central rule (a T-junction on u0 of neighbour 3: this patch lies along v=0 to 0.5 of it, and the edge rule would move 3's other neighbours there)"
+[ "$(diff "$T/fig5.patch" "$T/out" | head -1)" = 6c6 ] && ok ||
+    no "T-junction drag of 4 changed more than (hh): $(diff "$T/fig5.patch" "$T/out")"
+# across 4's whole edge v1 lies 5 and nothing else: the edge rule
+run "$B/patchdrag -V -i 4 -u 0.5 -v 0.9 -b 0,0,0.1 $T/fig5.patch"
+says "patch 4: edge rule across v1: patches 4 and 5 moved"
 # near an edge with a neighbour: both patches change, -V says so
 run "$B/patchdrag -V -i 2 -u 0.9 -v 0.5 -b 0,0,0.1 $T/two.patch"
 status 0
@@ -162,7 +203,7 @@ says "patch 2: edge rule across u1: patches 2 and 3 moved"
 [ "$(grep -c '^patch' "$T/out")" = 2 ] && ok || no "edge drag writes the design"
 cmp -s "$T/out" "$T/two.patch" && no "edge drag changed nothing" || ok
 run "$B/patchdrag -V -u 0.1 -v 0.5 -b 0,0,0.1 $T/hull.patch"
-says "central rule (near u0: no neighbour there)"
+says "patch 1: central rule (no neighbour across u0): (hh) moved by"
 # a fitted straight curve: the middle of its first segment (h) = (0.5, 0)
 # moves by (0, 1) / H5(1/2) = (0, 1): sampled at u = 1/2, (0.5, 1)
 printf '0 0\n1 0\n2 0\n' >"$T/line.knots"
