@@ -26,6 +26,7 @@ MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1 man/plot.1 \
           man/grade.1
 MAN5    = man/loft.5
+MAN7    = man/loft.7
 
 all: $(BINS) $(LIB)
 
@@ -68,12 +69,14 @@ figures: all
 install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
 	    $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/share/man/man1 \
-	    $(DESTDIR)$(PREFIX)/share/man/man5
+	    $(DESTDIR)$(PREFIX)/share/man/man5 \
+	    $(DESTDIR)$(PREFIX)/share/man/man7
 	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
 	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
 	cp lib/loft.h $(DESTDIR)$(PREFIX)/include/
 	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
+	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/
 
 clean:
 	rm -rf bin

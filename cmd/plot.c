@@ -1,8 +1,10 @@
 /*
  * plot: draw every record of the input as one SVG picture: curves as
  * paths (exact cubic Bezier segments for cubic records, sampled
- * polylines for other curve types), point records as polylines, knots as
- * markers, and on request curvature combs and end tangents.
+ * polylines for other curve types), surfaces as wireframes of
+ * iso-parameter lines, point records as polylines, knots as markers,
+ * and on request curvature combs, end tangents and Bezier control
+ * polygons.
  *
  * plot reads all its input before it writes: the picture's frame depends
  * on every record.  Bad records are reported and left out; the picture
@@ -41,10 +43,13 @@
 /* Kinds of stroke, in the order they are drawn (later on top). */
 enum kind {
 	K_COMB,         /* pairs: base point, projected curvature vector */
+	K_MESH,         /* a surface's inner iso-parameter line, thin */
 	K_LINE,         /* a polyline */
 	K_BEZIER,       /* four control points per cubic piece */
 	K_HANDLE,       /* pairs: end of a piece, end of its tangent / 3 */
+	K_NET,          /* a line of a Bezier control polygon or net (-b) */
 	K_MARKS,        /* knot markers of a point record (-m) */
+	K_CONTROL,      /* Bezier control point markers (-b) */
 	K_KNOTS,        /* knot markers from -K */
 	NKIND
 };
@@ -73,7 +78,8 @@ struct pic {
 	/* options */
 	enum view view;
 	long steps;             /* samples per piece for polylines and combs */
-	int comb, handles, marks;
+	long grid;              /* a surface's parameter intervals each way */
+	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
 	const char *label_key;
 	/* the picture */
@@ -99,8 +105,8 @@ struct doc {
 };
 
 static const char usage_text[] =
-    "usage: plot [-cmt] [-C scale] [-K file] [-l key] [-n steps] "
-    "[-v xy|yz|xz|iso] [file ...]\n";
+    "usage: plot [-bcmt] [-C scale] [-g lines] [-K file] [-l key] "
+    "[-n steps]\n            [-v xy|yz|xz|iso] [file ...]\n";
 
 /* Colours of records 0, 1, ... in turn; the -K knots are black. */
 static const char *const colours[] = {
@@ -511,6 +517,72 @@ draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
 	return 0;
 }
 
+/*
+ * A surface record as a wireframe: the iso-parameter lines u = j/g, then
+ * v = j/g, for j = 0..g (g of -g), each a polyline through steps + 1
+ * points at equal steps of the other parameter: with g = steps, the
+ * points sample -n steps writes.  The lines on the four edges are drawn
+ * as curves, those inside thin, so that in a design the patch boundaries
+ * stand out, as in MacCallum's Fig. 4.
+ */
+static int
+draw_surface(struct pic *pc, const struct loft_surface *sf, struct extent *e,
+    struct loft_error *err)
+{
+	double p[LOFT_MAXDIM], uv[2];
+
+	for (int dir = 0; dir < 2; dir++)
+		for (long j = 0; j <= pc->grid; j++) {
+			int edge = j == 0 || j == pc->grid;
+			struct stroke *s = new_stroke(pc, edge ? K_LINE : K_MESH,
+			    pc->nrec);
+
+			if (s == NULL)
+				return loft_fail(err, LOFT_ENOMEM, -1,
+				    "out of memory");
+			uv[dir] = (double)j / pc->grid;
+			for (long k = 0; k <= pc->steps; k++) {
+				uv[1 - dir] = (double)k / pc->steps;
+				loft_surface_eval(sf, uv[0], uv[1], p, NULL, NULL);
+				if (add_seen(pc, s, e, p, sf->dim, err) != 0)
+					return -1;
+			}
+		}
+	return 0;
+}
+
+/*
+ * -b: the control points of a record, nu rows of nv points, u-major (a
+ * bezier record is one row, a bezier-surface m + 1 rows of n + 1): the
+ * lines through them along each direction, its control polygon or net,
+ * and a marker at each.  They lie off the curve, so they widen the
+ * frame.
+ */
+static int
+add_control(struct pic *pc, const struct loft_record *rec, size_t nu,
+    size_t nv, struct extent *e, struct loft_error *err)
+{
+	for (int dir = 0; dir < 2; dir++) {
+		size_t nlines = dir ? nv : nu, npts = dir ? nu : nv;
+
+		for (size_t l = 0; npts > 1 && l < nlines; l++) {
+			struct stroke *s = new_stroke(pc, K_NET, pc->nrec);
+
+			if (s == NULL)
+				return loft_fail(err, LOFT_ENOMEM, -1,
+				    "out of memory");
+			for (size_t k = 0; k < npts; k++) {
+				size_t row = dir ? k * nv + l : l * nv + k;
+
+				if (add_seen(pc, s, e, rec->num +
+				    row * rec->ncols, rec->ncols, err) != 0)
+					return (err->row = (long)row), -1;
+			}
+		}
+	}
+	return add_marks(pc, rec, K_CONTROL, pc->nrec, e, err);
+}
+
 static int
 add_label(struct pic *pc, const struct loft_record *rec,
     const struct extent *e, struct loft_error *err)
@@ -546,20 +618,25 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	size_t npt = pc->npt, nst = pc->nst, nlb = pc->nlb;
 	double kmax = pc->kmax;
 	struct loft_curve c;
+	struct loft_surface sf;
 	struct extent e;
 	int rc;
 
 	box_empty(&e.box);
 	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
 		rc = draw_points(pc, rec, &e, err);
-	/*
-	 * Surfaces: when lib/surface.c lands, a record it recognises is
-	 * drawn here as a wireframe, its parameter lines added as K_LINE
-	 * strokes like add_sampled_piece's.  Until then plot draws the
-	 * point records that sample writes for them.
-	 */
-	else if ((rc = loft_curve_from_record(rec, &c, err)) == 0)
+	else if (loft_is_surface(rec)) {
+		if ((rc = loft_surface_from_record(rec, &sf, err)) == 0)
+			rc = draw_surface(pc, &sf, &e, err);
+		if (rc == 0 && pc->control &&
+		    strcmp(sf.type, "bezier-surface") == 0)
+			rc = add_control(pc, rec, (size_t)sf.m + 1,
+			    (size_t)sf.n + 1, &e, err);
+	} else if ((rc = loft_curve_from_record(rec, &c, err)) == 0) {
 		rc = draw_curve(pc, &c, &e, err);
+		if (rc == 0 && pc->control && strcmp(c.type, "bezier") == 0)
+			rc = add_control(pc, rec, 1, rec->nrows, &e, err);
+	}
 	if (rc == 0 && pc->label_key != NULL)
 		rc = add_label(pc, rec, &e, err);
 	if (rc != 0) {
@@ -719,7 +796,11 @@ draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
 	const double *p = pc->pt + 2 * s->first, *start = p;
 
-	path_open(d, "curve", s->rec, 0);
+	if (s->kind == K_MESH || s->kind == K_NET)
+		path_open(d, s->kind == K_MESH ? "mesh" : "control-polygon",
+		    s->rec, THIN_PX);
+	else
+		path_open(d, "curve", s->rec, 0);
 	out(d, " d=\"");
 	if (s->kind == K_BEZIER) {
 		for (size_t i = 0; i < s->n / 4; i++, p += 8) {
@@ -758,14 +839,21 @@ draw_handles(struct doc *d, const struct pic *pc, const struct stroke *s)
 	out(d, "\"/>\n");
 }
 
-/* Markers: small discs, each two half-circle arcs. */
+/* Markers: small discs, each two half-circle arcs; control points are
+ * open, white inside, so they are not taken for points on the curve. */
 static void
 draw_marks(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
 	double r = KNOT_PX * d->px, q[2];
 
-	out(d, "<path class=\"%s\" fill=\"%s\" stroke=\"none\" d=\"",
-	    s->kind == K_KNOTS ? "knots" : "points", colour(s->rec));
+	if (s->kind == K_CONTROL) {
+		path_open(d, "control-points", s->rec, THIN_PX);
+		out(d, " fill=\"#fff\" d=\"");
+	} else {
+		out(d, "<path class=\"%s\" fill=\"%s\" stroke=\"none\" "
+		    "d=\"", s->kind == K_KNOTS ? "knots" : "points",
+		    colour(s->rec));
+	}
 	for (size_t j = 0; j < s->n; j++) {
 		q[0] = pc->pt[2 * (s->first + j)] - r;
 		q[1] = pc->pt[2 * (s->first + j) + 1];
@@ -916,7 +1004,9 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 				continue;
 			switch (s->kind) {
 			case K_COMB: draw_comb(d, pc, s, scale); break;
+			case K_MESH:
 			case K_LINE:
+			case K_NET:
 			case K_BEZIER: draw_path(d, pc, s); break;
 			case K_HANDLE: draw_handles(d, pc, s); break;
 			default: draw_marks(d, pc, s); break;
@@ -961,7 +1051,7 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const views[] = { "xy", "yz", "xz", "iso", NULL };
-	struct pic pc = { .steps = 16 };
+	struct pic pc = { .steps = 16, .grid = 8 };
 	struct loft_run run = { .prog = "plot", .out = stdout, .msg = stderr,
 	    .handle = keep_record, .ctx = &pc };
 	struct doc d = { 0 };
@@ -969,13 +1059,16 @@ main(int argc, char *argv[])
 	char *knots = NULL;
 	int c, rc = 0, word, status;
 
-	while ((c = getopt(argc, argv, "cmtC:K:l:n:v:h")) != -1) {
+	while ((c = getopt(argc, argv, "bcmtC:g:K:l:n:v:h")) != -1) {
 		switch (c) {
+		case 'b': pc.control = 1; break;
 		case 'c': pc.comb = 1; break;
 		case 'm': pc.marks = 1; break;
 		case 't': pc.handles = 1; break;
 		case 'C': rc = loft_parse_real(optarg, 1e-300, 1e300,
 		    &pc.comb_scale, &err); pc.comb = 1; break;
+		case 'g': rc = loft_parse_int(optarg, 1, 10000, &pc.grid, &err);
+		    break;
 		case 'K': knots = optarg; break;
 		case 'l': pc.label_key = optarg; break;
 		case 'n': rc = loft_parse_int(optarg, 1, 10000, &pc.steps, &err);

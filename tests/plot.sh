@@ -388,6 +388,124 @@ says "plot: write error"
 run "$B/plot -K man/figures/insole.knots < /dev/null"
 status 0
 
+# ---- plot: surfaces and control points ----------------------------------
+# The bilinear patch through (0,0,0) (4,0,0) (0,3,0) (4,3,1) is
+# f(u,v) = (4u, 3v, uv) exactly (patchnew.1).  -g 2 -n 2: the lines
+# u = 0, 1/2, 1 and v = 0, 1/2, 1, three points each.  The inner ones
+# (mesh) come first: u = 1/2 is (2,0,0) (2,1.5,0.25) (2,3,0.5), v = 1/2
+# is (0,1.5,0) (2,1.5,0.25) (4,1.5,0.5); then the edges (curve):
+# u = 0, u = 1, v = 0, v = 1.  y is written negated.
+$B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 >"$T/bilin.patch"
+run "$B/plot -g 2 -n 2 $T/bilin.patch"
+status 0
+cp "$T/out" "$T/bilin.svg"
+svg_ok "$T/bilin.svg"
+[ "$(path_d mesh "$T/bilin.svg" | tr '\n' '|')" = \
+    "M2 0 L2 -1.5 L2 -3|M0 -1.5 L2 -1.5 L4 -1.5|" ] && ok ||
+    no "mesh of the bilinear patch: $(path_d mesh "$T/bilin.svg")"
+[ "$(path_d curve "$T/bilin.svg" | tr '\n' '|')" = \
+    "M0 0 L0 -1.5 L0 -3|M4 0 L4 -1.5 L4 -3|M0 0 L2 0 L4 0|M0 -3 L2 -3 L4 -3|" ] &&
+    ok || no "edges of the bilinear patch: $(path_d curve "$T/bilin.svg")"
+# -v xz: (4u, uv); u = 1/2 rises from 0 to 0.5, v = 1/2 from 0 to 0.5.
+run "$B/plot -g 2 -n 2 -v xz $T/bilin.patch"
+[ "$(path_d mesh "$T/out" | tr '\n' '|')" = \
+    "M2 0 L2 -0.25 L2 -0.5|M0 0 L2 -0.25 L4 -0.5|" ] && ok ||
+    no "mesh of the bilinear patch, -v xz: $(path_d mesh "$T/out")"
+# -g 1: the edges only.
+run "$B/plot -g 1 $T/bilin.patch"
+[ "$(grep -c 'class="mesh"' "$T/out") $(grep -c 'class="curve"' "$T/out")" = \
+    "0 4" ] && ok || no "-g 1 draws other than the 4 edges"
+
+# Every point of a wireframe is a point of sample's wireframe at the same
+# parameters, and every point of sample's is drawn (each path point
+# takes one sample point, so points that coincide in the view count
+# once each): a design of six
+# dragged patches, and the Bezier surface of the cylinder of Carriazo's
+# Example 4.1, each seen in x-y and x-z.  Coordinates are written to 1e-6
+# of a frame of a few units: 1e-5 apart at most.
+$B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 |
+    $B/patchdrag -u 0.5 -v 0.5 -b 0,0,1 | $B/patchsplit -v 0.4 |
+    $B/patchsplit -i 3 -v 0.5 | $B/patchsplit -u 0.3 >"$T/six.patch"
+$B/bezapprox -n 3,3 -x u -y 'cos(pi*v)' -z 'sin(pi*v)' >"$T/cyl.bez"
+for f in six.patch cyl.bez; do
+	$B/sample -n 4 "$T/$f" >"$T/$f.pts"
+	for v in xy xz; do
+		$B/plot -g 4 -n 4 -v $v "$T/$f" >"$T/$f-$v.svg"
+		svg_ok "$T/$f-$v.svg"
+		{ path_d mesh "$T/$f-$v.svg"; path_d curve "$T/$f-$v.svg"; } |
+		    awk -v v=$v '
+NR == FNR {
+	gsub(/[ML]/, " ")
+	m = split($0, w, " ")
+	for (i = 1; i < m; i += 2) { k++; px[k] = w[i]; py[k] = -w[i + 1] }
+	next
+}
+NF == 3 { r++; sx[r] = $1; sy[r] = v == "xy" ? $2 : $3 }
+END {
+	for (i = 1; i <= k; i++) {
+		for (j = 1; j <= r; j++)
+			if (!hit[j] &&
+			    (px[i] - sx[j]) ^ 2 + (py[i] - sy[j]) ^ 2 < 1e-10) {
+				hit[j] = 1; break }
+		if (j > r) { print "path point " px[i] " " py[i] " is not sampled"; exit 1 }
+	}
+	for (j = 1; j <= r; j++)
+		if (!hit[j]) { print "sample point " j " is not drawn"; exit 1 }
+	if (k != r || k == 0) { print k " points drawn, " r " sampled"; exit 1 }
+}' - "$T/$f.pts" >"$T/msg" && ok || no "wireframe of $f, -v $v: $(cat "$T/msg")"
+	done
+done
+[ "$(wc -l <"$T/six.patch.pts")" -ge 300 ] && ok || no "six patches sampled"
+
+# -b: the control points of a bezier record, at its rows: the paper's
+# parabola of Example 3.1, P1 = (5/8, 1/8) (P0 = (0,0), P2 = (1,1)).
+# A marker at (x, y) is "M x-r -y a r r ...": its centre is M's point
+# plus (r, 0).
+ctl_centres() {
+	path_d control-points "$1" | tr 'M' '\n' | awk 'NF {
+		x = $1 + substr($3, 2); y = $2 == 0 ? 0 : -$2
+		printf "%.6f %.6f\n", x, y }'
+}
+run "$B/bezapprox -n 2 -x t -y 't^2' | $B/plot -b"
+status 0
+cp "$T/out" "$T/parab.svg"
+svg_ok "$T/parab.svg"
+[ "$(ctl_centres "$T/parab.svg" | tr '\n' '|')" = \
+    "0.000000 0.000000|0.625000 0.125000|1.000000 1.000000|" ] && ok ||
+    no "control points of the parabola: $(ctl_centres "$T/parab.svg")"
+[ "$(path_d control-polygon "$T/parab.svg")" = "M0 0 L0.625 -0.125 L1 -1" ] &&
+    ok || no "control polygon: $(path_d control-polygon "$T/parab.svg")"
+# without -b, none; -b leaves other records alone
+run "$B/bezapprox -n 2 -x t -y 't^2' | $B/plot"
+grep -q 'class="control' "$T/out" && no "control points without -b" || ok
+run "$B/plot -b $T/seg.cubic $T/bilin.patch"
+grep -q 'class="control' "$T/out" && no "-b draws a cubic's or patch's" || ok
+# A bezier-surface: a marker at each of its 16 rows, in order, and the
+# net: 4 lines along v (rows i fixed), then 4 along u, 4 points each.
+$B/plot -b -v xz "$T/cyl.bez" >"$T/cyl.svg"
+svg_ok "$T/cyl.svg"
+ctl_centres "$T/cyl.svg" | awk '
+NR == FNR { x[FNR] = $1; y[FNR] = $2; n = FNR; next }
+NF == 3 { r++; if ((x[r] - $1) ^ 2 + (y[r] - $3) ^ 2 > 1e-10) bad = 1 }
+END { exit bad || n != 16 || r != 16 }' - "$T/cyl.bez" && ok ||
+    no "control points of the cylinder: $(ctl_centres "$T/cyl.svg" | head -3)"
+path_d control-polygon "$T/cyl.svg" | awk '{ n++; if (NF != 8) bad = 1 }
+END { exit bad || n != 8 }' && ok || no "control net of the cylinder: 8 lines"
+
+# Bad surfaces: reported, left out, the good ones drawn.
+{ cat "$T/bilin.patch"; printf '\npatch id=2\n1 2 3 4 5 6 7 8 9 10\n\n'
+  printf 'bezier-surface m=1\n0 0 0\n1 0 0\n'; } >"$T/badsurf"
+run "$B/plot $T/badsurf"
+status 1
+says "plot: $T/badsurf:9: patch record has 1 row; a patch has 5"
+says "plot: $T/badsurf:12: bezier-surface record without its degree n="
+[ "$(grep -c 'class="curve"' "$T/out")" = 4 ] && ok ||
+    no "good patch around bad surfaces: 4 edges"
+fails 2 "-g '0'" "$B/plot -g 0 $T/bilin.patch"
+fails 1 "coordinates too large to draw" \
+    "printf 'bezier-surface m=1 n=1\n-1.7e308 1.7e308 0\n0 0 0\n0 0 0\n0 0 0\n' |
+    $B/plot -v iso"
+
 # ---- grade: the formula by hand ----------------------------------------
 # The rectangle: L = 100 long (x), W = 40 wide (y), heel point (0,0), the
 # first knot of smallest x.  -l 10 -w 2: x' = x + x k 10/100,
@@ -510,7 +628,7 @@ for f in man/figures/*.svg; do
 	cmp -s "$f" "$g" && ok ||
 	    no "$f differs from what the programs make now (make figures)"
 done
-[ "$n" -ge 22 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
+[ "$n" -ge 42 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
     no "$n figures committed, $(ls "$T/figures/"*.svg | wc -l) made"
 
 echo "plot: $pass passed, $fail failed"
