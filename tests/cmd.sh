@@ -3,7 +3,7 @@
 # tree.  Expected outputs are derived by hand in the comments; the last
 # line is "cmd: N passed, M failed".
 
-B=bin
+B=${LOFT_BIN:-bin}      # check-valgrind runs the programs through wrappers
 T=bin/test/cmd
 rm -rf "$T" && mkdir -p "$T" || exit 2
 pass=0

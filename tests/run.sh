@@ -25,5 +25,6 @@ suite() {
 suite bin/test/unit
 suite bin/test/paper man/figures/insole.knots
 suite sh tests/cmd.sh
+suite sh tests/bad.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
