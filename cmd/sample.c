@@ -81,6 +81,7 @@ sample_record(struct loft_run *run, const struct loft_record *rec,
 	return 0;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -114,3 +115,4 @@ bad:
 	fprintf(stderr, "sample: -%c %s\n", c, err.msg);
 	usage(2);
 }
+#endif

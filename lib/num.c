@@ -198,8 +198,13 @@ loft_format_num(char *buf, double x, int digits)
 
 	if (x == 0)
 		x = 0;          /* minus zero prints as 0 */
-	if (digits > 0)
-		return snprintf(buf, LOFT_NUMBUF, "%.*g", digits, x);
+	if (digits > 0) {
+		len = snprintf(buf, LOFT_NUMBUF, "%.*g", digits, x);
+		/* rounding may pass the largest double, and such text would
+		 * not read back: those few numbers go out lossless */
+		if (fabs(x) < 1e308 || isfinite(strtod(buf, NULL)))
+			return len;
+	}
 	for (int d = DBL_DIG; d < 17; d++) {
 		len = snprintf(buf, LOFT_NUMBUF, "%.*g", d, x);
 		if (strtod(buf, NULL) == x) {

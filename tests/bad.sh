@@ -48,7 +48,8 @@ valid() {
 		for (i = 1; i <= NF; i++) {
 			if ($i !~ /^-?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/)
 				bad("not a finite number: " substr($i, 1, 30))
-			if (match($i, /[eE][-+]?[0-9]+$/) && substr($i, RSTART + 1) + 0 > 308)
+			x = $i + 0
+			if (x != 0 && x == 2 * x)
 				bad("not finite: " $i)
 		}
 		if (cols < 0) cols = NF
@@ -625,6 +626,13 @@ sample_cases() {
 	bad "coefficients near the largest double" 2 "overflows"
 	printf 'cubic\n1e-320 0 2e-320 0 0 1e-320 0 -1e-320\n' >"$T/case"
 	sane "subnormal coefficients"
+	# found by fuzzing: -p rounded the largest double up to 1.8e+308,
+	# which no program reads back
+	opts -p 2
+	printf 'cubic\n1.7976931348623157e308 0 1.7976931348623157e308 0 0 0 0 0\n' \
+	    >"$T/case"
+	good "-p 2 and the largest double"
+	opts
 	printf 'cubic\n0 0 1 0 0 0 1 0\n' >"$T/case"
 	good "a zero end tangent"
 	opts -d -k -u
