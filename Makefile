@@ -132,7 +132,7 @@ fuzz:
 	for f in $(FUZZERS); do \
 	    mkdir -p bin/fuzz/corpus/$$f && \
 	    echo "fuzz: $$f for $(FUZZ_SECONDS) s" && \
-	    bin/fuzz/$$f -max_total_time=$(FUZZ_SECONDS) \
+	    bin/fuzz/$$f -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
 	        -dict=tests/fuzz/loft.dict -artifact_prefix=bin/fuzz/$$f- \
 	        -print_final_stats=1 \
 	        bin/fuzz/corpus/$$f tests/fuzz/corpus/$$f 2>bin/fuzz/$$f.log; \
