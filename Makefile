@@ -83,3 +83,88 @@ clean:
 
 .PHONY: all check bench demo figures install clean
 .SECONDARY:
+
+# ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------
+# Each covers the programs in PROGS and the harnesses in FUZZERS.
+
+# make check-san: the whole of make check, built with AddressSanitizer and
+# UndefinedBehaviorSanitizer in a copy of the tree under bin/san (its
+# objects never mix with the normal build).  Reports go to bin/san/log;
+# any report fails the target, even one from a run whose test passed.
+SAN_CFLAGS = -O1 -g -fno-omit-frame-pointer \
+             -fsanitize=address,undefined,float-cast-overflow \
+             -fno-sanitize-recover=all
+SAN_DIR = bin/san
+
+check-san:
+	rm -rf $(SAN_DIR) && mkdir -p $(SAN_DIR)/log
+	cp -R Makefile lib cmd tests man $(SAN_DIR)/
+	@(cd $(SAN_DIR) && \
+	    ASAN_OPTIONS=log_path=$(CURDIR)/$(SAN_DIR)/log/asan:detect_leaks=1 \
+	    UBSAN_OPTIONS=log_path=$(CURDIR)/$(SAN_DIR)/log/ubsan:print_stacktrace=1 \
+	    $(MAKE) CC="$(CC)" CFLAGS="$(SAN_CFLAGS)" check); rc=$$?; \
+	if ls $(SAN_DIR)/log | grep -q .; then head -60 $(SAN_DIR)/log/*; \
+	    echo "check-san: sanitizer reports in $(SAN_DIR)/log"; exit 1; fi; \
+	[ $$rc -eq 0 ] && echo "check-san: no sanitizer reports"; exit $$rc
+
+# make check-valgrind: the test suites with every program in PROGS run by
+# memcheck (tests/*.sh call the programs through $LOFT_BIN); any error or
+# leak in a program's log fails the target.  Skipped without valgrind.
+VALGRIND = valgrind
+VG_DIR  = bin/vg
+VG_OPTS = -q --error-exitcode=99 --leak-check=full \
+          --errors-for-leak-kinds=definite,indirect,possible \
+          --show-leak-kinds=definite,indirect,possible
+
+check-valgrind: all $(TESTS)
+	@if ! command -v $(VALGRIND) >/dev/null 2>&1; then \
+	    echo "check-valgrind: skipped: no $(VALGRIND) on PATH"; exit 0; fi; \
+	rm -rf $(VG_DIR) && mkdir -p $(VG_DIR)/log && \
+	for p in $(PROGS); do \
+	    printf '#!/bin/sh\nexec %s %s --log-file=%s/%%p.%s "%s" "$$@"\n' \
+	        "$(VALGRIND)" "$(VG_OPTS)" "$(CURDIR)/$(VG_DIR)/log" "$$p" \
+	        "$(CURDIR)/bin/$$p" >$(VG_DIR)/$$p && chmod +x $(VG_DIR)/$$p \
+	        || exit 1; \
+	done; \
+	LOFT_BIN=$(VG_DIR) LOFT_BIG_KNOTS=20000 sh tests/run.sh; rc=$$?; \
+	bad=$$(find $(VG_DIR)/log -type f -size +0 | wc -l); \
+	if [ "$$bad" -gt 0 ]; then cat $$(find $(VG_DIR)/log -type f -size +0); \
+	    echo "check-valgrind: $$bad runs with memcheck errors"; exit 1; fi; \
+	echo "check-valgrind: $$(ls $(VG_DIR)/log | wc -l) program runs," \
+	    "no memcheck errors"; exit $$rc
+
+# make fuzz FUZZ_SECONDS=N: each libFuzzer harness of tests/fuzz for N
+# seconds in one process (one core), starting from its corpus tests/fuzz/corpus/NAME;
+# what it learns goes to bin/fuzz/corpus/NAME, crashes to bin/fuzz/.
+# Needs clang (-fsanitize=fuzzer); skipped without it.
+FUZZ_CC      = clang
+FUZZ_SECONDS = 60
+FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
+               -fsanitize=fuzzer,address,undefined,float-cast-overflow \
+               -fno-sanitize-recover=all -Wno-unused-function
+FUZZERS = stream splinefit sample
+LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
+
+bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \
+    lib/internal.h $(PROGS:%=cmd/%.c)
+	@mkdir -p bin/fuzz
+	$(FUZZ_CC) $(LOFT_CFLAGS) $(FUZZ_CFLAGS) -o $@ $< $(LIBSRC) $(LDLIBS)
+
+fuzz:
+	@if ! command -v $(FUZZ_CC) >/dev/null 2>&1; then \
+	    echo "fuzz: skipped: no $(FUZZ_CC) for -fsanitize=fuzzer"; exit 0; fi; \
+	$(MAKE) $(FUZZERS:%=bin/fuzz/%) || exit 1; \
+	for f in $(FUZZERS); do \
+	    mkdir -p bin/fuzz/corpus/$$f && \
+	    echo "fuzz: $$f for $(FUZZ_SECONDS) s" && \
+	    bin/fuzz/$$f -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	        -dict=tests/fuzz/loft.dict -artifact_prefix=bin/fuzz/$$f- \
+	        -print_final_stats=1 \
+	        bin/fuzz/corpus/$$f tests/fuzz/corpus/$$f 2>bin/fuzz/$$f.log; \
+	    rc=$$?; grep -E '^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss)' \
+	        bin/fuzz/$$f.log; \
+	    if [ $$rc -ne 0 ]; then tail -40 bin/fuzz/$$f.log; \
+	        echo "fuzz: $$f failed: see bin/fuzz/$$f.log"; exit 1; fi; \
+	done
+
+.PHONY: check-san check-valgrind fuzz

@@ -230,6 +230,7 @@ sample_record(struct loft_run *run, const struct loft_record *rec,
 	return o->obj ? mesh(run, rec, &s, err) : wireframe(run, &s, err);
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -273,3 +274,4 @@ bad:
 	fprintf(stderr, "sample: -%c %s\n", c, err.msg);
 	usage(2);
 }
+#endif

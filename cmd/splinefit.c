@@ -182,6 +182,7 @@ parse_vector(int c, const char *arg, double *v, int *have, int *dim)
 	*have = 1;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -232,3 +233,4 @@ main(int argc, char *argv[])
 	free(o.other);
 	return status;
 }
+#endif

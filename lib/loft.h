@@ -82,7 +82,8 @@ int loft_parse_word(const char *s, const char *const *words, int *i,
 /*
  * Format x into buf (at least LOFT_NUMBUF bytes) and return the length.
  * digits == 0 writes the shortest text that reads back to the same double
- * (lossless); digits 1..17 rounds to that many significant digits.
+ * (lossless); digits 1..17 rounds to that many significant digits,
+ * except where that would round past the largest double (then lossless).
  * Minus zero is written as 0.  x must be finite.
  */
 #define LOFT_NUMBUF 32

@@ -290,7 +290,7 @@ int
 loft_format_num(char *buf, double x, int digits)
 {
 	uint64_t d;
-	int e, rc, sign = 0;
+	int e, n, rc, sign = 0;
 
 	if (x == 0 || !isfinite(x)) {
 		if (x == 0)
@@ -304,7 +304,13 @@ loft_format_num(char *buf, double x, int digits)
 	rc = digits > 0 ? loft__round_digits(x, digits, &d, &e) :
 	    loft__shortest(x, &d, &e);
 	if (rc != 0)
-		return sign + format_slow(buf + sign, x, digits);
-	return sign + loft__decimal_text(buf + sign, d, e, digits > 0 ? digits :
-	    17);
+		n = format_slow(buf + sign, x, digits);
+	else
+		n = loft__decimal_text(buf + sign, d, e, digits > 0 ? digits :
+		    17);
+	/* rounding may carry a number near the largest double past it, and
+	 * such text would not read back: those few go out lossless */
+	if (digits > 0 && x >= 1e308 && !isfinite(strtod(buf + sign, NULL)))
+		return loft_format_num(buf, sign ? -x : x, 0);
+	return sign + n;
 }

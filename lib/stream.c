@@ -14,6 +14,14 @@
 
 #include "internal.h"
 
+/*
+ * Most attributes in one header.  Each new key is checked against those
+ * before it, so the bound keeps a header's cost linear in its length (a
+ * 1 MB header of 100000 attributes took seconds); the record types use a
+ * handful.
+ */
+#define MAX_ATTR 64
+
 struct loft_reader {
 	FILE *fp;
 	const char *name;
@@ -226,6 +234,11 @@ parse_header(struct loft_reader *rd, struct loft_record *rec,
 		if (loft_attr(rec, key) != NULL)
 			return bad_line(rd, err, "attribute '%.*s' given twice",
 			    key, (int)klen);
+		if (rec->nattr == MAX_ATTR) {
+			err->line = rd->lineno;
+			return loft_fail(err, LOFT_EINPUT, -1, "too many "
+			    "attributes (at most %d)", MAX_ATTR);
+		}
 		if (loft__grow((void **)&rec->attr, &rec->attrcap,
 		    rec->nattr + 1, sizeof *rec->attr) != 0)
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");

@@ -2,7 +2,7 @@
 # set T (their scratch directory).  Each assertion counts a pass or a
 # failure; finish prints the suite's "NAME: N passed, M failed" line.
 
-B=bin
+B=${LOFT_BIN:-bin}      # check-valgrind runs the programs through wrappers
 rm -rf "$T" && mkdir -p "$T" || exit 2
 pass=0
 fail=0
