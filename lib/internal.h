@@ -138,4 +138,8 @@ double loft__h5(double u);
  * H5(a + b x): the restriction of the bump to a piece of it. */
 void loft__bump(double a, double b, double *coef);
 
+/* patch.c: 0, or LOFT_EINPUT with err filled, unless rec has the five
+ * rows of 10 or 15 numbers of a patch. */
+int loft__patch_shape(const struct loft_record *rec, struct loft_error *err);
+
 #endif

@@ -381,6 +381,18 @@ find_link(const struct loft_patch *p, long id, int *e, size_t *k)
 	return 0;
 }
 
+int
+loft__patch_shape(const struct loft_record *rec, struct loft_error *err)
+{
+	if (rec->nrows != 5)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch record has %zu "
+		    "row%s; a patch has 5", rec->nrows, rec->nrows == 1 ? "" :
+		    "s");
+	if (rec->ncols != 10 && rec->ncols != 15)
+		return loft_fail(err, LOFT_EINPUT, 0, "patch rows need 10 or 15 "
+		    "numbers, not %d", rec->ncols);
+	return 0;
+}
 /* Parse one item of a neighbour list, "id" or "id:a:b", into l. */
 static int
 parse_item(const char *s, size_t len, struct loft_link *l,
@@ -483,13 +495,8 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 
 	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
-	if (rec->nrows != 5)
-		return loft_fail(err, LOFT_EINPUT, -1, "patch record has %zu "
-		    "row%s; a patch has 5", rec->nrows, rec->nrows == 1 ? "" :
-		    "s");
-	if (rec->ncols != 10 && rec->ncols != 15)
-		return loft_fail(err, LOFT_EINPUT, 0, "patch rows need 10 or 15 "
-		    "numbers, not %d", rec->ncols);
+	if (loft__patch_shape(rec, err) != 0)
+		return LOFT_EINPUT;
 	if ((v = loft_attr(rec, "id")) == NULL)
 		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
 	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)

@@ -23,13 +23,8 @@ static int
 check_patch(const struct loft_record *rec, struct loft_surface *s,
     struct loft_error *err)
 {
-	if (rec->nrows != 5)
-		return loft_fail(err, LOFT_EINPUT, -1, "patch record has %zu "
-		    "row%s; a patch has 5", rec->nrows, rec->nrows == 1 ? "" :
-		    "s");
-	if (rec->ncols != 10 && rec->ncols != 15)
-		return loft_fail(err, LOFT_EINPUT, 0, "patch rows need 10 or 15 "
-		    "numbers, not %d", rec->ncols);
+	if (loft__patch_shape(rec, err) != 0)
+		return LOFT_EINPUT;
 	s->dim = rec->ncols / 5;
 	s->m = s->n = 4;
 	return 0;
