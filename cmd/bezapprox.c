@@ -329,6 +329,7 @@ run_expr(struct opts *o, struct loft_run *run)
 	return status;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -373,3 +374,4 @@ main(int argc, char *argv[])
 	}
 	return run_expr(&o, &run);
 }
+#endif

@@ -195,6 +195,7 @@ parse_sizes(const char *s, struct opts *o)
 	    o->from > o->to ? -1 : 0;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -242,3 +243,4 @@ main(int argc, char *argv[])
 	}
 	return loft_run_files(&run, argc - optind, argv + optind);
 }
+#endif

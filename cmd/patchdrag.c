@@ -275,6 +275,7 @@ parse_number(int c, const char *arg)
 	return x;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -316,3 +317,4 @@ main(int argc, char *argv[])
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    drag_design);
 }
+#endif

@@ -74,6 +74,7 @@ join_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	return rc;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -109,3 +110,4 @@ main(int argc, char *argv[])
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    join_design);
 }
+#endif

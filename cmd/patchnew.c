@@ -64,6 +64,14 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 	struct loft_curve c;
 	int dim = 0;
 
+	for (size_t i = 0; i < n; i++) {
+		/* a bad curve gets its line before the count is judged */
+		err.line = 0;
+		if (loft_curve_from_record(&recs[i], &c, &err) != 0) {
+			loft_report(run, &recs[i], &err);
+			return 1;
+		}
+	}
 	if (n != 4) {
 		fprintf(run->msg, "patchnew: -b wants 4 curve records (v=0, "
 		    "v=1, u=0, u=1), not %zu\n", n);
@@ -132,6 +140,7 @@ from_corners(struct loft_run *run)
 	return status;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -196,3 +205,4 @@ main(int argc, char *argv[])
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    from_curves);
 }
+#endif

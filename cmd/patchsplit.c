@@ -102,6 +102,7 @@ parse_t(int c, const char *arg, struct opts *o)
 	o->dir = c == 'u' ? 0 : 1;
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -140,3 +141,4 @@ bad:
 	fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
 	usage(2);
 }
+#endif

@@ -39,6 +39,9 @@
  * 1/1600 of a pixel: below anything a screen or printer shows, yet short
  * text. */
 #define RESOLUTION 1e-6
+/* Decimals of a coordinate at most: the smallest subnormal, 4.9e-324,
+ * at RESOLUTION of itself, needs 330. */
+#define MAX_DECIMALS 340
 
 /* Kinds of stroke, in the order they are drawn (later on top). */
 enum kind {
@@ -943,7 +946,7 @@ static int
 write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 {
 	struct box b = pc->box;
-	double w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2],
+	double w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2], dec,
 	    vb[4];
 
 	/* the comb's scale, from the curves' extent, and its teeth's tips */
@@ -980,9 +983,9 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
 		    "to frame");
 	d->px = big / PICTURE_PX;
-	d->decimals = (int)ceil(-log10(RESOLUTION * big));
-	if (d->decimals < 0)
-		d->decimals = 0;
+	/* a subnormal drawing: RESOLUTION * big underflows to 0 */
+	dec = ceil(-log10(RESOLUTION * big));
+	d->decimals = dec > 0 ? (int)fmin(dec, MAX_DECIMALS) : 0;
 
 	out(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
@@ -1047,6 +1050,7 @@ free_pic(struct pic *pc)
 	free(pc->st);
 }
 
+#ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
 {
@@ -1103,3 +1107,4 @@ main(int argc, char *argv[])
 	free_pic(&pc);
 	return status;
 }
+#endif

@@ -277,6 +277,9 @@ sample_curve(const struct loft_pcurve *a, const struct rule *r, double *ap,
 	if (!(len > 0))
 		return loft_fail(err, LOFT_EGEOM, -1, "the curve is a single "
 		    "point");
+	if (!isfinite(len))     /* else every derivative would seem to vanish */
+		return loft_fail(err, LOFT_EINPUT, -1, "the curve is too "
+		    "large: its length overflows");
 	*speed = len;
 	return 0;
 }

@@ -451,7 +451,7 @@ loft_record_copy(struct loft_record *dst, const struct loft_record *src)
 		/* the header text: type and attributes, NUL-separated */
 		tlen = src->nattr > 0 ? (size_t)(src->attr[src->nattr - 1].val -
 		    src->text) + strlen(src->attr[src->nattr - 1].val) + 1 :
-		    strlen(src->type) + 1;
+		    (size_t)(src->type - src->text) + strlen(src->type) + 1;
 	}
 	if (loft__grow((void **)&dst->text, &dst->textcap, tlen + 1, 1) != 0 ||
 	    loft__grow((void **)&dst->attr, &dst->attrcap, src->nattr + 1,
@@ -469,8 +469,11 @@ loft_record_copy(struct loft_record *dst, const struct loft_record *src)
 		dst->attr[i].val = dst->text + (src->attr[i].val - src->text);
 	}
 	dst->nattr = src->nattr;
-	memcpy(dst->num, src->num, nnum * sizeof *dst->num);
-	memcpy(dst->rowline, src->rowline, src->nrows * sizeof *dst->rowline);
+	if (nnum > 0)           /* a record of no rows may have no arrays */
+		memcpy(dst->num, src->num, nnum * sizeof *dst->num);
+	if (src->nrows > 0)
+		memcpy(dst->rowline, src->rowline, src->nrows *
+		    sizeof *dst->rowline);
 	dst->nrows = src->nrows;
 	dst->ncols = src->ncols;
 	dst->line = src->line;

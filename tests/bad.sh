@@ -12,7 +12,20 @@
 #   P_cases                  P's own cases: what its records mean
 # The stream cases (numbers, headers, lines, bytes, files, output
 # failures) are made from P's good records, so covering a new program is
-# writing those three functions and adding its name to PROGS.
+# writing those three functions and adding its name to PROGS.  Two
+# variables say more where P is not a filter of independent records:
+#   P_kind=design    P takes its whole input as one design, written whole
+#                    or not at all (loft.5, Designs): a bad record among
+#                    good ones leaves standard output empty.  P_good 1
+#                    and 2 need only be good together; a good case takes
+#                    record 1's place, before record 2.
+#   P_kind=document  P writes one document of all its input (plot): a
+#                    bad record among good ones leaves the picture of the
+#                    good ones.
+#   P_empty=MESSAGE  an input with no records is an error: exit 1 and
+#                    this message (by default: exit 0, silent, no output).
+#   P_opts=OPTIONS   the options of the stream cases and output failures,
+#                    for a program that needs some.
 #
 # Each case is put between P's good records 1 and 2 (the "sandwich") and
 # the whole checked: the exit status, one message "P: FILE:LINE: ..."
@@ -24,7 +37,9 @@ B=${LOFT_BIN:-bin}              # check-valgrind runs the programs through wrapp
 BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
-PROGS="splinefit sample"
+PROGS="splinefit sample bezapprox grade patchnew patchsplit patchdrag \
+    patchjoin plot"
+DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 rm -rf "$T" && mkdir -p "$T" || exit 2
 pass=0
@@ -38,6 +53,7 @@ no() { fail=$((fail + 1)); printf 'FAIL %s: %s\n' "$P" "$*" >&2; }
 # strict finite decimals with one count per record, then one blank line.
 valid() {
 	[ ! -s "$1" ] && return 0
+	[ "$KIND" = document ] && { svg_valid "$1"; return; }
 	[ -z "$(tail -c 1 "$1")" ] || { echo "no final newline"; return 1; }
 	awk '
 	function bad(what) { print "line " NR ": " what; failed = 1; exit 1 }
@@ -59,6 +75,18 @@ valid() {
 	END { if (!failed && inrec) bad("record not ended by a blank line") }' "$1"
 }
 
+# svg_valid FILE: one whole SVG document, each element on a line, no NaN
+# or infinity outside the labels' text.
+svg_valid() {
+	awk '
+	function bad(what) { print "line " NR ": " what; failed = 1; exit 1 }
+	NR == 1 && !/^<\?xml / { bad("not an XML declaration") }
+	!/^</ { bad("a line that is not an element") }
+	!/^<text/ && tolower($0) ~ /nan|inf/ { bad("NaN or infinity: " substr($0, 1, 60)) }
+	{ last = $0 }
+	END { if (!failed && last != "</svg>") bad("no </svg> at the end") }' "$1"
+}
+
 # run ARGS...: P_run with $OPTS on ARGS, keeping stdout, stderr, status
 run() {
 	what="$tc"
@@ -76,9 +104,21 @@ says() {
 quiet() {
 	[ ! -s "$T/err" ] && ok || no "$what: stderr: $(head -3 "$T/err" | cut -c1-200)"
 }
+# notes: standard error without the closing notes of a design program
+# (it wrote nothing) and of plot (nothing left to draw)
+notes() {
+	case $KIND in
+	design) grep -a -v -F -x "$P: $DESIGN_NOTE" ;;
+	document) grep -a -v -F -x "$P: nothing to draw" ;;
+	*) cat ;;
+	esac
+}
+
 # one message, in the form "P: FILE:LINE: ..."
+# (a design program may add that it wrote nothing)
 message_at() {
-	[ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^$P: $1:$2: ." "$T/err" &&
+	notes <"$T/err" >"$T/err1"
+	[ "$(wc -l <"$T/err1")" -eq 1 ] && grep -q "^$P: $1:$2: ." "$T/err1" &&
 	    ok || no "$what: want one message at $1:$2, got: $(head -3 "$T/err" |
 	    cut -c1-200)"
 }
@@ -93,12 +133,15 @@ out_valid() {
 # ---- the sandwich --------------------------------------------------------
 
 # opts [OPTIONS]: the options of the cases that follow; makes the good
-# records' expected outputs under them.
+# records' expected outputs under them: o1, o2 of each alone (not for a
+# design), o12 of both in one input; "around" is what a bad thing
+# between them leaves.
 opts() {
 	OPTS=$*
 	for k in 1 2; do
-		tc="good record $k (options '$OPTS')"
 		"${P}_good" $k >"$T/g$k"
+		[ "$KIND" = design ] && continue
+		tc="good record $k (options '$OPTS')"
 		run "$T/g$k"
 		status 0
 		quiet
@@ -107,6 +150,19 @@ opts() {
 		cp "$T/out" "$T/o$k"
 	done
 	n1=$(wc -l <"$T/g1")
+	{ cat "$T/g1"; echo; cat "$T/g2"; } >"$T/g12"
+	tc="good records 1 and 2 (options '$OPTS')"
+	run "$T/g12"
+	status 0
+	quiet
+	out_valid
+	[ -s "$T/out" ] && ok || no "$what: no output"
+	cp "$T/out" "$T/o12"
+	case $KIND in
+	records) cat "$T/o1" "$T/o2" >"$T/around" ;;
+	document) cp "$T/o12" "$T/around" ;;
+	design) : >"$T/around"; : >"$T/o1" ;;
+	esac
 }
 
 # sandwich CASEFILE: good record 1, the case, good record 2, into $T/in.
@@ -118,34 +174,66 @@ sandwich() {
 # bad NAME LINE [MESSAGE]: the case in $T/case is a bad record with its
 # error on its line LINE: exit 1, one message there, the good records'
 # output unchanged around it.
+# For a design the case takes good record 1's place (the records of a
+# design, patchnew's four curves say, need not stand alone).
 bad() {
 	tc=$1
-	sandwich "$T/case"
+	if [ "$KIND" = design ] && [ -z "$AMONG" ]; then
+		design_sandwich "$T/case"
+		at=$2
+	else
+		sandwich "$T/case"
+		at=$((n1 + 1 + $2))
+	fi
 	run "$T/in"
 	status 1
-	message_at "$T/in" $((n1 + 1 + $2))
+	message_at "$T/in" "$at"
 	[ -n "$3" ] && says "$3"
-	cat "$T/o1" "$T/o2" >"$T/want"
-	out_is "$T/want"
+	out_is "$T/around"
 }
 
 # same NAME: the case in $T/case reads as the record in $T/ref does.
 same() {
 	tc=$1
-	run "$T/ref"
-	status 0
-	cat "$T/o1" "$T/out" "$T/o2" >"$T/want"
-	sandwich "$T/case"
+	if [ "$KIND" = records ]; then
+		run "$T/ref"
+		status 0
+		cat "$T/o1" "$T/out" "$T/o2" >"$T/want"
+		sandwich "$T/case"
+	else
+		"${KIND}_sandwich" "$T/ref"
+		run "$T/in"
+		status 0
+		cp "$T/out" "$T/want"
+		"${KIND}_sandwich" "$T/case"
+	fi
 	run "$T/in"
 	status 0
 	quiet
 	out_is "$T/want"
 }
 
+# design_sandwich CASEFILE: the case in good record 1's place, then good
+# record 2, into $T/in; document_sandwich is the sandwich.
+design_sandwich() {
+	{ cat "$1"; echo; cat "$T/g2"; } >"$T/in"
+}
+document_sandwich() { sandwich "$@"; }
+
 # good NAME: the case in $T/case is good: exit 0, no message, its output
 # whole between the good records' (records are independent).
 good() {
 	tc=$1
+	if [ "$KIND" = design ]; then
+		design_sandwich "$T/case"
+		run "$T/in"
+		status 0
+		quiet
+		out_valid
+		[ -s "$T/out" ] && ok || no "$what: no output"
+		cp "$T/out" "$T/caseout"
+		return
+	fi
 	run "$T/case"
 	status 0
 	quiet
@@ -156,7 +244,12 @@ good() {
 	sandwich "$T/case"
 	run "$T/in"
 	status 0
-	out_is "$T/want"
+	if [ "$KIND" = records ]; then
+		out_is "$T/want"
+	else
+		quiet
+		out_valid
+	fi
 }
 
 # sane NAME: the case in $T/case either works (as in good) or fails with
@@ -168,7 +261,7 @@ sane() {
 		good "$1"
 	else
 		status 1
-		grep -q "^$P: $T/case:[0-9]*: [a-z0-9]" "$T/err" && ok ||
+		grep -q "^$P: $T/case:[0-9]*: [a-zA-Z0-9]" "$T/err" && ok ||
 		    no "$what: fails without a message: $(head -2 "$T/err")"
 		out_valid
 	fi
@@ -183,20 +276,34 @@ mutate() {
 
 # ---- the stream cases every program gets --------------------------------
 
+# rowmsg TEXT: what a bad count of numbers in the last row of good record
+# 1 is called: TEXT, or where that row is its record's only one (P_onerow
+# set), the record type's own message "... rows need N numbers, not M".
+rowmsg() {
+	eval "[ -z \"\${${P}_onerow}\" ]" && echo "$1" || echo "rows need"
+}
+
 stream_cases() {
-	opts
+	eval "opts \${${P}_opts}"
 
 	# empty input, only comments, only blank lines: nothing to say
 	for c in '' '# a comment\n#\n' '\n\n\n' ' \t \n\f\n\v\r\n' '#' ; do
 		tc="input '$c'"
 		printf "$c" >"$T/case"
 		run "$T/case"
-		status 0
-		quiet
+		eval "empty=\${${P}_empty}"
+		if [ -z "$empty" ]; then
+			status 0
+			quiet
+		else
+			status 1
+			[ "$(cat "$T/err")" = "$empty" ] && ok ||
+			    no "$what: stderr: $(head -3 "$T/err")"
+		fi
 		[ ! -s "$T/out" ] && ok || no "$what: output"
 	done
-	: >"$T/ref"
-	printf '\n\n \n\t\r\n# comment\n\n' >"$T/case"
+	cp "$T/g1" "$T/ref"
+	{ cat "$T/g1"; printf '\n\n \n\t\r\n# comment\n\n'; } >"$T/case"
 	same "blank and comment lines between records"
 
 	# numbers
@@ -225,11 +332,11 @@ stream_cases() {
 
 	# rows: a number too many or too few; the mixed record
 	awk -v n="$n1" 'NR == n { $0 = $0 " 5" } { print }' "$T/g1" >"$T/case"
-	bad "a number too many" "$n1" "row has more than"
+	bad "a number too many" "$n1" "$(rowmsg 'row has more than')"
 	awk -v n="$n1" 'NR == n { $NF = "" } { print }' "$T/g1" >"$T/case"
-	bad "a number too few" "$n1" "row has"
+	bad "a number too few" "$n1" "$(rowmsg 'row has')"
 	awk -v n="$n1" 'NR == n { $0 = $1 } { print }' "$T/g1" >"$T/case"
-	bad "a row of one number" "$n1" "row has 1"
+	bad "a row of one number" "$n1" "$(rowmsg 'row has 1')"
 	awk -v n="$n1" 'NR == n { $0 = "" } NR == n - 1 { $0 = $0 " 0 0" } { print }' \
 	    "$T/g1" | sed '$d' >"$T/case"
 	bad "mixed counts in one record" "$((n1 - 1))"
@@ -273,10 +380,10 @@ stream_cases() {
 	cp "$T/g1" "$T/ref"
 	awk '{ printf "%s\r\n", $0 }' "$T/g1" >"$T/case"
 	same "CRLF line ends"
-	awk 'NR > 1 { gsub(/ /, "\t "); $0 = " \t" $0 " \t" } { print }' "$T/g1" \
+	awk 'NR > 1 && NF { gsub(/ /, "\t "); $0 = " \t" $0 " \t" } { print }' "$T/g1" \
 	    >"$T/case"
 	same "tabs and spaces around numbers"
-	awk 'NR > 1 { $0 = $0 "# a note" } NR == 2 { print "   # between rows" }
+	awk 'NR > 1 && NF { $0 = $0 "# a note" } NR == 2 { print "   # between rows" }
 	    { print }' "$T/g1" >"$T/case"
 	same "comments after and between rows"
 	awk 'NR == 2 { printf "#"; while (n++ < 1048576) printf "c"; print "" }
@@ -289,7 +396,7 @@ stream_cases() {
 	bad "CR line ends (old Mac)" 1
 	awk -v n="$n1" 'NR == n { printf "0"; while (k++ < 524288) printf " 0";
 	    print ""; next } { print }' "$T/g1" >"$T/case"
-	bad "a 1 MB row of numbers" "$n1" "row has more than"
+	bad "a 1 MB row of numbers" "$n1" "$(rowmsg 'row has more than')"
 	awk -v n="$n1" 'NR == n { s = "1"; while (length(s) < 1048576) s = s s
 	    $1 = s } { print }' "$T/g1" >"$T/case"
 	bad "a 1 MB number" "$n1" "too long"
@@ -311,7 +418,8 @@ stream_cases() {
 	    >"$T/in"
 	run "$T/in"
 	status 0
-	cat "$T/o1" "$T/o2" >"$T/want"
+	[ "$KIND" = records ] && cat "$T/o1" "$T/o2" >"$T/want" ||
+	    cp "$T/o12" "$T/want"
 	out_is "$T/want"
 	tc="cut inside the last row"
 	{ cat "$T/g1"; echo; sed '$d' "$T/g2"; tail -n 1 "$T/g2" |
@@ -323,12 +431,12 @@ stream_cases() {
 
 	# files: missing, a directory, garbage
 	tc="a missing file among good ones"
-	cat "$T/o1" "$T/o2" >"$T/want"
 	run "$T/g1" "$T/nonexistent" "$T/g2"
 	status 1
-	[ "$(cat "$T/err")" = "$P: $T/nonexistent: No such file or directory" ] &&
+	notes <"$T/err" >"$T/err1"
+	[ "$(cat "$T/err1")" = "$P: $T/nonexistent: No such file or directory" ] &&
 	    ok || no "$what: $(cat "$T/err")"
-	out_is "$T/want"
+	out_is "$T/around"
 	tc="a directory"
 	run "$T"
 	status 1
@@ -337,29 +445,56 @@ stream_cases() {
 	dd if="bin/$P" of="$T/case" bs=65536 count=1 2>/dev/null
 	run "$T/case"
 	status 1
-	[ -s "$T/err" ] && ! grep -v -q "^$P: $T/case:[0-9]*: [a-zA-Z'0-9]" \
-	    "$T/err" && ok || no "$what: a message that is not 'P: FILE:LINE: ...'"
+	notes <"$T/err" >"$T/err1"
+	[ -s "$T/err1" ] && ! grep -v -q "^$P: $T/case:[0-9]*: [a-zA-Z'0-9]" \
+	    "$T/err1" && ok || no "$what: a message that is not 'P: FILE:LINE: ...'"
 	out_valid
 }
 
 # ---- output failures ------------------------------------------------------
 
-# many: good record 1, N times, as a stream (on standard output).
+# many N: good record 1, N times, as a stream (on standard output); for
+# a design, the copies after the first with their ids numbered on from
+# 100001 (so good record 1 must name no neighbours), then good record 2.
 many() {
-	awk -v n="$1" '{ r = r $0 "\n" } END { while (n-- > 0) printf "%s\n", r }' \
-	    "$T/g1"
+	awk -v n="$1" -v design=$([ "$KIND" = design ] && echo 1) '
+	{ r = r $0 "\n" }
+	END { k = split(r, l, "\n")
+	while (n-- > 0) {
+		if (!design || !id) { printf "%s\n", r; id = 100000; continue }
+		s = ""
+		for (i = 1; i < k; i++) {
+			h = l[i]
+			if (h ~ /^[a-z]/ && match(h, / id=[0-9]+/))
+				h = substr(h, 1, RSTART - 1) " id=" (++id) \
+				    substr(h, RSTART + RLENGTH)
+			s = s h "\n"
+		}
+		printf "%s\n", s
+	} }' "$T/g1"
+	[ "$KIND" = design ] && cat "$T/g2"
 }
 
+# P_many: the copies of good record 1 that output_cases makes: a million
+# independent records, fewer for a design or a document, which are read
+# whole before anything is written (0: P makes one record at most).
+MANY=1000000
+design_many=5000
+document_many=5000
+
 output_cases() {
-	opts
+	eval "opts \${${P}_opts}"
+	eval "n=\${${P}_many:-\${${KIND}_many:-$MANY}}"
+	[ "$KIND" = design ] && cp "$T/g12" "$T/in" || cp "$T/g1" "$T/in"
 	tc="standard output /dev/full"
-	"${P}_run" "$T/g1" >/dev/full 2>"$T/err"
+	"${P}_run" $OPTS "$T/in" >/dev/full 2>"$T/err"
 	echo $? >"$T/rc"
 	status 1
 	says "$P: write error: "
+	[ "$n" -eq 0 ] && return
 	tc="standard output /dev/full, much output"
 	many 3000 >"$T/in"
-	"${P}_run" "$T/in" >/dev/full 2>"$T/err"
+	"${P}_run" $OPTS "$T/in" >/dev/full 2>"$T/err"
 	echo $? >"$T/rc"
 	status 1
 	says "$P: write error: "
@@ -373,8 +508,8 @@ output_cases() {
 		t0=$(date +%s)
 		(
 			[ $sig = ignored ] && trap '' PIPE
-			many 1000000 2>/dev/null |
-			    { "${P}_run" -; echo $? >"$T/rc"; } 2>"$T/err" | head -n 1
+			many "$n" 2>/dev/null |
+			    { "${P}_run" $OPTS -; echo $? >"$T/rc"; } 2>"$T/err" | head -n 1
 		) >"$T/out"
 		t1=$(date +%s)
 		[ $((t1 - t0)) -le $PROMPT ] && ok ||
@@ -399,11 +534,59 @@ output_cases() {
 #   cubic  P_A P_B P'_A P'_B, Hermite form of Manning's eq. 7:
 #          P = (2u^3 - 3u^2 + 1) P_A + (3u^2 - 2u^3) P_B
 #              + (u^3 - 2u^2 + u) P'_A + (u^3 - u^2) P'_B
-# (add the types of new programs' output here).
+#   bezier the Bernstein form of loft.5, by de Casteljau's construction:
+#          repeated linear interpolation of the control points at u
+#   patch  MacCallum's bi-quartic, f(u, v) = sum over i, j of
+#          H_i(u) B[i][j] H_j(v), at u, v = 0, 1/4, .. 1, where H1..H5
+#          are the cubic Hermite functions with the part at u = 1/2 of
+#          each moved into H5 = 16 u^2 (1 - u)^2 (worked by hand: H5 and
+#          its slope vanish at 0 and 1, H5(1/2) = 1):
+#          H1 = h00 - H5/2, H2 = h01 - H5/2, H3 = h10 - H5/8,
+#          H4 = h11 + H5/8
+# and, for any record with error=, one line "error E".
 curve_points() {
 	awk '
-	/^[A-Za-z]/ { type = $1; next }
-	/^$/ { next }
+	function flush(   j, k, i, r, u, q, s) {
+		if (type == "bezier" && nb > 0)
+			for (j = 0; j <= 8; j++) {
+				u = j / 8
+				for (i = 0; i < nb; i++) for (k = 1; k <= d; k++) q[i, k] = b[i, k]
+				for (r = nb - 1; r > 0; r--) for (i = 0; i < r; i++)
+					for (k = 1; k <= d; k++) q[i, k] = (1 - u) * q[i, k] + u * q[i + 1, k]
+				s = ""
+				for (k = 1; k <= d; k++) s = s sprintf("%.17g ", q[0, k])
+				print s
+			}
+		nb = 0
+	}
+	function herm(u, h) {
+		h[5] = 16 * u^2 * (1 - u)^2
+		h[1] = 2*u^3 - 3*u^2 + 1 - h[5] / 2
+		h[2] = 3*u^2 - 2*u^3 - h[5] / 2
+		h[3] = u^3 - 2*u^2 + u - h[5] / 8
+		h[4] = u^3 - u^2 + h[5] / 8
+	}
+	/^[A-Za-z]/ { flush(); type = $1; np = 0
+		for (i = 2; i <= NF; i++) if ($i ~ /^error=/) print "error " substr($i, 7)
+		next }
+	/^$/ { flush(); next }
+	type == "bezier" { d = NF; for (k = 1; k <= d; k++) b[nb, k] = $k; nb++; next }
+	type == "patch" {
+		d = NF / 5
+		for (j = 0; j < 5; j++) for (k = 1; k <= d; k++) p[np, j, k] = $(j * d + k)
+		if (++np < 5) next
+		for (a = 0; a <= 4; a++) for (c = 0; c <= 4; c++) {
+			herm(a / 4, hu); herm(c / 4, hv); s = ""
+			for (k = 1; k <= d; k++) {
+				x = 0
+				for (i = 0; i < 5; i++) for (j = 0; j < 5; j++)
+					x += hu[i + 1] * p[i, j, k] * hv[j + 1]
+				s = s sprintf("%.17g ", x)
+			}
+			print s
+		}
+		next
+	}
 	type == "cubic" {
 		d = NF / 4
 		for (j = 0; j <= 8; j++) {
@@ -419,15 +602,47 @@ curve_points() {
 		}
 		next
 	}
-	{ print "unknown record type " type > "/dev/stderr"; exit 1 }'
+	{ print "unknown record type " type > "/dev/stderr"; exit 1 }
+	END { flush() }'
 }
 
 # units OPTIONS FILE: P on FILE and on FILE scaled by 1e-6 and 1e6 and
 # translated by 1e6 gives the same curve scaled and translated, each
-# point within 1e-9 of the curve's size.  Every number of FILE's rows is
-# a coordinate (programs whose input rows hold derivatives need their
-# own transformation here).
+# point within 1e-9 of the curve's size, an error= within 1e-9 of the
+# size squared (it is a squared distance).  $UNITS_TR S D transforms
+# FILE: tr_points, every number is a coordinate; tr_cubic, rows of
+# cubic records, whose tangents scale but do not move; tr_patch (with
+# the patch programs).  Options -b, -t of patchdrag are scaled, -t moved.
 UNITS_TOL=1e-9
+UNITS_TR=tr_points
+tr_points() {
+	awk -v s="$1" -v d="$2" '/^[ \t]*[-+.0-9]/ { sub(/#.*/, "")
+		for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * s + d) }
+		{ print }'
+}
+tr_cubic() {
+	awk -v s="$1" -v d="$2" '/^[ \t]*[-+.0-9]/ { dim = NF / 4
+		for (i = 1; i <= NF; i++)
+			$i = sprintf("%.17g", $i * s + (i <= 2 * dim ? d : 0)) }
+		{ print }'
+}
+# scale_opts S D OPTIONS: OPTIONS with the vectors of -b scaled by S and
+# of -t scaled and moved by D
+scale_opts() {
+	s=$1 d=$2
+	shift 2
+	r=
+	while [ $# -gt 0 ]; do
+		case $1 in
+		-b|-t) r="$r $1 $(echo "$2" | awk -v s="$s" -v d="$d" -v t=$1 -F, '{
+		    for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * s + (t == "-t" ? d : 0))
+		    print }' OFS=,)"; shift ;;
+		*) r="$r $1" ;;
+		esac
+		shift
+	done
+	echo "$r"
+}
 units() {
 	OPTS=$1
 	file=$2
@@ -438,27 +653,34 @@ units() {
 	for tr in "1e-6 0" "1e6 0" "1 1e6"; do
 		set -- $tr
 		tc="$OPTS $file: knots times $1 plus $2"
-		awk -v s="$1" -v d="$2" '/^[ \t]*[-+.0-9]/ { sub(/#.*/, "")
-			for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * s + d) }
-			{ print }' "$file" >"$T/scaled"
+		"$UNITS_TR" "$1" "$2" <"$file" >"$T/scaled"
+		o0=$OPTS
+		OPTS=$(scale_opts "$1" "$2" $OPTS)
 		run "$T/scaled"
+		OPTS=$o0
 		status 0
 		curve_points <"$T/out" >"$T/p1"
 		e=$(awk -v s="$1" -v d="$2" -v tol=$UNITS_TOL '
+		$1 == "error" { if (NR == FNR) err[FNR] = $2 * s * s
+			else { e = $2 - err[FNR]; e = e < 0 ? -e : e
+				if (e > eworst) eworst = e }
+			if (NR == FNR) rows = FNR; else m = FNR; next }
 		NR == FNR { n = split($0, a)
 			for (k = 1; k <= n; k++) {
 				x[FNR, k] = a[k] * s + d
-				if (FNR == 1) x0[k] = a[k]
+				if (!have0) x0[k] = a[k]
 				e = a[k] - x0[k]; e = e < 0 ? -e : e
 				if (e > size) size = e
 			}
-			rows = FNR; next }
+			have0 = 1; rows = FNR; next }
 		{ for (k = 1; k <= NF; k++) { e = $k - x[FNR, k]; e = e < 0 ? -e : e
 			if (e > worst) worst = e } m = FNR }
 		END { size *= s < 0 ? -s : s
 			if (m != rows || !(size > 0)) { print "the points differ in number"; exit }
 			if (!(worst <= tol * size))
-				printf "off by %.3g of the size %.3g", worst / size, size }' \
+				printf "off by %.3g of the size %.3g", worst / size, size
+			if (!(eworst <= tol * size * size))
+				printf "error= off by %.3g of the size squared", eworst / size / size }' \
 		    "$T/p0" "$T/p1")
 		[ -z "$e" ] && ok || no "$what: $e"
 	done
@@ -657,9 +879,541 @@ sample_cases() {
 	    no "$what: not $BIG + 1 points 0..$BIG on the axis"
 }
 
+# sane_status: the last run either worked, whole records out, or failed
+# with a message.
+sane_status() {
+	if [ "$(cat "$T/rc")" = 0 ]; then
+		out_valid
+	else
+		status 1
+		[ -s "$T/err" ] && [ ! -s "$T/out" ] && ok ||
+		    no "$what: a failure without a message, or with output"
+	fi
+}
+
+# alone NAME LINE [MESSAGE]: the case in $T/case, alone, is bad at its
+# line LINE: exit 1, one message there, no output.
+alone() {
+	tc=$1
+	run "$T/case"
+	status 1
+	message_at "$T/case" "$2"
+	[ -n "$3" ] && says "$3"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+}
+
+# ---- bezapprox ---------------------------------------------------------------
+
+bezapprox_run() { "$B/bezapprox" "$@"; }
+bezapprox_good() {
+	case $1 in
+	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
+	2) printf 'quartic id=2\n0 0 0 1 0 1 1 0 0 0 1 0 0.5 0.5 0.5\n' ;;
+	esac
+}
+
+# expr NAME STATUS MESSAGE ARGS...: bezapprox on expressions: the status,
+# one message "bezapprox: MESSAGE..." (no file, no line), no output.
+expr() {
+	tc="$1"
+	what=$1
+	want=$2
+	msg=$3
+	shift 3
+	"$B/bezapprox" "$@" >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status "$want"
+	head -n 1 "$T/err" | grep "^bezapprox: " | grep -q -F -- "$msg" && ok ||
+	    no "$what: stderr lacks 'bezapprox: ...$msg': $(head -3 "$T/err")"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+}
+
+bezapprox_cases() {
+	opts
+	# not finite: log(0) at the end, poles at a panel's end and at a t_i
+	expr "log(t)" 1 "the curve is not finite at t = 0" -x 'log(t)' -y t
+	expr "1/(t-0.5)" 1 "the curve is not finite at t = 0.5" \
+	    -x '1/(t-0.5)' -y t
+	expr "sqrt(t-1)" 1 "the curve is not finite at t = 0" -x 'sqrt(t-1)' -y t
+	expr "exp(1000*t)" 1 "the curve is not finite at t = " \
+	    -x 'exp(1000*t)' -y t
+	expr "(t-0.5)^0.5" 1 "not finite" -x t -y '(t-0.5)^0.5'
+	expr "the surface 1/u" 1 "not finite" -n 2,2 -x '1/u' -y v -z 0
+	# not regular: a cusp at t_1 = 1/2, a point, a flat surface
+	expr "a cusp at t = 1/2" 1 "the curve's derivative vanishes at t = 0.5" \
+	    -n 2 -x '(t-0.5)^2' -y '(t-0.5)^3'
+	expr "a point" 1 "the curve is a single point" -x 0 -y 0
+	expr "a surface folded onto a line" 1 "boundary u = 0: the curve is a single point" \
+	    -n 2,2 -x u -y u -z u
+	# expressions that do not parse
+	expr "t^^2" 1 "-y: column 3:" -x t -y 't^^2'
+	expr "an unknown function" 1 "unknown function 'sinn'" -x 'sinn(t)' -y t
+	expr "u in a curve" 1 "unknown name 'u'" -x u -y t
+	expr "2t" 1 "-x: column 2" -x 2t -y t
+	# degrees
+	for n in 0 25 -1; do
+		expr "-n $n" 1 "-n: degree $n: want 1 to 24" -n $n -x t -y t
+	done
+	expr "-c -n 2" 1 "-n: degree 2: want 3 to 24" -c -n 2 -x t -y 't^2'
+	expr "-n 2,0" 1 "-n: degree 0" -n 2,0 -x u -y v -z 0
+	expr "-n 1.5" 2 "-n 1.5: want a whole number" -n 1.5 -x t -y t
+	expr "-n x" 2 "-n " -n x -x t -y t
+	expr "no -y" 2 "-y is missing" -x t
+	tc="-n 24, the highest degree"
+	what=$tc
+	"$B/bezapprox" -n 24 -x 'cos(t)' -y 'sin(t)' >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 0
+	[ "$(grep -c . "$T/out")" -eq 26 ] && ok || no "$what: not 25 points"
+	out_valid
+
+	# records
+	printf 'cubic\n0 0 0 0 0 0 0 0\n' >"$T/case"
+	bad "a curve that is a point" 1 "the curve is a single point"
+	printf 'cubic\n0 0 1 0 1 0 0 0\n1 0 2 1 0 0 1 0\n' >"$T/case"
+	opts -n 2
+	bad "a record whose tangent vanishes at t_1" 1 "derivative vanishes at t = 0.5"
+	opts
+	# found here: the length overflowed, and every derivative seemed to
+	# vanish against it (lib/normal.c)
+	printf 'cubic\n0 0 1 0 1e308 0 1e308 0\n' >"$T/case"
+	bad "huge tangents" 1 "the curve is too large: its length overflows"
+	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 1 0 1 0 0 0 0 0 1\n0 0.5 1 0.5 1 0 1 0 0.5 0.5\n' \
+	    >"$T/case"
+	bad "a surface record without -n m,n" 1 "give its degrees with -n m,n"
+	# surfaces (-n m,n): the good records are curves, so alone
+	OPTS="-n 2,2"
+	alone "a patch in the plane" 1 "has no normals"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n0 0 0\n0 1 0\n' >"$T/case"
+	alone "a bezier-surface with a side of one point" 1 "boundary v = 0: the curve is a single point"
+	printf 'bezier-surface m=1 n=2\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	alone "a bezier-surface with too few rows" 1
+	printf 'cubic\n0 0 1 0 0 2 0 -2\n' >"$T/case"
+	alone "a curve record with -n 2,2" 1 "a cubic record is a curve"
+	opts -c -n 5
+	printf 'bezier\n0 0 0\n1 0 0\n2 0 0\n3 1 0\n' >"$T/case"
+	sane "-c on a space curve straight at its start"
+	opts -n 24
+	printf 'cubic\n0 0 1e-300 0 1e-300 0 0 1e-300\n' >"$T/case"
+	sane "a tiny curve (1e-300)"
+	printf 'cubic\n0 0 1e300 0 1e300 0 0 1e300\n' >"$T/case"
+	sane "a huge curve (1e300)"
+	printf 'cubic\n0 0 1 0 1 0 1 0\n1 0 1.000001 0 1e-6 0 1e-6 0\n1.000001 0 2 1 1 0 0 1\n' \
+	    >"$T/case"
+	sane "segments of chords 1 : 1e-6"
+
+	# units: curve records from splinefit, scaled and moved; the error
+	# scales by the square
+	bin/splinefit man/figures/insole.knots >"$T/insole.cubic"
+	bin/splinefit -o "$T/space" 2>/dev/null >"$T/space.cubic" ||
+	    printf '0 0 0\n4 1 1\n5 3 -2\n2 5 0\n-1 2 1\n' | bin/splinefit -o \
+	    >"$T/space.cubic"
+	UNITS_TR=tr_cubic
+	units "-n 9" "$T/insole.cubic"
+	units "-n 5 -c" "$T/insole.cubic"
+	units "-n 7" "$T/space.cubic"
+	UNITS_TR=tr_points
+}
+
+# ---- grade --------------------------------------------------------------------
+
+grade_run() { "$B/grade" "$@"; }
+grade_good() {
+	case $1 in
+	1) printf 'points id=1\n0 0\n10 2\n20 0\n10 -3\n' ;;
+	2) printf 'points size=3 name=b start=1,0\n0 0\n50 20\n90 0\n' ;;
+	esac
+}
+
+grade_opts="-s -1:1"
+grade_cases() {
+	opts -s -1:1
+	knots '0 0\n'
+	bad "one knot" 1 "no extent along x"
+	knots '1 0\n1 1\n1 5\n'
+	bad "knots on a vertical line" 1 "no extent along x"
+	knots '0 1\n1 1\n5 1\n'
+	bad "knots on a horizontal line" 1 "no extent along y"
+	knots '0 0 0\n1 1 0\n2 0 0\n'
+	bad "knots of 3 coordinates" 2 "knots have 3 coordinates"
+	printf 'cubic\n0 0 1 0 0 2 0 -2\n' >"$T/case"
+	bad "a curve record" 1 "cubic record: grade reads knots"
+	printf 'points size=x\n0 0\n100 50\n' >"$T/case"
+	bad "size=x" 1 "attribute size=x: want a whole number"
+	printf 'points size=1001\n0 0\n100 50\n' >"$T/case"
+	bad "size=1001" 1 "want a whole number from -1000 to 1000"
+	printf 'points start=1\n0 0\n100 50\n' >"$T/case"
+	bad "start=1" 1 "want 2 numbers"
+	knots '0 0\n1e308 1\n-1e308 -1\n'
+	bad "an outline too large" 1 "too large to grade"
+	knots '0 0\n1e-320 1e-320\n2e-320 0\n'
+	sane "a subnormal outline"
+	knots '0 0\n2 10\n5 0\n'
+	bad "a step that leaves no length" 1 "size step -1 leaves the outline no length"
+	knots '0 0\n100 1\n200 0\n'
+	bad "a step that leaves no width" 1 "size step -1 leaves the outline no width"
+}
+
+# ---- the patch programs: one design --------------------------------------------
+
+# patch ID ATTRS X0 Y0: a patch of 3 coordinates over [X0, X0 + 4] x
+# [Y0, Y0 + 3], one corner raised (patchnew's example, moved)
+patch() {
+	printf 'patch id=%s%s\n' "$1" "$2"
+	awk -v x="$3" -v y="$4" 'BEGIN {
+	    split("0 0 0 0 3 0 0 3 0 0 3 0 0 1.5 0|4 0 0 4 3 1 0 3 1 0 3 1 4 1.5 0.5|4 0 0 4 0 1 0 0 1 0 0 1 4 0 0.5|4 0 0 4 0 1 0 0 1 0 0 1 4 0 0.5|2 0 0 2 3 0.5 0 3 0.5 0 3 0.5 2 1.5 0.25", r, "|")
+	    for (i = 1; i <= 5; i++) { n = split(r[i], a, " ")
+		for (j = 0; j < 5; j++) if ((i == 1 || i == 2 || i == 5) &&
+		    (j == 0 || j == 1 || j == 4)) { a[3*j+1] += x; a[3*j+2] += y }
+		s = a[1]; for (k = 2; k <= n; k++) s = s " " a[k]; print s } }'
+}
+
+# design_cases: what patchsplit, patchdrag and patchjoin share about a
+# design: every fault among good patches, nothing written, exit 1.
+design_cases() {
+	AMONG=1         # bad: the case between good records 1 and 2
+	{ patch 5 " u1=6" 0 0; echo; patch 7 "" 10 0; } >"$T/case"
+	bad "a dangling neighbour" 1 "patch 5: neighbour 6 across u1 is not in the design"
+	{ patch 5 " u1=7" 0 0; echo; patch 7 "" 4 0; } >"$T/case"
+	bad "a neighbour that does not name the patch back" 1 \
+	    "patch 5 names 7 across u1, but 7 does not name 5"
+	{ patch 5 "" 0 0; echo; patch 5 "" 10 0; } >"$T/case"
+	bad "an id used twice" 8 "id 5 is used twice"
+	patch 5 " u1=5" 0 0 >"$T/case"
+	bad "a patch its own neighbour" 1 "names itself"
+	patch 5 "" 0 0 | sed '$d' >"$T/case"
+	bad "a patch of 4 rows" 1 "patch record has 4 rows; a patch has 5"
+	{ patch 5 "" 0 0; echo '0 0 0 0 0 0 0 0 0 0 0 0 0 0 0'; } >"$T/case"
+	bad "a patch of 6 rows" 1 "patch record has 6 rows; a patch has 5"
+	patch 5 "" 0 0 | awk 'NR > 1 { $NF = ""; $(NF-1) = ""; $(NF-2) = "" } { print }' \
+	    >"$T/case"
+	bad "rows of 12 numbers" 2 "patch rows need 10 or 15 numbers, not 12"
+	patch 5 "" 0 0 | sed 's/ id=5//' >"$T/case"
+	bad "a patch with no id" 1 "patch has no id="
+	for a in id=0 id=x id=1e9999 su=0 su=-1 u1=x u1=3:0.5:0.5 u1=3:0:2; do
+		patch 5 " $a" 0 0 | sed 's/id=5 id=/id=/' >"$T/case"
+		bad "attribute $a" 1 "attribute $(echo "$a" | cut -d= -f1)="
+	done
+	{ patch 5 "" 0 0; echo; printf 'patch id=6\n'; for r in 1 2 3 4 5; do
+	    echo '0 0 1 0 1 0 1 0 0.5 0'; done; } >"$T/case"
+	bad "patches of 3 and 2 coordinates" 8 "a design has one dimension"
+	AMONG=
+}
+
+# tr_patch S D: patch records on standard input scaled by S and moved by
+# D in every coordinate: the points (rows and columns (0), (1), (h)) and
+# the derivatives and twists (the others) alike scale, only the points
+# move.
+tr_patch() {
+	awk -v s="$1" -v d="$2" '/^[a-z]/ { print; r = 0; next } NF == 0 { print; next }
+	{ dim = NF / 5; r++
+	  for (j = 0; j < 5; j++) for (k = 1; k <= dim; k++) {
+		i = j * dim + k; $i = $i * s
+		if ((r == 1 || r == 2 || r == 5) && (j == 0 || j == 1 || j == 4))
+			$i = $i + d
+		$i = sprintf("%.17g", $i) }
+	  print }'
+}
+
+# ---- patchnew -----------------------------------------------------------------
+
+patchnew_kind=design
+patchnew_onerow=1       # the curves of good record 1 are rows of their own
+patchnew_many=0         # one patch at most
+patchnew_empty="patchnew: -b wants 4 curve records (v=0, v=1, u=0, u=1), not 0"
+patchnew_run() { "$B/patchnew" -b "$@"; }
+patchnew_good() {
+	case $1 in
+	1) printf 'cubic id=1\n0 0 1 0 1 0 1 0\n\ncubic\n0 1 1 1 1 0 1 0\n' ;;
+	2) printf 'cubic\n0 0 0 1 0 1 0 1\n\nquartic\n1 0 1 1 0 1 0 1 1 0.5\n' ;;
+	esac
+}
+
+patchnew_cases() {
+	opts
+	tc="three curves"
+	sed '$d' "$T/g12" | sed '$d' | sed '$d' >"$T/in"
+	run "$T/in"
+	status 1
+	[ "$(cat "$T/err")" = "patchnew: -b wants 4 curve records (v=0, v=1, u=0, u=1), not 3" ] &&
+	    ok || no "$what: $(head -2 "$T/err")"
+	v1='\ncubic\n0 1 1 1 1 0 1 0\n'
+	printf "cubic\n0 0 0.5 0 0.5 0 0.5 0\n0.5 0 1 0 0.5 0 0.5 0\n$v1" >"$T/case"
+	design_sandwich "$T/case"
+	tc="a boundary of two segments"
+	run "$T/in"
+	status 1
+	message_at "$T/in" 1
+	says "a boundary is one segment, not 2"
+	printf "cubic\n0 0 0 1 0 0 1 0 0 1 0 0\n$v1" >"$T/case"
+	design_sandwich "$T/case"
+	tc="a boundary in space, the others in the plane"
+	run "$T/in"
+	status 1
+	says "boundary has 2 coordinates, the first 3"
+	printf "bezier\n0 0\n0.5 0\n1 0\n$v1" >"$T/case"
+	design_sandwich "$T/case"
+	tc="a bezier record as a boundary"
+	run "$T/in"
+	sane_status
+	printf "cubic\n0 0 1.1 0 1 0 1 0\n$v1" >"$T/case"
+	design_sandwich "$T/case"
+	tc="curves that do not meet"
+	run "$T/in"
+	status 1
+	says "corner (10): the end of curve 1 (v=0) is 0.1 from the start of curve 4"
+	tc="-i 0"
+	what=$tc
+	"$B/patchnew" -i 0 -c 0,0 -c 1,0 -c 0,1 -c 1,1 >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 1
+	says "-i 0: want an id from 1 to 1000000000"
+	tc="-c nan,0"
+	what=$tc
+	"$B/patchnew" -c nan,0 -c 1,0 -c 0,1 -c 1,1 >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 2
+	tc="-c 1e308 corners"
+	what=$tc
+	"$B/patchnew" -c -1e308,0 -c 1e308,0 -c 0,1 -c 1e308,1 >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 1
+	says "not finite"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+}
+
+# ---- patchsplit ---------------------------------------------------------------
+
+patchsplit_kind=design
+patchsplit_opts="-u 0.4"
+patchsplit_run() { "$B/patchsplit" "$@"; }
+patchsplit_good() {
+	case $1 in
+	1) patch 1 "" 0 0 ;;
+	2) patch 9 " name=x" 20 0 ;;
+	esac
+}
+
+patchsplit_cases() {
+	opts -u 0.4
+	design_cases
+	opts -v 0.5 -i 1
+	design_cases
+	tc="-i 99, no such patch"
+	run "$T/g12"
+	run -i 99 "$T/g12"
+	status 1
+	[ "$(cat "$T/err")" = "patchsplit: no patch with id 99 in the input" ] &&
+	    ok || no "$what: $(head -2 "$T/err")"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+	for t in 0 1 -0.5 1.5 1e-400; do
+		tc="-u $t"
+		what=$tc
+		"$B/patchsplit" -u $t "$T/g12" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 1
+		says "-u $t: want a number between 0 and 1, both excluded"
+		[ ! -s "$T/out" ] && ok || no "$what: output"
+	done
+	for t in nan x 0.5x; do
+		tc="-v $t"
+		what=$tc
+		"$B/patchsplit" -v $t "$T/g12" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 2
+	done
+	opts -u 1e-9
+	sane "-u 1e-9"
+	tc="ids used up"
+	{ patch 1000000000 "" 0 0; } >"$T/case"
+	OPTS=
+	run -u 0.5 "$T/case"
+	status 1
+	says "ids are used up"
+
+	# units: a split of the scaled design is the split scaled
+	{ patch 1 " u1=2" 0 0; echo; patch 2 " u0=1" 4 0; } | tr_patch 1 0 \
+	    >"$T/design"
+	"$B/patchdrag" -i 2 -u 0.3 -v 0.6 -b 0.5,-1,2 "$T/design" >"$T/dragged"
+	UNITS_TR=tr_patch
+	units "-u 0.3" "$T/dragged"
+	units "-v 0.7 -i 1" "$T/dragged"
+	UNITS_TR=tr_points
+}
+
+# ---- patchdrag ----------------------------------------------------------------
+
+patchdrag_kind=design
+patchdrag_opts="-i 1 -u 0.5 -v 0.5 -b 0,0,1"
+patchdrag_empty="patchdrag: no record with id 1 in the input"
+patchdrag_run() { "$B/patchdrag" "$@"; }
+patchdrag_good() { patchsplit_good "$@"; }
+
+patchdrag_cases() {
+	opts -i 1 -u 0.5 -v 0.5 -b 0,0,1
+	design_cases
+	opts -i 1 -u 0.9 -v 0.1 -t 3,0,2
+	design_cases
+	# values dragging cannot use: bad input, exit 1
+	for a in "-i 99 -u 0.5 -v 0.5 -b 1,0,0" "-i 1 -u 1.5 -v 0.5 -b 1,0,0" \
+	    "-i 1 -u 0 -v 0 -b 1,0,0" "-i 1 -u 0.5 -v 0.5 -b 1,0,0 -e 0.6" \
+	    "-i 1 -u 0.5 -v 0.5 -b 1,0,0 -w 0,0,0" "-i 1 -u 0.5 -v 0.5 -b 0,0,0" \
+	    "-i 1 -u 0.5 -v 0.5 -b 0,1" "-i 1 -u 0.5 -v 0.5 -b 0,0,1 -w 0,0,1" \
+	    "-u 0.5 -v 0.5 -b 1,0,0" "-i 1 -u 0.5 -v 0.5 -b 1,0,0 -e -1" \
+	    "-i 1 -u 0.5 -b 1,0,0"; do
+		tc="patchdrag $a"
+		what=$tc
+		"$B/patchdrag" $a "$T/g12" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 1
+		[ "$(wc -l <"$T/err")" -eq 1 ] && grep -q "^patchdrag: [a-z-]" "$T/err" &&
+		    ok || no "$what: $(head -2 "$T/err")"
+		[ ! -s "$T/out" ] && ok || no "$what: output"
+	done
+	# usage errors, exit 2
+	for a in "-u x -b 1,0,0" "-u nan -b 1,0,0" "-u 0.5 -b 1" "-u 0.5 -b 1,2,3,4" "-u 0.5" \
+	    "-u 0.5 -b 1,0,0 -t 1,0,0"; do
+		tc="patchdrag $a"
+		what=$tc
+		"$B/patchdrag" -i 1 -v 0.5 $a "$T/g12" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 2
+	done
+	OPTS=
+	printf 'cubic\n0 0 1 0 1 0 1 0\n1 0 2 0 1 0 1 0\n' >"$T/case"
+	tc="a curve, dragged"
+	run -u 1.5 -b 0,1 "$T/case"
+	status 0
+	out_valid
+	tc="the end of an open curve"
+	run -u 2 -b 0,1 "$T/case"
+	status 1
+	says "is an end of the curve"
+	tc="beyond the end of a curve"
+	run -u 2.5 -b 0,1 "$T/case"
+	status 1
+	says "outside the curve's parameter range 0 to 2"
+
+	# units: a drag of the scaled design by the scaled displacement
+	{ patch 1 " u1=2" 0 0; echo; patch 2 " u0=1" 4 0; } >"$T/design"
+	"$B/patchsplit" -v 0.5 "$T/design" >"$T/split"
+	UNITS_TR=tr_patch
+	units "-i 3 -u 0.5 -v 0.5 -b 0.5,-1,2" "$T/split"
+	units "-i 4 -u 0.9 -v 0.7 -b 0.5,-1,2" "$T/split"
+	units "-i 5 -u 0.5 -v 0.9 -b 0,0,-3" "$T/split"
+	units "-i 6 -u 0.4 -v 0.6 -t 5,1,2 -w 0,0,1" "$T/split"
+	UNITS_TR=tr_points
+}
+
+# ---- patchjoin ----------------------------------------------------------------
+
+patchjoin_kind=design
+patchjoin_opts="-P 1 -S 2"
+patchjoin_empty="patchjoin: no patch with id 1 in the input"
+patchjoin_run() { "$B/patchjoin" "$@"; }
+patchjoin_good() {
+	case $1 in
+	1) pieces ;;
+	2) patch 9 "" 20 0 ;;
+	esac
+}
+
+# pieces [ATTRS1 [ATTRS2]]: patchjoin's example, two patches designed
+# apart, 2 nearly against 1
+pieces() {
+	bin/patchnew -i 1 -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 |
+	    sed -e '/^$/d' -e "1s/\$/$1/"
+	echo
+	bin/patchnew -i 2 -c 4.05,0,0.1 -c 8,0,0 -c 4,3.1,1 -c 8,3,2 |
+	    sed -e '/^$/d' -e "1s/\$/$2/"
+}
+
+patchjoin_cases() {
+	opts -P 1 -S 2
+	design_cases
+	for a in "-P 1 -S 1" "-P 1 -S 99" "-P 1 -S 9"; do
+		tc="patchjoin $a"
+		what=$tc
+		"$B/patchjoin" $a "$T/g12" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 1
+		[ ! -s "$T/out" ] && ok || no "$what: output"
+	done
+	says "patches 1 and 9 share no edge"
+	# 2 with a neighbour 3 across its edge v1, which meets the edge u0
+	# that would join 1
+	{ pieces "" " v1=3"; echo; patch 3 " v0=2" 4 3; } >"$T/case"
+	tc="a subsidiary with a neighbour across the edge"
+	run -P 1 -S 2 "$T/case"
+	status 1
+	says "the subsidiary 2 has a neighbour across v1"
+	tc="joined already"
+	run -P 1 -S 2 "$T/g1"
+	status 0
+	cp "$T/out" "$T/case"
+	run -P 2 -S 1 "$T/case"
+	status 1
+	says "already has a neighbour"
+}
+
+# ---- plot ------------------------------------------------------------------------
+
+plot_kind=document
+plot_empty="plot: nothing to draw"
+plot_run() { "$B/plot" "$@"; }
+plot_good() {
+	case $1 in
+	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
+	2) printf 'points id=2\n0 1 2\n1 1 1\n2 1 0\n' ;;
+	esac
+}
+
+plot_cases() {
+	opts
+	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
+	sane "coefficients near the largest double"
+	tc="points 1e308 apart"
+	knots '1e308 0\n-1e308 0\n'
+	run "$T/case"
+	status 1
+	[ "$(cat "$T/err")" = "plot: the drawing is too large to frame" ] && ok ||
+	    no "$what: $(head -2 "$T/err")"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+	knots '0 0\n1e-320 0\n'
+	sane "points 1e-320 apart"
+	# found by fuzzing: the decimals of a subnormal drawing overflowed
+	# an int (log10 of 0); check-san reports it
+	knots '0 2\n4.9e-324 1\n'
+	sane "points 4.9e-324 apart in x"
+	knots '0 0 0 0\n1 1 1 1\n'
+	bad "points of 4 numbers" 2 "points have 4 numbers"
+	printf 'cubic\n0 0 1 0 0 0 1 0\n' >"$T/case"
+	opts -c
+	bad "a comb where the tangent vanishes" 2 "the tangent vanishes in segment 1"
+	opts -b -c -t -m -l id -v iso
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	good "a bezier surface, every option"
+	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n' \
+	    >"$T/case"
+	bad "a patch of 3 rows" 1 "a patch has 5"
+	# a picture of every record bad: nothing to draw, nothing written
+	tc="only bad records"
+	printf 'cubic\n0 0 nan 0\n' >"$T/case"
+	run "$T/case"
+	status 1
+	[ "$(tail -n 1 "$T/err")" = "plot: nothing to draw" ] && ok ||
+	    no "$what: $(cat "$T/err")"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+	tc="-K of a curve record"
+	run -K "$T/g1" "$T/g2"
+	status 1
+	says "cubic record: -K reads knots"
+}
+
 # ---- run them -----------------------------------------------------------------
 
 for P in $PROGS; do
+	eval "KIND=\${${P}_kind:-records}"
 	stream_cases
 	output_cases
 	"${P}_cases"

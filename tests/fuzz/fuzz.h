@@ -165,6 +165,78 @@ fuzz_records(struct loft_run *run, const uint8_t *data, size_t size)
 	loft_writer_free(&run->w);
 }
 
+/*
+ * For the programs that take the whole input as one design (loft.5,
+ * Designs): read every record of the bytes as loft_run_design does; when
+ * one is bad, check its message and stop (nothing would be written).
+ * Otherwise hand them all to design twice: both runs must give the same
+ * outcome and the same output, whole records that read back, or, on
+ * failure, nothing (loft_run_design drops it).
+ */
+static void
+fuzz_design(struct loft_run *run, loft_design_handler design,
+    const uint8_t *data, size_t size)
+{
+	struct loft_record rec = { 0 }, *recs = NULL;
+	struct loft_error err;
+	struct loft_reader *rd;
+	char *copy, *first = NULL;
+	size_t n = 0, firstlen = 0;
+	FILE *fp = fuzz_open(data, size, &copy);
+	int r, bad = 0, firstrc = 0;
+
+	if (fp == NULL)
+		return;
+	rd = loft_reader_new(fp, "fuzz");
+	FUZZ_ASSERT(rd != NULL, "out of memory");
+	while ((r = loft_read(rd, &rec, &err)) != 0 && r != LOFT_READ_FAIL) {
+		if (r == LOFT_READ_BAD) {
+			fuzz_check_error(&rec, &err);
+			bad = 1;
+			continue;
+		}
+		recs = realloc(recs, (n + 1) * sizeof *recs);
+		FUZZ_ASSERT(recs != NULL, "out of memory");
+		memset(&recs[n], 0, sizeof recs[n]);
+		FUZZ_ASSERT(loft_record_copy(&recs[n], &rec) == 0,
+		    "out of memory");
+		n++;
+	}
+	FUZZ_ASSERT(r == 0, "read error on memory");
+	for (int pass = 0; !bad && pass < 2; pass++) {
+		int rc;
+
+		run->w.len = 0;
+		run->w.bad = 0;
+		run->w.col = 0;
+		rc = design(run, recs, n) != 0;
+		if (rc != 0 || run->w.bad)
+			run->w.len = 0;
+		if (pass == 0) {
+			firstrc = rc;
+			firstlen = run->w.len;
+			first = malloc(firstlen + 1);
+			FUZZ_ASSERT(first != NULL, "out of memory");
+			if (firstlen > 0)
+				memcpy(first, run->w.buf, firstlen);
+			fuzz_check_output(first, firstlen);
+		} else {
+			FUZZ_ASSERT(rc == firstrc && run->w.len == firstlen &&
+			    (firstlen == 0 || memcmp(first, run->w.buf,
+			    firstlen) == 0),
+			    "the same design gives different output");
+		}
+	}
+	free(first);
+	for (size_t i = 0; i < n; i++)
+		loft_record_free(&recs[i]);
+	free(recs);
+	loft_record_free(&rec);
+	loft_reader_free(rd);
+	fuzz_close(fp, copy);
+	loft_writer_free(&run->w);
+}
+
 /* Where the programs' messages (-v) go while fuzzing. */
 static FILE *
 fuzz_null(void)
