@@ -979,7 +979,10 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	vb[2] = b.hi[0] - b.lo[0] + 2 * margin;
 	vb[3] = b.hi[1] - b.lo[1] + 2 * margin;
 	big = fmax(vb[2], vb[3]);
-	if (!isfinite(big) || !(big > 0))
+	/* the corner too: a drawing near the largest double has its margin
+	 * beyond it */
+	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
+	    !isfinite(vb[1]))
 		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
 		    "to frame");
 	d->px = big / PICTURE_PX;

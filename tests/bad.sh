@@ -1379,6 +1379,15 @@ plot_cases() {
 	[ "$(cat "$T/err")" = "plot: the drawing is too large to frame" ] && ok ||
 	    no "$what: $(head -2 "$T/err")"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
+	# found by fuzzing: one point near the largest double, its margin
+	# beyond it, gave a viewBox of -inf
+	tc="one point near the largest double"
+	knots '0 1.7976931348623157e308\n'
+	run "$T/case"
+	status 1
+	[ "$(cat "$T/err")" = "plot: the drawing is too large to frame" ] && ok ||
+	    no "$what: $(head -2 "$T/err")"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
 	knots '0 0\n1e-320 0\n'
 	sane "points 1e-320 apart"
 	# found by fuzzing: the decimals of a subnormal drawing overflowed
