@@ -83,6 +83,14 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 			loft_report(run, &recs[i], &err);
 			return 1;
 		}
+		if (strcmp(c.type, "cubic") != 0 &&
+		    strcmp(c.type, "quartic") != 0) {
+			/* its rows are control points, not quartic vectors */
+			loft_fail(&err, LOFT_EINPUT, -1, "a %s record: a "
+			    "boundary is a cubic or quartic segment", c.type);
+			loft_report(run, &recs[i], &err);
+			return 1;
+		}
 		if (c.npieces != 1 || (i > 0 && c.dim != dim)) {
 			if (c.npieces != 1)
 				loft_fail(&err, LOFT_EINPUT, -1, "a boundary is "

@@ -49,6 +49,7 @@ split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	if (rc == 0 && loft_design_from_records(run, recs, n, &d) != 0)
 		rc = 1;
 	count = d.n;
+	err.line = 0;           /* loft_fail sets the row, not the line */
 	if (rc == 0 && o->have_id) {
 		long i = at = loft_design_find(&d, o->id);
 
