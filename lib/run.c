@@ -109,15 +109,17 @@ finish(struct loft_run *run)
 int
 loft_run_made(struct loft_run *run)
 {
+	int status;
+
 	if (run->w.bad) {
 		fprintf(run->msg, "%s: %s\n", run->prog, run->w.bad ==
 		    LOFT_ENOMEM ? "out of memory" : "result is not finite");
 		run->status = 1;
-	} else if (commit(run) != 0) {
-		loft_writer_free(&run->w);
-		return write_failed(run);
+		run->w.len = 0;
 	}
-	return finish(run);
+	status = loft_run_write(run, run->w.buf, run->w.len);
+	loft_writer_free(&run->w);
+	return status;
 }
 
 int
