@@ -33,7 +33,6 @@
 # good records alone (plus the case's own output where the case is good),
 # in whole records of finite numbers.
 
-B=${LOFT_BIN:-bin}              # check-valgrind runs the programs through wrappers
 BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
@@ -41,10 +40,8 @@ PROGS="splinefit sample bezapprox grade patchnew patchsplit patchdrag \
     patchjoin plot"
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
-rm -rf "$T" && mkdir -p "$T" || exit 2
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
+. tests/lib.sh
+# this suite's failures name the program, and its cases run P_run
 no() { fail=$((fail + 1)); printf 'FAIL %s: %s\n' "$P" "$*" >&2; }
 
 # ---- checks ------------------------------------------------------------
@@ -92,10 +89,6 @@ run() {
 	what="$tc"
 	"${P}_run" $OPTS "$@" >"$T/out" 2>"$T/err"
 	echo $? >"$T/rc"
-}
-status() {
-	[ "$(cat "$T/rc")" = "$1" ] && ok ||
-	    no "$what: exit $(cat "$T/rc"), want $1; stderr: $(head -3 "$T/err")"
 }
 says() {
 	grep -F -q -- "$1" "$T/err" && ok ||
@@ -1430,5 +1423,4 @@ for P in $PROGS; do
 	"${P}_cases"
 done
 P=bad
-echo "bad: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish bad

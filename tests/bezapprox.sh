@@ -23,12 +23,7 @@ error_near() {
 }
 
 # ---- usage ---------------------------------------------------------
-run "$B/bezapprox -h"
-status 0
-grep -q "^usage: bezapprox \[" "$T/out" && ok || no "bezapprox -h prints no usage"
-run "$B/bezapprox -Z"
-status 2
-says "usage: bezapprox"
+usage_ok bezapprox
 fails 2 "-y is missing" "$B/bezapprox -x t"
 fails 2 "-x is missing" "$B/bezapprox -y t"
 fails 2 "-z is missing: a surface needs" "$B/bezapprox -n 3,3 -x u -y v"

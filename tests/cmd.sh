@@ -12,12 +12,7 @@ printf '10 0\n3.5 9.4\n0 2\n-3.5 9.4\n-10 0\n-7 -7\n0 -10\n7 -7\n' \
 
 # ---- usage ---------------------------------------------------------
 for p in splinefit sample; do
-	run "$B/$p -h"
-	status 0
-	grep -q "^usage: $p \[" "$T/out" && ok || no "$p -h prints no usage"
-	run "$B/$p -Z"
-	status 2
-	says "usage: $p"
+	usage_ok "$p"
 done
 fails 2 "-p '0': want a whole number from 1 to 17" "$B/splinefit -p 0 $T/square.knots"
 fails 2 "-p '18'" "$B/sample -p 18 /dev/null"

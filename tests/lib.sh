@@ -38,6 +38,18 @@ fails() {
 	says "$2"
 	out_empty
 }
+# usage_ok PROG: -h prints the usage and exits 0; a bad option exits 2
+# with the same usage on standard error
+usage_ok() {
+	run "$B/$1 -h"
+	status 0
+	grep -q "^usage: $1 " "$T/out" && ok || no "$1 -h prints no usage"
+	cp "$T/out" "$T/usage"
+	run "$B/$1 -Z"
+	status 2
+	tail -n "$(wc -l <"$T/usage")" "$T/err" | cmp -s - "$T/usage" && ok ||
+	    no "$1 -Z: stderr does not end with the usage of -h"
+}
 # finish NAME: the closing line that tests/run.sh adds up
 finish() {
 	echo "$1: $pass passed, $fail failed"

@@ -17,12 +17,7 @@ near() {
 
 # ---- usage ---------------------------------------------------------
 for p in patchnew patchsplit patchdrag patchjoin; do
-	run "$B/$p -h"
-	status 0
-	grep -q "^usage: $p " "$T/out" && ok || no "$p -h prints no usage"
-	run "$B/$p -Z"
-	status 2
-	says "usage: $p"
+	usage_ok "$p"
 done
 fails 2 "give four corners with -c" "$B/patchnew -c 0,0 -c 1,0 -c 0,1"
 fails 2 "want 2 numbers" "$B/patchnew -c 0,0 -c 1,0 -c 0,1 -c 1,1,1"

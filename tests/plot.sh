@@ -122,12 +122,7 @@ printf 'points name=rect\n0 0\n0 -20\n100 -20\n100 20\n0 20\n' \
 
 # ---- usage -------------------------------------------------------------
 for p in plot grade; do
-	run "$B/$p -h"
-	status 0
-	grep -q "^usage: $p " "$T/out" && ok || no "$p -h prints no usage"
-	run "$B/$p -Z"
-	status 2
-	says "usage: $p"
+	usage_ok "$p"
 done
 fails 2 "-v 'zx': want xy, yz, xz or iso" "$B/plot -v zx $T/seg.cubic"
 fails 2 "-n '0'" "$B/plot -n 0 $T/seg.cubic"
