@@ -1175,6 +1175,16 @@ patchnew_cases() {
 	status 1
 	says "not finite"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
+
+	# units: the patch on scaled and moved boundaries is the patch
+	# scaled and moved (curved boundaries in space, tangents scaled)
+	OPTS=
+	printf '%s\n' 'cubic' '0 0 0 4 0 1 1 1 0 1 -1 1' '' 'cubic' \
+	    '0 3 0 4 3 2 2 0 -1 1 1 0' '' 'cubic' '0 0 0 0 3 0 -1 3 1 1 3 -1' \
+	    '' 'cubic' '4 0 1 4 3 2 0 3 0 0 3 1' >"$T/bounds"
+	UNITS_TR=tr_cubic
+	units "" "$T/bounds"
+	UNITS_TR=tr_points
 }
 
 # ---- patchsplit ---------------------------------------------------------------
@@ -1349,6 +1359,15 @@ patchjoin_cases() {
 	run -P 2 -S 1 "$T/case"
 	status 1
 	says "already has a neighbour"
+
+	# units: the join of the scaled and moved pieces is the join scaled
+	# and moved
+	pieces >"$T/pieces"
+	OPTS=
+	UNITS_TR=tr_patch
+	units "-P 1 -S 2" "$T/pieces"
+	units "-P 2 -S 1" "$T/pieces"
+	UNITS_TR=tr_points
 }
 
 # ---- plot ------------------------------------------------------------------------
