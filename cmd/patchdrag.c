@@ -212,6 +212,26 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 	return found;
 }
 
+/*
+ * Records copied through must be records loft(5) accepts: a header with
+ * no rows is an error there (found by fuzzing).  Reports each; 0 if none.
+ */
+static int
+check_copied(struct loft_run *run, const struct loft_record *recs, size_t n)
+{
+	struct loft_error err;
+	int rc = 0;
+
+	for (size_t i = 0; i < n; i++)
+		if (!is_patch(&recs[i]) && recs[i].nrows == 0) {
+			err.line = 0;
+			rc = loft_fail(&err, LOFT_EINPUT, -1,
+			    "%s record has no rows", recs[i].type);
+			loft_report(run, &recs[i], &err);
+		}
+	return rc;
+}
+
 static int
 drag_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 {
@@ -221,7 +241,8 @@ drag_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	size_t np = 0;
 	int rc = 0;
 
-	if (k < 0 || loft_design_from_records(run, recs, n, &d) != 0) {
+	if (k < 0 || loft_design_from_records(run, recs, n, &d) != 0 ||
+	    check_copied(run, recs, n) != 0) {
 		loft_design_free(&d);
 		return 1;
 	}

@@ -1259,6 +1259,14 @@ patchdrag_cases() {
 	design_cases
 	opts -i 1 -u 0.9 -v 0.1 -t 3,0,2
 	design_cases
+	# found by fuzzing: a record that is not dragged is copied, and a
+	# header with no rows was copied too, which loft.5 calls an error
+	OPTS="-i 9 -u 0.5 -v 0.5 -b 0,0,1"
+	printf 'note\n' >"$T/case"
+	bad "a copied header with no rows" 1 "note record has no rows"
+	printf 'note id=7\n1 2\n' >"$T/case"
+	good "a copied record of another type"
+	grep -q '^note id=7$' "$T/caseout" && ok || no "$what: not copied"
 	# values dragging cannot use: bad input, exit 1
 	for a in "-i 99 -u 0.5 -v 0.5 -b 1,0,0" "-i 1 -u 1.5 -v 0.5 -b 1,0,0" \
 	    "-i 1 -u 0 -v 0 -b 1,0,0" "-i 1 -u 0.5 -v 0.5 -b 1,0,0 -e 0.6" \
