@@ -239,10 +239,13 @@ drag_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	struct loft_error err;
 	long k = pick(run, recs, n);
 	size_t np = 0;
-	int rc = 0;
+	int rc = 0, bad;
 
-	if (k < 0 || loft_design_from_records(run, recs, n, &d) != 0 ||
-	    check_copied(run, recs, n) != 0) {
+	if (k < 0)
+		return 1;
+	bad = loft_design_from_records(run, recs, n, &d) != 0;
+	bad |= check_copied(run, recs, n) != 0;   /* report both kinds */
+	if (bad) {
 		loft_design_free(&d);
 		return 1;
 	}
