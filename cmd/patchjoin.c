@@ -36,16 +36,8 @@ join_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	long ip = -1, is = -1;
 	int rc = 0;
 
-	for (size_t i = 0; i < n && rc == 0; i++)
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
-			loft_fail(&err, LOFT_EINPUT, -1, "%s record: patchjoin "
-			    "reads patch records", recs[i].type ? recs[i].type :
-			    "point");
-			err.line = 0;
-			loft_report(run, &recs[i], &err);
-			rc = 1;
-		}
-	if (rc == 0 && loft_design_from_records(run, recs, n, &d) != 0)
+	if (loft_design_only_patches(run, recs, n) != 0 ||
+	    loft_design_from_records(run, recs, n, &d) != 0)
 		rc = 1;
 	if (rc == 0 && ((ip = loft_design_find(&d, o->principal)) < 0 ||
 	    (is = loft_design_find(&d, o->subsidiary)) < 0)) {

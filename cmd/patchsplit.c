@@ -37,16 +37,8 @@ split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	long at = -1;           /* -i: the index of the patch split */
 	int rc = 0;
 
-	for (size_t i = 0; i < n && rc == 0; i++)
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
-			loft_fail(&err, LOFT_EINPUT, -1, "%s record: patchsplit "
-			    "reads patch records", recs[i].type ? recs[i].type :
-			    "point");
-			err.line = 0;
-			loft_report(run, &recs[i], &err);
-			rc = 1;
-		}
-	if (rc == 0 && loft_design_from_records(run, recs, n, &d) != 0)
+	if (loft_design_only_patches(run, recs, n) != 0 ||
+	    loft_design_from_records(run, recs, n, &d) != 0)
 		rc = 1;
 	count = d.n;
 	err.line = 0;           /* loft_fail sets the row, not the line */

@@ -711,6 +711,14 @@ int loft_design_check(const struct loft_design *d, size_t *bad,
 int loft_design_from_records(struct loft_run *run,
     const struct loft_record *recs, size_t n, struct loft_design *d);
 
+/*
+ * For programs that read patches only: report each record of recs[0..n)
+ * that is not a `patch` ("TYPE record: PROG reads patch records").
+ * Returns 0 if there is none, else nonzero after reporting them all.
+ */
+int loft_design_only_patches(struct loft_run *run,
+    const struct loft_record *recs, size_t n);
+
 /* Write patch i of d as a `patch` record, keeping its other attributes. */
 void loft_design_put(struct loft_writer *w, const struct loft_design *d,
     size_t i);

@@ -1241,6 +1241,24 @@ loft_design_join(struct loft_design *d, size_t ip, size_t is,
 /* Reading a design in a program */
 
 int
+loft_design_only_patches(struct loft_run *run, const struct loft_record *recs,
+    size_t n)
+{
+	struct loft_error err;
+	int rc = 0;
+
+	for (size_t i = 0; i < n; i++)
+		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
+			rc = loft_fail(&err, LOFT_EINPUT, -1, "%s record: %s "
+			    "reads patch records", recs[i].type ? recs[i].type :
+			    "point", run->prog);
+			err.line = 0;
+			loft_report(run, &recs[i], &err);
+		}
+	return rc;
+}
+
+int
 loft_design_from_records(struct loft_run *run, const struct loft_record *recs,
     size_t n, struct loft_design *d)
 {
