@@ -831,4 +831,36 @@ void loft_surface_eval(const struct loft_surface *s, double u, double v,
 void loft_surface_eval2(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv, double *duu, double *dvv);
 
+/* ------------------------------------------------------------------ */
+/* Output split into files, each written whole (outfiles.c)            */
+
+struct loft_outfile {
+	char *name;
+	char *buf;
+	size_t len, cap;
+};
+
+/* Files by name, in the order first named.  Starts zeroed. */
+struct loft_outfiles {
+	struct loft_outfile *f;
+	size_t n, cap;
+};
+
+/*
+ * Append text[0..len) to the file called name in s (a new one at the
+ * end if s has none).  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_outfiles_add(struct loft_outfiles *s, const char *name,
+    const char *text, size_t len, struct loft_error *err);
+
+/*
+ * Write f whole: to a new temporary file beside it, then renamed over
+ * f->name.  Returns 0, or LOFT_EIO or LOFT_ENOMEM with a message that
+ * starts with the file's name ("NAME: cannot create: reason"); then no
+ * file is left behind and an old one of that name is untouched.
+ */
+int loft_outfile_write(const struct loft_outfile *f, struct loft_error *err);
+
+void loft_outfiles_free(struct loft_outfiles *s);
+
 #endif
