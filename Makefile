@@ -15,7 +15,8 @@ PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
-          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o
+          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o \
+          bin/obj/grade.o bin/obj/outfiles.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
@@ -58,7 +59,7 @@ bench: all $(BENCH)
 	@sh tests/bench/run.sh
 
 demo: all
-	bin/grade -s -3:4 man/figures/insole.knots | bin/splinefit | \
+	bin/grade -r -3:4 man/figures/insole.knots | bin/splinefit | \
 	    bin/plot -l size > bin/insoles.svg
 	@echo "demo: wrote $$(pwd)/bin/insoles.svg: the insole of" \
 	    "man/figures/insole.knots graded into 8 sizes, -3 to +4, each fitted"

@@ -831,4 +831,118 @@ void loft_surface_eval(const struct loft_surface *s, double u, double v,
 void loft_surface_eval2(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv, double *duu, double *dvv);
 
+/* ------------------------------------------------------------------ */
+/* Grading outlines into shoe sizes (grade.c)                          */
+
+/*
+ * A size system: the length and the insole width a size number adds,
+ * in millimetres; the usual interval between sizes, in size numbers;
+ * the range of sizes, lo to hi.  grade(1) says where each rule comes
+ * from.
+ */
+struct loft_size_system {
+	const char *name;       /* "english", "paris", "mondopoint" */
+	double length, width;
+	double interval;
+	double lo, hi;
+};
+
+/* The systems, ended by one whose name is NULL. */
+extern const struct loft_size_system loft_size_systems[];
+
+/* The system called name, or NULL. */
+const struct loft_size_system *loft_size_system(const char *name);
+
+/*
+ * The frame of an outline: its length runs along axis (0 x, 1 y), len
+ * and wid are its bounding box's extents along and across that axis,
+ * ref the point it grows about.
+ */
+struct loft_grade_frame {
+	int axis;
+	double len, wid;
+	double ref[2];
+};
+
+/* Sides within this fraction of the longer are too near square to say
+ * which is the length: an insole is about 2.8 to 1, and a box nearer
+ * square than 5% could turn the other way with a knot moved a little. */
+#define LOFT_GRADE_SQUARE 0.05
+
+/*
+ * The frame of the n plane knots p (n >= 1).  axis is 0 or 1, or -1 for
+ * the longer side of the bounding box; ref is the reference point, or
+ * NULL for the heel: the first knot of least coordinate along the
+ * length axis.  Returns 0, or LOFT_EINPUT (no knots, an extent that
+ * overflows) or LOFT_EGEOM (no extent along x or y; with axis -1, a
+ * box square within LOFT_GRADE_SQUARE).
+ */
+int loft_grade_frame(const double *p, size_t n, int axis, const double *ref,
+    struct loft_grade_frame *f, struct loft_error *err);
+
+/* A size adds a few per cent to an outline (an English size is 3% of a
+ * 265 mm insole, 8% of a 100 mm child's); a step of more than a quarter
+ * of the outline is in other units than its knots. */
+#define LOFT_GRADE_STEP_MAX 0.25
+
+/*
+ * Check the length and width steps of one size interval, in the knots'
+ * units, against f: 0, or LOFT_EINPUT when one exceeds
+ * LOFT_GRADE_STEP_MAX of the outline's length or width.
+ */
+int loft_grade_steps_fit(const struct loft_grade_frame *f, double lstep,
+    double wstep, struct loft_error *err);
+
+/*
+ * Arithmetic grading: the n knots p made dl longer along f's axis and
+ * dw wider across it about f->ref, exactly L + dl by W + dw, into q (2n
+ * numbers; not p).  With mirror, q is instead the mirror image, about
+ * the line through ref along the length axis, in reverse order, so it
+ * turns the same way round.  Returns 0, or LOFT_EGEOM when L + dl or
+ * W + dw is not positive (the message starts "leaves the outline").
+ */
+int loft_grade_outline(const struct loft_grade_frame *f, const double *p,
+    size_t n, double dl, double dw, int mirror, double *q,
+    struct loft_error *err);
+
+/*
+ * A tangent direction t of the knots (start= or end=) as the grading
+ * stretches it, into q; with mirror, reflected and reversed: the
+ * mirror's tangent at the other end.
+ */
+void loft_grade_direction(const struct loft_grade_frame *f, double dl,
+    double dw, int mirror, const double *t, double *q);
+
+/* ------------------------------------------------------------------ */
+/* Output split into files, each written whole (outfiles.c)            */
+
+struct loft_outfile {
+	char *name;
+	char *buf;
+	size_t len, cap;
+};
+
+/* Files by name, in the order first named.  Starts zeroed. */
+struct loft_outfiles {
+	struct loft_outfile *f;
+	size_t n, cap;
+};
+
+/*
+ * Append text[0..len) to the file called name in s (a new one at the
+ * end if s has none).  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_outfiles_add(struct loft_outfiles *s, const char *name,
+    const char *text, size_t len, struct loft_error *err);
+
+/*
+ * Write f whole: to a new temporary file beside it, then renamed over
+ * f->name.  Returns 0, or LOFT_EIO or LOFT_ENOMEM with a message that
+ * starts with the file's name ("NAME: cannot create: reason"); then no
+ * file is left behind and an old one of that name is untouched.
+ */
+int loft_outfile_write(const struct loft_outfile *f, struct loft_error *err);
+
+void loft_outfiles_free(struct loft_outfiles *s);
+
 #endif

@@ -1014,13 +1014,14 @@ grade_run() { "$B/grade" "$@"; }
 grade_good() {
 	case $1 in
 	1) printf 'points id=1\n0 0\n10 2\n20 0\n10 -3\n' ;;
-	2) printf 'points size=3 name=b start=1,0\n0 0\n50 20\n90 0\n' ;;
+	2) printf 'points size=9 name=b start=1,0\n0 0\n50 20\n90 0\n' ;;
 	esac
 }
 
-grade_opts="-s -1:1"
+# the steps fit the small good records (a step may be a quarter of them)
+grade_opts="-r -1:1 -l 1 -w 0.5"
 grade_cases() {
-	opts -s -1:1
+	opts -r -1:1 -l 1 -w 0.5
 	knots '0 0\n'
 	bad "one knot" 1 "no extent along x"
 	knots '1 0\n1 1\n1 5\n'
@@ -1032,19 +1033,50 @@ grade_cases() {
 	printf 'cubic\n0 0 1 0 0 2 0 -2\n' >"$T/case"
 	bad "a curve record" 1 "cubic record: grade reads knots"
 	printf 'points size=x\n0 0\n100 50\n' >"$T/case"
-	bad "size=x" 1 "attribute size=x: want a whole number"
+	bad "size=x" 1 "attribute size=x: want a whole or half number"
 	printf 'points size=1001\n0 0\n100 50\n' >"$T/case"
-	bad "size=1001" 1 "want a whole number from -1000 to 1000"
+	bad "size=1001" 1 "want a whole or half number from -1000 to 1000"
+	printf 'points size=7.25\n0 0\n100 50\n' >"$T/case"
+	bad "size=7.25" 1 "attribute size=7.25: want a whole or half number"
 	printf 'points start=1\n0 0\n100 50\n' >"$T/case"
 	bad "start=1" 1 "want 2 numbers"
 	knots '0 0\n1e308 1\n-1e308 -1\n'
 	bad "an outline too large" 1 "too large to grade"
 	knots '0 0\n1e-320 1e-320\n2e-320 0\n'
 	sane "a subnormal outline"
-	knots '0 0\n2 10\n5 0\n'
-	bad "a step that leaves no length" 1 "size step -1 leaves the outline no length"
+	# square boxes have no long axis, unless -a names one
+	knots '0 0\n10 0\n10 9.6\n0 9.6\n'
+	bad "a box square within 5%" 1 "10 by 9.6, square within 5%: no long axis"
+	knots '0 0\n10 0\n10 9.4\n0 9.4\n'
+	good "a box 6% from square"
+	# steps more than a quarter of the outline: in other units
+	knots '0 0\n3 1\n2 -1\n'
+	bad "a length step of a third of the outline" 1 \
+	    "a length step of 1 a size is more than 0.25 of the outline's length 3"
 	knots '0 0\n100 1\n200 0\n'
-	bad "a step that leaves no width" 1 "size step -1 leaves the outline no width"
+	bad "a width step of half the outline" 1 \
+	    "a width step of 0.5 a size is more than 0.25 of the outline's width 1"
+	opts -r -4:0 -l 1 -w 0.1
+	knots '0 0\n4 1\n3 -1\n'
+	bad "a step that leaves no length" 1 "size -4 leaves the outline no length (4 -4)"
+	knots '0 0\n100 0.4\n200 0\n'
+	bad "a step that leaves no width" 1 "size -4 leaves the outline no width (0.4 -0.4)"
+	# absolute sizes: the base from size=, in the system's range (the
+	# systems and a record with no size: tests/grade.sh)
+	opts -s 5:7 -l 1 -w 0.5 -b 6
+	printf 'points size=+1\n0 0\n100 50\n' >"$T/case"
+	bad "a relative size= under -s" 1 "size=+1 is a step from an unknown size"
+	printf 'points size=19\n0 0\n100 50\n' >"$T/case"
+	bad "a base size out of range" 1 "size 19 is outside the english range, 1 to 18"
+	opts -r 0:9 -l 1 -w 0.5
+	printf 'points size=10\n0 0\n100 50\n' >"$T/case"
+	bad "a size out of range" 1 "size 19 is outside the english range, 1 to 18"
+	# -m: side= must be left or right
+	opts -r 0:1 -m -l 1 -w 0.5
+	printf 'points side=up\n0 0\n100 50\n' >"$T/case"
+	bad "side=up" 1 "attribute side=up: want left or right"
+	printf 'points side=right\n0 0\n100 50\n' >"$T/case"
+	good "side=right"
 }
 
 # ---- the patch programs: one design --------------------------------------------

@@ -127,13 +127,12 @@ done
 fails 2 "-v 'zx': want xy, yz, xz or iso" "$B/plot -v zx $T/seg.cubic"
 fails 2 "-n '0'" "$B/plot -n 0 $T/seg.cubic"
 fails 2 "-C '0'" "$B/plot -C 0 $T/seg.cubic"
-fails 2 "-s from:to is needed" "$B/grade $T/rect.knots"
-fails 2 "-s '3:1': want from:to" "$B/grade -s 3:1 $T/rect.knots"
-fails 2 "-s '1'" "$B/grade -s 1 $T/rect.knots"
-fails 2 "-s '-1:x'" "$B/grade -s -1:x $T/rect.knots"
-fails 2 "-s '0:1001'" "$B/grade -s 0:1001 $T/rect.knots"
-fails 2 "-l '-1'" "$B/grade -s 0:1 -l -1 $T/rect.knots"
-fails 2 "-o '1': want 2 numbers" "$B/grade -s 0:1 -o 1 $T/rect.knots"
+fails 2 "-s sizes or -r steps is needed" "$B/grade $T/rect.knots"
+fails 2 "-r '3:1': want SIZE or FROM:TO[:STEP]" "$B/grade -r 3:1 $T/rect.knots"
+fails 2 "-r '-1:x'" "$B/grade -r -1:x $T/rect.knots"
+fails 2 "-r '0:1001'" "$B/grade -r 0:1001 $T/rect.knots"
+fails 2 "-l '-1'" "$B/grade -r 0:1 -l -1 $T/rect.knots"
+fails 2 "-o '1': want 2 numbers" "$B/grade -r 0:1 -o 1 $T/rect.knots"
 
 # ---- plot: the Bezier conversion and the frame, by hand ---------------
 # The segment P_A = (0,0), P_B = (1,0), P'_A = (0,2), P'_B = (0,-2):
@@ -329,7 +328,7 @@ sed -n 's/.*translate([^ ]* \([^)]*\)).*/\1/p' "$T/out" |
 # -m marks the rows of a point record; a graded set, labelled by size.
 run "$B/plot -m $T/rect.knots"
 grep -q 'class="points"' "$T/out" && ok || no "-m draws no markers"
-run "$B/grade -s -1:1 man/figures/insole.knots | $B/splinefit | $B/plot -l size"
+run "$B/grade -r -1:1 man/figures/insole.knots | $B/splinefit | $B/plot -l size"
 status 0
 cp "$T/out" "$T/graded.svg"
 svg_ok "$T/graded.svg"
@@ -507,7 +506,7 @@ fails 1 "coordinates too large to draw" \
 # y' = y + y k 2/40; size -1: 100 -> 90, 20 -> 19; size +1: 110, 21.
 # Lengths grow by 10 and widths by 2 a step: not a proportional
 # enlargement (factors 1.1 and 1.05).
-run "$B/grade -s -1:1 -l 10 -w 2 $T/rect.knots"
+run "$B/grade -r -1:1 -l 10 -w 2 $T/rect.knots"
 status 0
 out_is "points size=-1 name=rect
 0 0
@@ -531,7 +530,7 @@ points size=+1 name=rect
 0 21
 "
 # -o 100,0: x' = x + (x - 100) 10/100: 0 -> -10, 100 stays.
-run "$B/grade -s 1:1 -l 10 -w 2 -o 100,0 $T/rect.knots"
+run "$B/grade -r 1:1 -l 10 -w 2 -o 100,0 $T/rect.knots"
 out_is "points size=+1 name=rect
 -10 0
 -10 -21
@@ -541,65 +540,66 @@ out_is "points size=+1 name=rect
 "
 # start= and end= directions stretch with the outline: (1.1, 1.05).
 run "printf 'points size=-1 start=1,1 end=0,-1\n0 0\n100 20\n50 -20\n' |
-    $B/grade -s 1:1 -l 10 -w 2"
+    $B/grade -r 1:1 -l 10 -w 2"
 out_is "points size=0 start=1.1,1.05 end=0,-1.05
 0 0
 110 21
 55 -21
 "
-# The insole with the default steps, 8.46 and 2.54 mm: size k is exactly
-# 265 + 8.46 k long and 95 + 2.54 k wide, for k = -3..4.
-$B/grade -s -3:4 man/figures/insole.knots | awk '
+# The insole with the default steps, English: 25.4/3 mm (a third of an
+# inch) and 2.54 mm: size k is exactly 265 + 25.4 k / 3 long and
+# 95 + 2.54 k wide, for k = -3..4.
+$B/grade -r -3:4 man/figures/insole.knots | awk '
 /^points/ { if (n) check(); split($2, s, "="); k = s[2] + 0; n = 0; next }
 NF == 2 { if (!n++) { x0 = x1 = $1; y0 = y1 = $2 }
 	if ($1 < x0) x0 = $1; if ($1 > x1) x1 = $1
 	if ($2 < y0) y0 = $2; if ($2 > y1) y1 = $2 }
 function check() { recs++
-	if ((x1 - x0 - 265 - 8.46 * k) ^ 2 > 1e-22 ||
+	if ((x1 - x0 - 265 - 25.4 / 3 * k) ^ 2 > 1e-22 ||
 	    (y1 - y0 - 95 - 2.54 * k) ^ 2 > 1e-22) {
 		print "size " k ": " x1 - x0 " by " y1 - y0; bad = 1 } }
 END { check(); exit bad || recs != 8 }' >"$T/msg" && ok ||
     no "insole sizes: $(cat "$T/msg")"
 # -s 0:0 is the identity: the rows come back as they went in.
-run "$B/grade -s 0:0 man/figures/insole.knots"
+run "$B/grade -r 0:0 man/figures/insole.knots"
 { echo "points size=0"; sed '/^#/d' man/figures/insole.knots; echo; } |
     cmp -s - "$T/out" && ok || no "-s 0:0 changes the knots"
 # Two steps of one are one step of two: L grows by l each time, so the
 # factors (L+l)/L and (L+2l)/(L+l) multiply to (L+2l)/L; the heel point
 # stays where it is.
-$B/grade -s 1:1 man/figures/insole.knots | $B/grade -s 1:1 >"$T/twice"
-$B/grade -s 2:2 man/figures/insole.knots >"$T/once"
+$B/grade -r 1:1 man/figures/insole.knots | $B/grade -r 1:1 >"$T/twice"
+$B/grade -r 2:2 man/figures/insole.knots >"$T/once"
 paste -d ' ' "$T/twice" "$T/once" | awk '
 NR == 1 { if ($0 != "points size=+2 points size=+2") bad = 1; next }
 NF == 4 { if (($1 - $3) ^ 2 + ($2 - $4) ^ 2 > 1e-20) bad = 1; n++ }
 END { exit bad || n != 22 }' && ok || no "grade twice by 1 differs from by 2"
 # many records in, many out, in order
-run "sed 's/rect/second/' $T/rect.knots | $B/grade -s -1:0 - $T/rect.knots"
+run "sed 's/rect/second/' $T/rect.knots | $B/grade -r -1:0 - $T/rect.knots"
 [ "$(grep '^points' "$T/out" | tr '\n' ' ')" = \
     "points size=-1 name=second points size=0 name=second points size=-1 name=rect points size=0 name=rect " ] &&
     ok || no "many records: $(grep '^points' "$T/out" | tr '\n' ' ')"
 
 # ---- grade: bad input -----------------------------------------------------
-fails 1 "cubic record: grade reads knots" "$B/grade -s 0:1 $T/seg.cubic"
+fails 1 "cubic record: grade reads knots" "$B/grade -r 0:1 $T/seg.cubic"
 fails 1 "knots have 3 coordinates; grade reads plane outlines" \
-    "printf '0 0 0\n1 1 1\n' | $B/grade -s 0:1"
+    "printf '0 0 0\n1 1 1\n' | $B/grade -r 0:1"
 fails 1 "<stdin>:1: the knots have no extent along x" \
-    "printf '0 0\n0 1\n' | $B/grade -s 0:1"
-fails 1 "no extent along y" "printf '0 0\n1 0\n' | $B/grade -s 0:1"
-fails 1 "size step -10 leaves the outline no length (100 -100)" \
-    "$B/grade -s -10:0 -l 10 $T/rect.knots"
-fails 1 "attribute size=big: want a whole number" \
-    "printf 'points size=big\n0 0\n1 1\n' | $B/grade -s 0:1"
+    "printf '0 0\n0 1\n' | $B/grade -r 0:1"
+fails 1 "no extent along y" "printf '0 0\n1 0\n' | $B/grade -r 0:1"
+fails 1 "size -10 leaves the outline no length (100 -100)" \
+    "$B/grade -r -10:0 -l 10 $T/rect.knots"
+fails 1 "attribute size=big: want a whole or half number" \
+    "printf 'points size=big\n0 0\n1 1\n' | $B/grade -r 0:1"
 fails 1 "attribute start=1: want 2 numbers" \
-    "printf 'points start=1\n0 0\n1 1\n' | $B/grade -s 0:1"
-fails 1 "record has no knots" "printf 'points\n' | $B/grade -s 0:0"
+    "printf 'points start=1\n0 0\n100 50\n' | $B/grade -r 0:1"
+fails 1 "record has no knots" "printf 'points\n' | $B/grade -r 0:0"
 { printf '0 0\n0 1\n\n'; cat "$T/rect.knots"; } >"$T/gmixed"
-run "$B/grade -s 0:0 $T/gmixed"
+run "$B/grade -r 0:0 $T/gmixed"
 status 1
 says "grade: $T/gmixed:1: the knots have no extent along x"
 [ "$(grep -c '^points size=0 name=rect$' "$T/out")" = 1 ] && ok ||
     no "grade: the good record after a bad one"
-run "$B/grade -s 0:0 $T/rect.knots > /dev/full"
+run "$B/grade -r 0:0 $T/rect.knots > /dev/full"
 status 1
 says "grade: write error"
 

@@ -411,6 +411,51 @@ test_baselines_open(void)
 	NEAR(seg[7], 0, 1e-14, "ferguson: straight");
 }
 
+/*
+ * Grading (grade.c): the systems against their definitions (three
+ * English sizes are an inch, 25.4 mm; three Paris points 2 cm), and a
+ * 10 by 4 rectangle graded and mirrored by hand.
+ */
+static void
+test_grade(void)
+{
+	const struct loft_size_system *en = loft_size_system("english");
+	const struct loft_size_system *pa = loft_size_system("paris");
+	const struct loft_size_system *mo = loft_size_system("mondopoint");
+	double box[8] = { 0, 0, 10, 0, 10, 4, 0, 4 }, q[8];
+	double tall[8] = { 0, 3, 0, 0, 4, 0, 4, 10 }, sq[4] = { 0, 0, 10, 9.6 };
+	static const double grown[8] = { 0, 0, 12, 0, 12, 5, 0, 5 };
+	static const double mirrored[8] = { 0, -5, 12, -5, 12, 0, 0, 0 };
+	struct loft_grade_frame f;
+	struct loft_error err;
+
+	CHECK(en && pa && mo && loft_size_system("us") == NULL, "systems");
+	NEAR(3 * en->length, 25.4, 1e-13, "english: 3 sizes an inch");
+	NEAR(10 * en->width, 25.4, 1e-13, "english: width a tenth inch");
+	NEAR(3 * pa->length, 20, 1e-13, "paris: 3 points 2 cm");
+	NEAR(pa->width, 2, 1e-15, "paris: width 2 mm");
+	CHECK(mo->length == 1 && mo->interval == 5, "mondopoint: mm, by 5");
+	CHECK(loft_grade_frame(box, 4, -1, NULL, &f, &err) == 0 &&
+	    f.axis == 0 && f.len == 10 && f.wid == 4 && f.ref[0] == 0 &&
+	    f.ref[1] == 0, "frame of the box");
+	CHECK(loft_grade_outline(&f, box, 4, 2, 1, 0, q, &err) == 0 &&
+	    memcmp(q, grown, sizeof q) == 0, "the box 2 longer, 1 wider");
+	CHECK(loft_grade_outline(&f, box, 4, 2, 1, 1, q, &err) == 0 &&
+	    memcmp(q, mirrored, sizeof q) == 0, "its mirror");
+	CHECK(loft_grade_outline(&f, box, 4, -10, 0, 0, q, &err) ==
+	    LOFT_EGEOM, "no length left");
+	CHECK(loft_grade_steps_fit(&f, 2.5, 1, &err) == 0 &&
+	    loft_grade_steps_fit(&f, 2.6, 1, &err) != 0 &&
+	    loft_grade_steps_fit(&f, 1, 1.1, &err) != 0, "steps a quarter");
+	/* toe along y: the heel is the knot of least y, the first of two */
+	CHECK(loft_grade_frame(tall, 4, -1, NULL, &f, &err) == 0 &&
+	    f.axis == 1 && f.len == 10 && f.wid == 4 && f.ref[0] == 0 &&
+	    f.ref[1] == 0, "frame of the tall box");
+	CHECK(loft_grade_frame(sq, 2, -1, NULL, &f, &err) == LOFT_EGEOM,
+	    "square within 5%%");
+	CHECK(loft_grade_frame(sq, 2, 0, NULL, &f, &err) == 0, "-a x");
+}
+
 int
 main(void)
 {
@@ -426,5 +471,6 @@ main(void)
 	test_end_tangent();
 	test_ferguson_polygon();
 	test_baselines_open();
+	test_grade();
 	return check_done("unit");
 }
