@@ -82,12 +82,60 @@ eval(const double *s, double u, double *p, double *d, double *dd)
 	}
 }
 
+/* The distance from q to the box of the segment's Bezier control points
+ * A, A + A'/3, B - B'/3, B, whose hull holds the segment. */
+static double
+boxdist(const double *s, const double *q)
+{
+	double e = 0;
+
+	for (int k = 0; k < 2; k++) {
+		double v[4] = { s[k], s[k] + s[4 + k] / 3, s[2 + k] - s[6 + k] / 3,
+		    s[2 + k] }, lo = v[0], hi = v[0];
+
+		for (int j = 1; j < 4; j++) {
+			lo = fmin(lo, v[j]);
+			hi = fmax(hi, v[j]);
+		}
+		e = fmax(e, fmax(lo - q[k], q[k] - hi));
+	}
+	return e;
+}
+
+struct near {
+	double d;
+	size_t i;
+};
+
+static int
+cmp_near(const void *a, const void *b)
+{
+	const struct near *p = a, *q = b;
+
+	return (p->d > q->d) - (p->d < q->d);
+}
+
+/* Segments in order of their boxes' distance, until a box is farther
+ * than the best point found. */
 static double
 dist(const struct set *c, const double *q)
 {
+	static struct near *ord;
+	static size_t cap;
 	double best = INFINITY;
 
+	if (cap < c->n) {
+		cap = c->n;
+		if ((ord = realloc(ord, cap * sizeof *ord)) == NULL)
+			exit(2);
+	}
 	for (size_t i = 0; i < c->n; i++) {
+		ord[i].d = boxdist(c->s[i], q);
+		ord[i].i = i;
+	}
+	qsort(ord, c->n, sizeof *ord, cmp_near);
+	for (size_t o = 0; o < c->n && ord[o].d < best; o++) {
+		size_t i = ord[o].i;
 		double p[2], d[2], dd[2], u0 = 0, b = INFINITY, u;
 
 		for (int j = 0; j <= 64; j++) {
