@@ -1032,6 +1032,14 @@ fit_curve(struct ctx *x, double *area)
 	return 0;
 }
 
+/* Move the end point a and the start point b to where they meet. */
+static void
+meet(double *a, double *b)
+{
+	a[0] = b[0] = (a[0] + b[0]) / 2;
+	a[1] = b[1] = (a[1] + b[1]) / 2;
+}
+
 /* The raw offset, joins and all, into w->ch. */
 static int
 raw_offset(struct ctx *x, enum loft_join kind)
@@ -1066,13 +1074,8 @@ raw_offset(struct ctx *x, enum loft_join kind)
 			if (GROW(w, ch, chcap, w->nch + cnt) != 0)
 				return LOFT_ENOMEM;
 			memcpy(w->ch + w->nch, w->em, cnt * sizeof *w->em);
-			if (snap) {
-				double *a = w->ch[w->nch - 1].p + 6;
-
-				a[0] = (a[0] + pj[0]) / 2;
-				a[1] = (a[1] + pj[1]) / 2;
-				vcopy(w->ch[w->nch].p, a, 2);
-			}
+			if (snap)
+				meet(w->ch[w->nch - 1].p + 6, w->ch[w->nch].p);
 			w->nch += cnt;
 		}
 		prev = i;
@@ -1083,12 +1086,8 @@ raw_offset(struct ctx *x, enum loft_join kind)
 		vcopy(pj, w->ch[0].p, 2);
 		if ((r = join(x, prev, first, kind, pj, &snap)) != 0)
 			return r;
-		if (snap) {
-			double *a = w->ch[w->nch - 1].p + 6;
-
-			a[0] = (a[0] + pj[0]) / 2;
-			a[1] = (a[1] + pj[1]) / 2;
-		}
+		if (snap)
+			meet(w->ch[w->nch - 1].p + 6, w->ch[0].p);
 		vcopy(w->ch[0].p, w->ch[w->nch - 1].p + 6, 2);
 	}
 	return 0;
