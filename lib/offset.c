@@ -1124,7 +1124,8 @@ crossings(struct ctx *x)
 			s->sb = t;
 		}
 	}
-	qsort(w->is, w->nis, sizeof *w->is, cmp_isect);
+	if (w->nis > 1)         /* qsort wants an array, even of none */
+		qsort(w->is, w->nis, sizeof *w->is, cmp_isect);
 	for (size_t i = 0; i < w->nis; i++) {
 		int dup = 0;
 
@@ -1143,7 +1144,8 @@ crossings(struct ctx *x)
 		w->cut[2 * i].is = w->cut[2 * i + 1].is = i;
 	}
 	w->ncut = 2 * m;
-	qsort(w->cut, w->ncut, sizeof *w->cut, cmp_cut);
+	if (w->ncut > 1)
+		qsort(w->cut, w->ncut, sizeof *w->cut, cmp_cut);
 	/* partners: the two cuts of one crossing; first seen in is[].sa */
 	{
 		long *seen;
