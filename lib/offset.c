@@ -65,7 +65,11 @@
 /* Halvings of two cubics before their crossing is taken from chords. */
 #define ISECT_DEPTH 52
 
-enum { RAW, JOIN_OUT, JOIN_IN };
+/* The kinds of piece of the raw offset: the offset proper, where it runs
+ * backwards (between two cusps: the curve's radius of curvature is less
+ * than |D| there, so nearer points of the curve lie round it and none
+ * of it is kept), and the joins on the outer and inner side of a corner. */
+enum { RAW, BACK, JOIN_OUT, JOIN_IN };
 
 struct bz {
 	double p[8];            /* control points b0..b3, x y each */
@@ -467,8 +471,8 @@ fit_piece(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
 	size_t ns = nsample(x->c), nb = 0;
 	const double *kap = w->kap + i * (ns + 1);
 	const signed char *cut = w->cutat + i * (ns + 1);
-	double oa[2], da[2], ob[2], db[2];
-	int r;
+	double oa[2], da[2], ob[2], db[2], o[2], k;
+	int r, back = 0;
 
 	if (GROW(w, brk, brkcap, 2 * ns + 2) != 0)
 		return LOFT_ENOMEM;
@@ -481,6 +485,7 @@ fit_piece(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
 			    (double)j / ns, D);
 		if (cut[j] || j == ns)
 			w->brk[nb++] = (double)j / ns;
+		back |= !(g > 0) || !(gp > 0);
 	}
 	if (offset_eval(x, i, 0, D, oa, da, NULL, NULL) != 0)
 		return loft_fail(x->err, LOFT_EGEOM, (long)i, "segment %zu: "
@@ -493,9 +498,16 @@ fit_piece(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
 		if (offset_eval(x, i, b, D, ob, db, NULL, NULL) != 0)
 			return loft_fail(x->err, LOFT_EGEOM, (long)i, "segment "
 			    "%zu: the offset is not finite", i + 1);
+		size_t n0 = *n;
+
 		r = fit(x, arr, n, cap, i, w->brk[j - 1], b, oa, da, ob, db, D, 0);
 		if (r != 0)
 			return r;
+		/* between cusps the offset runs backwards, or it does not */
+		if (D != 0 && back && offset_eval(x, i, (w->brk[j - 1] + b) / 2,
+		    D, o, NULL, NULL, &k) == 0 && 1 - D * k < 0)
+			for (size_t m = n0; m < *n; m++)
+				(*arr)[m].kind = BACK;
 		vcopy(oa, ob, 2);
 		vcopy(da, db, 2);
 	}
@@ -802,8 +814,9 @@ cmp_cut(const void *a, const void *b)
 /* ---- runs between crossings --------------------------------------------- */
 
 /*
- * Whether run r keeps |D| from the curve (less half the tolerance) at
- * the middle of its parts, joins on the outer side excepted: of every
+ * Whether run r is of the offset running forwards, and keeps |D| from
+ * the curve (less half the tolerance) at the middle of its parts, joins
+ * on the outer side excepted: of every
  * part where it has at most RUN_SAMPLES, else of RUN_SAMPLES spread
  * along it.  Between two crossings the distance to the curve cannot
  * pass |D| (it could only at a crossing, or where the offset touches
@@ -819,6 +832,10 @@ run_good(const struct ctx *x, const struct run *r)
 	double r0 = fabs(x->D) - 2 * x->tol, q[2], r2 = r0 * r0;
 	double step = floor((r->s1 - r->s0) / RUN_SAMPLES);
 
+	for (double g = floor(r->s0); g < r->s1; g++)
+		if (fmin(r->s1 - g, 1) - fmax(r->s0 - g, 0) > 1e-12 &&
+		    w->ch[(size_t)g % n].kind == BACK)
+			return 0;
 	if (!(r0 > 0))
 		return 1;
 	if (step < 1)

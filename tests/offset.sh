@@ -132,6 +132,12 @@ for d in -5 15 4; do
 	status 0
 	ref "$T/insole.cubic" "$T/out" "$d" "$(echo "$d" | awk '{ print ($1 < 0 ? -$1 : $1) * 1e-3 }')"
 done
+# far outward the arch's concave side turns the raw offset back in a
+# swallowtail; what is left is one curve (the dilated insole has no hole)
+run "$B/offset -d 200 $T/insole.cubic"
+status 0
+[ "$(grep -c '^cubic' "$T/out")" = 1 ] && ok || no "-d 200: not one curve: $(grep -c '^cubic' "$T/out")"
+ref "$T/insole.cubic" "$T/out" 200 0.2
 # a tighter tolerance holds too
 run "$B/offset -d 15 -t 1e-6 $T/insole.cubic"
 ref "$T/insole.cubic" "$T/out" 15 1e-6
