@@ -1110,6 +1110,48 @@ raw_offset(struct ctx *x, enum loft_join kind)
 	return 0;
 }
 
+/*
+ * Drop each stretch of the raw offset that runs backwards and is no
+ * larger than the tolerance, joining the pieces either side where they
+ * meet: a swallowtail so small that its fitted pieces need not cross
+ * (the fit may stray by a quarter of the tolerance), which would
+ * otherwise condemn the whole run it lies in.  A stretch across the
+ * closing join of a closed chain is left to the crossings.
+ */
+static void
+drop_small_backs(struct ctx *x)
+{
+	struct loft_offset_work *w = x->w;
+	size_t m = 0, n = w->nch;
+
+	for (size_t i = 0; i < n;) {
+		size_t j = i;
+		double box[4], b[4];
+
+		if (w->ch[i].kind != BACK) {
+			w->ch[m++] = w->ch[i++];
+			continue;
+		}
+		bz_box(w->ch[i].p, box);
+		for (; j < n && w->ch[j].kind == BACK; j++) {
+			bz_box(w->ch[j].p, b);
+			for (int k = 0; k < 2; k++) {
+				box[k] = fmin(box[k], b[k]);
+				box[2 + k] = fmax(box[2 + k], b[2 + k]);
+			}
+		}
+		if (len2(box[2] - box[0], box[3] - box[1]) > 4 * x->tol ||
+		    m == 0 || j == n) {
+			while (i < j)
+				w->ch[m++] = w->ch[i++];
+			continue;
+		}
+		meet(w->ch[m - 1].p + 6, w->ch[j].p);
+		i = j;
+	}
+	w->nch = m;
+}
+
 /* The crossings of the raw offset, sorted and each once, and the cuts. */
 static int
 crossings(struct ctx *x)
@@ -1229,41 +1271,103 @@ runs(struct ctx *x)
 	return 0;
 }
 
-/* Chain the kept runs into parts and write them to out. */
+/* The size of run k: the diagonal of the box of its pieces' parts. */
+static double
+run_size(const struct ctx *x, long k)
+{
+	const struct loft_offset_work *w = x->w;
+	const struct run *r = &w->run[k];
+	double box[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY }, b[4], p[8];
+
+	for (double g = floor(r->s0); g < r->s1; g++) {
+		double ta = fmax(r->s0 - g, 0), tb = fmin(r->s1 - g, 1);
+
+		if (tb - ta <= 1e-12)
+			continue;
+		bz_sub(w->ch[(size_t)g % w->nch].p, ta, tb, p);
+		bz_box(p, b);
+		for (int c = 0; c < 2; c++) {
+			box[c] = fmin(box[c], b[c]);
+			box[2 + c] = fmax(box[2 + c], b[2 + c]);
+		}
+	}
+	return box[2] >= box[0] ? len2(box[2] - box[0], box[3] - box[1]) : 0;
+}
+
+/* How large a tail of kept runs may be, in tolerances, and be dropped:
+ * slivers at shallow crossings are a few tolerances long. */
+#define TAIL_MAX 16
+
+/* Emit the runs from k on as one part, until the next is start or is
+ * none or already taken. */
+static int
+emit_from(struct ctx *x, struct loft_offset *out, long k, long stop,
+    int closed, double area)
+{
+	struct loft_offset_work *w = x->w;
+
+	w->nem = 0;
+	do {
+		w->run[k].seen = -1;
+		if (emit_run(x, k) != 0)
+			return LOFT_ENOMEM;
+		k = w->run[k].next;
+	} while (k >= 0 && k != stop && w->run[k].seen != -1);
+	return put_part(x, out, closed, area);
+}
+
+/*
+ * Chain the kept runs into parts and write them to out.  Each kept run
+ * leads to one other or none (run_next), so the runs of a closed curve
+ * fall into cycles, the parts, and tails that lead into them or end:
+ * a tail no larger than TAIL_MAX tolerances is a sliver between
+ * crossings that came close together (where three branches of the
+ * offset nearly meet, the runs between them are short and stay within
+ * the tolerance of the distance), and is dropped; a larger one means
+ * the crossings were not all found.  An open curve's parts start at the
+ * kept runs that no kept run leads to.
+ */
 static int
 chain(struct ctx *x, struct loft_offset *out, double area)
 {
 	struct loft_offset_work *w = x->w;
 	size_t M = w->nrun;
+	long walk = 0;
 	int r;
 
-	/* an open curve: first the parts that start where no run leads */
-	for (int pass = x->closed; pass < 2; pass++)
-		for (size_t j = 0; j < M; j++) {
-			long k = (long)j;
-			int closed = 0;
+	if (!x->closed) {
+		for (size_t j = 0; j < M; j++)
+			if (w->run[j].good && !w->run[j].led && !w->run[j].seen &&
+			    (r = emit_from(x, out, (long)j, -1, 0, 0)) != 0)
+				return r;
+		for (size_t j = 0; j < M; j++)  /* loops left over */
+			if (w->run[j].good && !w->run[j].seen &&
+			    (r = emit_from(x, out, (long)j, (long)j, 1, 0)) != 0)
+				return r;
+		return 0;
+	}
+	for (size_t j = 0; j < M; j++) {
+		long k = (long)j;
 
-			if (!w->run[j].good || w->run[j].seen)
-				continue;
-			if (pass == 0 && w->run[j].led)
-				continue;
-			w->nem = 0;
-			while (k >= 0 && !w->run[k].seen) {
-				w->run[k].seen = 1;
-				if (emit_run(x, k) != 0)
-					return LOFT_ENOMEM;
-				k = w->run[k].next;
-				if (k == (long)j)
-					closed = 1;
-			}
-			if (x->closed && !closed)
+		if (!w->run[j].good || w->run[j].seen)
+			continue;
+		walk++;
+		while (k >= 0 && w->run[k].seen == 0) {
+			w->run[k].seen = walk;
+			k = w->run[k].next;
+		}
+		if (k >= 0 && w->run[k].seen == walk &&
+		    (r = emit_from(x, out, k, k, 1, area)) != 0)
+			return r;
+		/* what this walk marked and did not emit is a tail */
+		for (long t = (long)j; t >= 0 && w->run[t].seen == walk;
+		    t = w->run[t].next)
+			if (run_size(x, t) > TAIL_MAX * 4 * x->tol)
 				return loft_fail(x->err, LOFT_EGEOM, -1, "the "
 				    "offset's pieces do not close up once its "
 				    "loops are cut away: it cannot be made at "
 				    "this distance");
-			if ((r = put_part(x, out, closed, x->closed ? area : 0)))
-				return r;
-		}
+	}
 	return 0;
 }
 
@@ -1310,7 +1414,9 @@ loft_offset_curve(const struct loft_curve *c, double dist, double tol,
 		r = LOFT_ENOMEM;
 		goto done;
 	}
-	if ((r = raw_offset(&x, kind)) != 0 || (r = crossings(&x)) != 0 ||
+	if ((r = raw_offset(&x, kind)) == 0)
+		drop_small_backs(&x);
+	if (r != 0 || (r = crossings(&x)) != 0 ||
 	    (r = runs(&x)) != 0 || (r = chain(&x, out, area)) != 0)
 		goto done;
 	if (out->npart == 0 && c->closed && dist < 0)

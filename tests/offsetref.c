@@ -12,8 +12,10 @@
  *            within TOL (skipped with -n: joins that are not arcs);
  *   reverse  every point c + D n of the exact offset (D = DIST, to the
  *            left of an open curve, outward of a closed one by the sign
- *            of its area) that is at least |DIST| - TOL/4 from the whole
- *            curve is within TOL of OFFSETS: nothing is missing.
+ *            of its area) that is |DIST| from the whole curve (to 1e-7
+ *            of it: these points are exact, and one a little nearer
+ *            the curve is past a crossing, cut away) is within TOL of
+ *            OFFSETS: nothing is missing.
  * Prints the worst of each and exits 1 when a check fails.
  */
 #include <math.h>
@@ -220,7 +222,7 @@ main(int argc, char *argv[])
 				continue;
 			o[0] = p[0] - D * t[1] / L;
 			o[1] = p[1] + D * t[0] / L;
-			if (dist(&in, o) < fabs(d) - tol / 4)
+			if (dist(&in, o) < fabs(d) * (1 - 1e-7))
 				continue;
 			nrev++;
 			rev = fmax(rev, dist(&out, o));
