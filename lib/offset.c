@@ -62,6 +62,9 @@
 /* The self-intersection search gives up after this many box tests per
  * piece: parts of the offset that run along one another. */
 #define ISECT_WORK 4000
+/* How large a tail of kept runs may be, in tolerances, and be dropped:
+ * slivers at shallow crossings are a few tolerances long. */
+#define TAIL_MAX 16
 /* Halvings of two cubics before their crossing is taken from chords. */
 #define ISECT_DEPTH 52
 
@@ -85,6 +88,7 @@ struct node {
 struct isect {
 	double sa, sb;          /* parameters along the raw offset, sa < sb */
 	double pt[2];
+	int single;             /* an open curve's end effect: sa alone */
 };
 
 struct cut {
@@ -352,7 +356,11 @@ push(struct bz **arr, size_t *n, size_t *cap, const double *p, int kind)
  * Append to arr the cubic pieces within x->tol of the offset at D of
  * piece i from a to b, whose ends oa, ob and derivatives da, db are
  * known: the Hermite cubic of those, checked at five interior points
- * against the exact offset, or the two halves.
+ * against the exact offset, or the two halves.  The curve itself (D =
+ * 0) is fitted four times closer, so that the distances measured to it
+ * judge within the tolerance: a point kept is at most half the
+ * tolerance nearer than |D| to the fit, a sixteenth to the curve's fit,
+ * a sixteenth more by the flatness of near_bz.
  */
 static int
 fit(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
@@ -361,6 +369,7 @@ fit(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
 {
 	static const double us[5] = { 0.125, 0.25, 0.5, 0.75, 0.875 };
 	double h = b - a, bz[8], om[2], dm[2], q[2], e = 0;
+	double tol = D != 0 ? x->tol : x->tol / 4;
 	int r;
 
 	for (int k = 0; k < 2; k++) {
@@ -369,13 +378,13 @@ fit(struct ctx *x, struct bz **arr, size_t *n, size_t *cap, size_t i,
 		bz[4 + k] = ob[k] - h * db[k] / 3;
 		bz[6 + k] = ob[k];
 	}
-	for (int j = 0; j < 5 && !(e > x->tol); j++) {
+	for (int j = 0; j < 5 && !(e > tol); j++) {
 		if (offset_eval(x, i, a + us[j] * h, D, om, NULL, NULL, NULL))
 			goto fail;
 		bz_eval(bz, us[j], q);
 		e = vdist(q, om, 2);
 	}
-	if (e <= x->tol)
+	if (e <= tol)
 		return push(arr, n, cap, bz, RAW) ? LOFT_ENOMEM : 0;
 	if (depth >= FIT_DEPTH)
 		return loft_fail(x->err, LOFT_EGEOM, (long)i, "the offset of "
@@ -693,6 +702,7 @@ add_isect(struct ctx *x, size_t i, double ta, size_t j, double tb,
 	s->sa = (double)i + ta;
 	s->sb = (double)j + tb;
 	vcopy(s->pt, pt, 2);
+	s->single = 0;
 	return 0;
 }
 
@@ -864,7 +874,8 @@ run_next(const struct ctx *x, long k)
 	if (e < 0)
 		return -1;
 	/* the run starting at cut c: c on a closed chain, c + 1 on an open */
-	cand[0] = w->cut[e].partner + (x->closed ? 0 : 1);
+	cand[0] = w->cut[e].partner < 0 ? -1 :
+	    w->cut[e].partner + (x->closed ? 0 : 1);
 	cand[1] = e + (x->closed ? 0 : 1);
 	for (int j = 0; j < 2; j++)
 		if (cand[j] >= 0 && cand[j] < m && w->run[cand[j]].good)
@@ -907,17 +918,25 @@ put_part(struct ctx *x, struct loft_offset *out, int closed, double area)
 	size_t m = 0;
 	double a = 0, S = x->size, tiny = TINY_PIECE * 100;
 
+	double all[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
+
 	for (size_t i = 0; i < w->nem; i++) {
 		double box[4];
 
 		bz_box(w->em[i].p, box);
+		for (int k = 0; k < 2; k++) {
+			all[k] = fmin(all[k], box[k]);
+			all[2 + k] = fmax(all[2 + k], box[2 + k]);
+		}
 		if (box[2] - box[0] <= tiny && box[3] - box[1] <= tiny)
 			continue;
 		if (m > 0)
 			vcopy(w->em[i].p, w->em[m - 1].p + 6, 2);
 		w->em[m++] = w->em[i];
 	}
-	if (m == 0)
+	/* a sliver of an open curve's offset, as the tails of chain() */
+	if (m == 0 || (!closed && len2(all[2] - all[0], all[3] - all[1]) <=
+	    TAIL_MAX * 4 * x->tol))
 		return 0;
 	if (closed)
 		vcopy(w->em[m - 1].p + 6, w->em[0].p, 2);
@@ -1152,6 +1171,121 @@ drop_small_backs(struct ctx *x)
 	w->nch = m;
 }
 
+/* The cuts of the crossings in w->is, two each (one for a single), in
+ * order along the raw offset, and their partners. */
+static int
+make_cuts(struct ctx *x)
+{
+	struct loft_offset_work *w = x->w;
+	size_t m = w->nis, n = 0;
+	long *seen;
+
+	if (GROW(w, cut, cutcap, 2 * m + 1) != 0 ||
+	    GROW(w, comp, compcap, m + 1) != 0)
+		return LOFT_ENOMEM;
+	for (size_t i = 0; i < m; i++) {
+		w->cut[n].s = w->is[i].sa;
+		w->cut[n].partner = -1;
+		w->cut[n++].is = i;
+		if (w->is[i].single)
+			continue;
+		w->cut[n].s = w->is[i].sb;
+		w->cut[n].partner = -1;
+		w->cut[n++].is = i;
+	}
+	w->ncut = n;
+	if (n > 1)              /* qsort wants an array, even of none */
+		qsort(w->cut, n, sizeof *w->cut, cmp_cut);
+	seen = w->comp;
+	for (size_t i = 0; i < m; i++)
+		seen[i] = -1;
+	for (size_t c = 0; c < n; c++) {
+		size_t i = w->cut[c].is;
+
+		if (seen[i] < 0) {
+			seen[i] = (long)c;
+		} else {
+			w->cut[c].partner = seen[i];
+			w->cut[seen[i]].partner = (long)c;
+		}
+	}
+	return 0;
+}
+
+/* Whether the raw offset at s keeps |D| from the curve, less half the
+ * tolerance (an outer join always does, a backward stretch never). */
+static int
+keeps(const struct ctx *x, double s)
+{
+	const struct loft_offset_work *w = x->w;
+	size_t k = s >= (double)w->nch ? w->nch - 1 : (size_t)s;
+	double r0 = fabs(x->D) - 2 * x->tol, q[2];
+
+	if (w->ch[k].kind == JOIN_OUT)
+		return 1;
+	if (w->ch[k].kind == BACK)
+		return 0;
+	bz_eval(w->ch[k].p, s - (double)k, q);
+	return !(r0 > 0) || !near_curve(x, 0, q, r0 * r0);
+}
+
+/*
+ * An open curve has ends, and near its ends the offset may come nearer
+ * the curve than |D| without crossing itself: where it passes the end
+ * of the curve (an outline whose ends nearly meet).  Within each run
+ * between crossings, at its ends and at END_SAMPLES points of each of
+ * its pieces, find where the offset starts or stops keeping |D| from
+ * the curve, and cut there too (by bisection, to PARAM_EQ): a single cut,
+ * without a partner.
+ */
+#define END_SAMPLES 8
+static int
+end_cuts(struct ctx *x)
+{
+	struct loft_offset_work *w = x->w;
+	size_t K = w->ncut;
+	double N = (double)w->nch;
+
+	for (size_t j = 0; j <= K; j++) {
+		double a = j > 0 ? w->cut[j - 1].s : 0, b = j < K ? w->cut[j].s : N;
+		double h = fmin((b - a) / 4, 1e-6), lo = a + h, q[2];
+		int prev;
+
+		if (!(b - a > 4 * PARAM_EQ))
+			continue;
+		prev = keeps(x, lo);
+		for (double g = (floor(lo * END_SAMPLES) + 1) / END_SAMPLES; ;
+		    g += 1.0 / END_SAMPLES) {
+			double hi = g < b - h ? g : b - h;
+			int now = keeps(x, hi);
+
+			if (now != prev) {
+				double l = lo, u = hi;
+
+				while (u - l > PARAM_EQ) {
+					double mid = (l + u) / 2;
+
+					if (keeps(x, mid) == prev)
+						l = mid;
+					else
+						u = mid;
+				}
+				if (GROW(w, is, iscap, w->nis + 1) != 0)
+					return LOFT_ENOMEM;
+				bz_eval(w->ch[(size_t)l].p, l - floor(l), q);
+				w->is[w->nis].sa = w->is[w->nis].sb = l;
+				vcopy(w->is[w->nis].pt, q, 2);
+				w->is[w->nis++].single = 1;
+			}
+			prev = now;
+			lo = hi;
+			if (hi >= b - h)
+				break;
+		}
+	}
+	return 0;
+}
+
 /* The crossings of the raw offset, sorted and each once, and the cuts. */
 static int
 crossings(struct ctx *x)
@@ -1195,37 +1329,11 @@ crossings(struct ctx *x)
 			w->is[m++] = w->is[i];
 	}
 	w->nis = m;
-	if (GROW(w, cut, cutcap, 2 * m + 1) != 0)
-		return LOFT_ENOMEM;
-	for (size_t i = 0; i < m; i++) {
-		w->cut[2 * i].s = w->is[i].sa;
-		w->cut[2 * i + 1].s = w->is[i].sb;
-		w->cut[2 * i].is = w->cut[2 * i + 1].is = i;
-	}
-	w->ncut = 2 * m;
-	if (w->ncut > 1)
-		qsort(w->cut, w->ncut, sizeof *w->cut, cmp_cut);
-	/* partners: the two cuts of one crossing; first seen in is[].sa */
-	{
-		long *seen;
-
-		if (GROW(w, comp, compcap, m + 1) != 0)
-			return LOFT_ENOMEM;
-		seen = w->comp;
-		for (size_t i = 0; i < m; i++)
-			seen[i] = -1;
-		for (size_t c = 0; c < w->ncut; c++) {
-			size_t i = w->cut[c].is;
-
-			if (seen[i] < 0) {
-				seen[i] = (long)c;
-			} else {
-				w->cut[c].partner = seen[i];
-				w->cut[seen[i]].partner = (long)c;
-			}
-		}
-	}
-	return 0;
+	if ((r = make_cuts(x)) != 0 || x->closed)
+		return r;
+	if ((r = end_cuts(x)) != 0)
+		return r;
+	return make_cuts(x);
 }
 
 /* The runs between the cuts, each judged. */
@@ -1293,10 +1401,6 @@ run_size(const struct ctx *x, long k)
 	}
 	return box[2] >= box[0] ? len2(box[2] - box[0], box[3] - box[1]) : 0;
 }
-
-/* How large a tail of kept runs may be, in tolerances, and be dropped:
- * slivers at shallow crossings are a few tolerances long. */
-#define TAIL_MAX 16
 
 /* Emit the runs from k on as one part, until the next is start or is
  * none or already taken. */
