@@ -23,20 +23,21 @@
  *     trees of bounding boxes over its pieces in their order along the
  *     curve (neighbours along a curve are neighbours in the plane), then
  *     by halving the cubics that still overlap until they are flat.
- *  6. The crossings cut the raw offset into runs; a run whose points are
- *     nearer the curve than |D| less half the tolerance anywhere is cut
- *     away.  The runs left are chained into curves: at a crossing the
- *     run that arrives turns onto the other branch if that one is kept.
- *     A closed result that runs the other way round from the curve is a
- *     loop, and goes too.
+ *  6. The crossings cut the raw offset into runs (an open curve's also
+ *     where the offset passes the curve's ends); a run that runs
+ *     backwards, or whose points are nearer the curve than |D| less
+ *     half the tolerance, is cut away.  The runs left are chained into
+ *     curves: at a crossing the run that arrives turns onto the other
+ *     branch if that one is kept.  A closed result that runs the other
+ *     way round from the curve is a loop, and goes too.
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
 
-/* The most a fitted piece may turn: a quarter of a right angle keeps
- * every Hermite piece convex or nearly straight, so that neighbours
+/* The most a fitted piece may turn: half a right angle keeps every
+ * Hermite piece convex or nearly straight, so that neighbours
  * along the offset never cross each other and few halvings are needed. */
 #define TURN_MAX (M_PI / 4)
 /* Samples of a piece to find where it turns and where the offset has
