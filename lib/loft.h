@@ -370,6 +370,67 @@ void loft_curve_eval(const struct loft_curve *c, size_t i, double u,
 int loft_curvature(const double *d1, const double *d2, int dim, double *k);
 
 /* ------------------------------------------------------------------ */
+/* Offsets of plane curves (offset.c)                                  */
+
+/* How the outer side of a corner is joined (offset(1) -j). */
+enum loft_join { LOFT_JOIN_ROUND, LOFT_JOIN_MITER, LOFT_JOIN_BEVEL };
+
+/* A knot is a corner where the tangent direction turns by more than
+ * this (radians), or by enough that the two offsets there are farther
+ * apart than the tolerance: splinefit's curves turn by rounding only. */
+#define LOFT_OFFSET_CORNER 1e-6
+/* A miter join is used while the miter's tip is at most this many
+ * times the distance from the corner (1 / cos(turn / 2), so up to a
+ * turn of 151 degrees), else a bevel: SVG's default miter limit. */
+#define LOFT_OFFSET_MITER_LIMIT 4.0
+/* The default tolerance, relative to the distance. */
+#define LOFT_OFFSET_TOL 1e-3
+
+/* One curve of an offset: segments seg[first .. first + n) of it. */
+struct loft_offset_part {
+	size_t first, n;
+	int closed;
+};
+
+/*
+ * An offset: nseg cubic segments, 8 numbers each in the row layout of
+ * loft_cubic_eval (P_A P_B P'_A P'_B), in npart curves.  Start it
+ * zeroed; loft_offset_curve reuses its storage from record to record;
+ * loft_offset_free releases it.
+ */
+struct loft_offset {
+	double *seg;
+	size_t nseg, segcap;
+	struct loft_offset_part *part;
+	size_t npart, partcap;
+	struct loft_offset_work *work;  /* offset.c's scratch */
+};
+
+/*
+ * The offset of the plane curve c at distance dist: outward for a
+ * closed curve whichever way it runs (by the sign of its area), to the
+ * left of travel for an open one; negative dist the other way.  The
+ * segments written to out are within tol (in the curve's units; 0:
+ * LOFT_OFFSET_TOL of |dist|) of the exact offset everywhere.  Where the curve bends more sharply than
+ * |dist| on the offset's side, and where far parts of it come nearer
+ * than 2 |dist|, the offset's loops are cut away: what is kept is
+ * farther than |dist| - tol / 2 from the whole curve, except the joins.
+ * A corner (LOFT_OFFSET_CORNER) gets a join of kind join on its outer
+ * side: a circular arc of radius |dist| about it, a miter within
+ * LOFT_OFFSET_MITER_LIMIT, or a bevel; on its inner side the two
+ * offsets are cut where they cross.  The pieces of c must meet end to
+ * end.  The result may be several curves (an inward offset across a
+ * narrow waist), each closed when c is.  Returns 0, or LOFT_EINPUT (a
+ * space curve, dist 0 or not finite, tol negative), LOFT_EGEOM (c
+ * is a point, is broken, encloses no area, overflows; the offset
+ * vanishes or cannot be made, with err saying where) or LOFT_ENOMEM.
+ */
+int loft_offset_curve(const struct loft_curve *c, double dist, double tol,
+    enum loft_join join, struct loft_offset *out, struct loft_error *err);
+
+void loft_offset_free(struct loft_offset *o);
+
+/* ------------------------------------------------------------------ */
 /* Expressions with exact derivatives (expr.c)                         */
 
 /*

@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS="splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin plot"
+    patchjoin plot offset"
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -1471,6 +1471,65 @@ plot_cases() {
 	run -K "$T/g1" "$T/g2"
 	status 1
 	says "cubic record: -K reads knots"
+}
+
+# ---- offset ----------------------------------------------------------------------
+
+offset_run() { "$B/offset" -d 0.1 "$@"; }
+offset_good() {
+	case $1 in
+	1) printf 'cubic closed=1 id=1\n0 0 1 0 0.828427 -0.828427 0.828427 0.828427\n1 0 1 1 0.828427 0.828427 -0.828427 0.828427\n1 1 0 1 -0.828427 0.828427 -0.828427 -0.828427\n0 1 0 0 -0.828427 -0.828427 0.828427 -0.828427\n' ;;
+	2) printf 'cubic closed=0 id=2\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
+	esac
+}
+
+offset_cases() {
+	opts
+	printf 'cubic\n0 0 0 1 0 0 1 0 0 1 0 0\n' >"$T/case"
+	bad "a space curve" 1 "a space curve (3 coordinates)"
+	printf 'points\n0 0\n1 1\n' >"$T/case"
+	bad "a point record" 1 "a point record is no curve"
+	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 1 0 1 0 0 0 0 0 1\n0 0.5 1 0.5 1 0 1 0 0.5 0.5\n' \
+	    >"$T/case"
+	bad "a patch" 1 "a patch record is a surface"
+	printf 'cubic\n0 0 1 0 1 0 1 0\n2 0 3 0 1 0 1 0\n' >"$T/case"
+	bad "a broken curve" 3 "segment 2 does not start where segment 1 ends"
+	printf 'cubic closed=1\n0 0 1 0 1 0 1 0\n1 0 0 0 -1 0 -1 0\n' >"$T/case"
+	bad "a closed curve of no area" 1 "encloses no area"
+	printf 'cubic closed=1\n0 0 2 0 2 0 2 0\n2 0 2 3 0 3 0 3\n2 3 0 3 -2 0 -2 0\n0 3 0 0 0 -3 0 -3\n' \
+	    >"$T/case"
+	opts -j miter
+	good "a rectangle, mitred"
+	opts
+	printf 'cubic\n0.01 0 0 0.01 0 0.0157 -0.0157 0\n' >"$T/case"
+	bad "an open arc of radius 0.01, to its centre" 1 "the offset vanishes"
+	printf 'cubic\n0 0 0 0 0 0 0 0\n' >"$T/case"
+	bad "a segment that is a point" 1 "the curve is a single point"
+	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
+	bad "coefficients near the largest double" 2 "overflows"
+	printf 'cubic\n0 0 1 0 0 0 1 0\n' >"$T/case"
+	good "a zero end tangent"
+	printf 'cubic\n0 0 1 0 0 0 0 0\n1 0 1 1 0 0 0 0\n' >"$T/case"
+	good "zero tangents at a corner"
+	printf 'cubic\n0 0 1 0 1 0 1 0\n1 0 1 0 0 0 0 0\n1 0 2 1 1 1 1 1\n' >"$T/case"
+	good "a segment that is a point between two"
+	printf 'cubic\n0 0 1 0 6 6 6 -6\n' >"$T/case"
+	sane "a curve that crosses itself"
+	printf 'cubic\n0 0 1 0 -3 3 -3 -3\n' >"$T/case"
+	sane "a curve with a cusp"
+	for s in 1e-300 1e300 1e-320; do
+		awk -v s=$s 'BEGIN { printf "cubic\n0 0 %s 0 %s 0 0 %s\n", s, s, s }' >"$T/case"
+		sane "a curve of size $s"
+	done
+	printf 'cubic\n0 0 1 0 1 0 1 0\n1 0 1.000001 0 1e-6 0 1e-6 0\n1.000001 0 2 1 1 0 0 1\n' \
+	    >"$T/case"
+	sane "segments of chords 1 : 1e-6"
+	opts -t 1e-300
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	good "-t below the rounding of the coordinates"
+	OPTS="-d 1e300"
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	alone "a distance 1e300 times the curve" 1 "1e12 times the curve's size"
 }
 
 # ---- run them -----------------------------------------------------------------
