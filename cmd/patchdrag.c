@@ -99,21 +99,19 @@ drag_curve(struct loft_run *run, const struct loft_record *rec,
 	size_t i;
 	int rc;
 
-	if (loft_curve_from_record(rec, &c, err) != 0)
+	if (loft_curve_segments(rec, &c, err) != 0)
 		return LOFT_EINPUT;
+	if (!(o->u >= 0 && o->u <= (double)c.npieces))
+		/* before -t reads the point there: there is none */
+		return loft_fail(err, LOFT_EINPUT, -1, "-u %g is outside the "
+		    "curve's parameter range 0 to %zu", o->u, c.npieces);
 	if ((q = malloc(c.npieces * 5 * c.dim * sizeof *q)) == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	for (i = 0; i < c.npieces; i++)
-		if (strcmp(c.type, "cubic") == 0)
-			loft_cubic_to_quartic(c.coef + i * c.rowlen, c.dim,
-			    q + i * 5 * c.dim);
-		else
-			memcpy(q + i * 5 * c.dim, c.coef + i * c.rowlen,
-			    5 * c.dim * sizeof *q);
+		loft_curve_quartic(&c, i, q + i * 5 * c.dim);
 	i = o->u >= (double)c.npieces ? c.npieces - 1 : (size_t)o->u;
-	if (o->u >= 0 && o->u <= (double)c.npieces)
-		loft_quartic_eval(q + i * 5 * c.dim, c.dim, o->u - (double)i, p,
-		    NULL, NULL);
+	loft_quartic_eval(q + i * 5 * c.dim, c.dim, o->u - (double)i, p, NULL,
+	    NULL);
 	rc = displacement(o, p, c.dim, delta, err);
 	if (rc == 0)
 		rc = loft_quartic_drag(q, c.npieces, c.dim, c.closed, o->u,

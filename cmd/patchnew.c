@@ -79,15 +79,7 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 	}
 	for (size_t i = 0; i < 4; i++) {
 		err.line = 0;
-		if (loft_curve_from_record(&recs[i], &c, &err) != 0) {
-			loft_report(run, &recs[i], &err);
-			return 1;
-		}
-		if (strcmp(c.type, "cubic") != 0 &&
-		    strcmp(c.type, "quartic") != 0) {
-			/* its rows are control points, not quartic vectors */
-			loft_fail(&err, LOFT_EINPUT, -1, "a %s record: a "
-			    "boundary is a cubic or quartic segment", c.type);
+		if (loft_curve_segments(&recs[i], &c, &err) != 0) {
 			loft_report(run, &recs[i], &err);
 			return 1;
 		}
@@ -102,10 +94,7 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 			return 1;
 		}
 		dim = c.dim;
-		if (strcmp(c.type, "cubic") == 0)
-			loft_cubic_to_quartic(c.coef, dim, q[i]);
-		else
-			memcpy(q[i], c.coef, 5 * (size_t)dim * sizeof *c.coef);
+		loft_curve_quartic(&c, 0, q[i]);
 		qp[i] = q[i];
 	}
 	err.line = 0;

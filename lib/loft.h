@@ -478,7 +478,8 @@ struct loft_psurface {
  * space curve has no principal normal, zero curvature, so the point
  * stays on the curve; may be NULL) and F at the minimum to *error.
  * Returns 0, or LOFT_EINPUT / LOFT_EGEOM with err saying why (a value
- * not finite, a vanishing derivative, a singular system).
+ * not finite, a vanishing derivative, a singular system; a->npieces 0,
+ * which breaks the precondition a->npieces >= 1), or LOFT_ENOMEM.
  */
 int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
     double *ctl, double *lambda, int *nonormal, double *error,
@@ -490,7 +491,8 @@ int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
  * clamped when clamp), interior control points on the surface normals at
  * (i / m, j / n), least squares over the square.  Writes (m + 1)(n + 1)
  * control points, u-major, to ctl, and the double integral of
- * |x - B|^2 to *error.  Returns 0 or LOFT_E* with err filled.
+ * |x - B|^2 to *error.  Returns 0 or LOFT_E* with err filled (LOFT_EINPUT
+ * for x->npu or x->npv 0: the precondition is at least one piece each).
  */
 int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err);
@@ -729,7 +731,10 @@ void loft_design_put(struct loft_writer *w, const struct loft_design *d,
  * 0 to t) in its place at i, the second appended at d->n - 1; scale
  * factors multiplied by t and 1 - t, and neighbour links updated on
  * both sides, T-junctions included.  No other patch moves in d->p.
- * Returns 0 or LOFT_ENOMEM.
+ * Preconditions, checked: i < d->n, dir 0 or 1, 0 < t < 1, and every
+ * neighbour patch i names is in d (as loft_design_check ensures).
+ * Returns 0, LOFT_EINPUT (a precondition broken, d unchanged; or the
+ * ids are used up) or LOFT_ENOMEM.
  */
 int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
     struct loft_error *err);
@@ -793,6 +798,19 @@ void loft_patch_bilinear(const double *corner, int dim, double *b);
 #define LOFT_CORNER_TOL 1e-9
 int loft_patch_coons(const double *const *c, int dim, double *b,
     struct loft_error *err);
+
+/*
+ * Recognise rec as a curve of cubic or quartic segments, the curves
+ * patchnew's boundaries and patchdrag's dragged curves are, and fill c
+ * as loft_curve_from_record does.  Returns 0, or LOFT_EINPUT when rec is
+ * no curve or a curve of another kind (a bezier record's rows are
+ * control points, not segments).
+ */
+int loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
+    struct loft_error *err);
+
+/* Segment i of c (from loft_curve_segments) as a quartic: 5 * dim numbers. */
+void loft_curve_quartic(const struct loft_curve *c, size_t i, double *q);
 
 /* ------------------------------------------------------------------ */
 /* Surfaces of any record type, for programs that evaluate them        */

@@ -92,17 +92,24 @@ rule_free(struct rule *r)
 	free(r->t);
 	free(r->w);
 	free(r->ends);
+	/* a second free, by squad_free after a failed rule_make, is none */
+	r->t = r->w = r->ends = NULL;
 }
 
 static int
 rule_make(struct rule *r, size_t npieces, struct loft_error *err)
 {
 	double gx[QUAD_NODES], gw[QUAD_NODES];
-	size_t per = npieces >= QUAD_MIN_PANELS ? 1 :
-	    (QUAD_MIN_PANELS + npieces - 1) / npieces;
-	size_t panels = npieces * per;
+	size_t per, panels;
 
-	if (npieces == 0 || panels > (size_t)-1 / QUAD_NODES / sizeof(double))
+	r->t = r->w = r->ends = NULL;
+	if (npieces == 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "a curve or surface of "
+		    "no pieces");
+	per = npieces >= QUAD_MIN_PANELS ? 1 :
+	    (QUAD_MIN_PANELS + npieces - 1) / npieces;
+	panels = npieces * per;
+	if (panels > (size_t)-1 / QUAD_NODES / sizeof(double))
 		return loft_fail(err, LOFT_ENOMEM, -1, "too many pieces");
 	r->count = panels * QUAD_NODES;
 	r->panels = panels;

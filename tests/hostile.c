@@ -1,0 +1,86 @@
+/*
+ * hostile.c: the library's public functions called against their
+ * preconditions (issue 12).  A precondition broken is an error code,
+ * never undefined behaviour: each case here crashed, divided by zero or
+ * wrote out of bounds before.  The references are the contracts in
+ * loft.h (the code each call must return) and hand-made values.
+ */
+#include <string.h>
+
+#include "loft.h"
+#include "check.h"
+
+static void
+line_eval(void *ctx, double t, double *p, double *d1, double *d2)
+{
+	(void)ctx;
+	p[0] = t, p[1] = 0;
+	if (d1 != NULL)
+		d1[0] = 1, d1[1] = 0;
+	if (d2 != NULL)
+		d2[0] = d2[1] = 0;
+}
+
+/* loft_normal_curve of a curve of no pieces: it divided by npieces. */
+static void
+test_normal_no_pieces(void)
+{
+	struct loft_pcurve a = { 2, 0, line_eval, NULL };
+	struct loft_error err;
+	double ctl[2 * 4], error = -1;
+
+	CHECK(loft_normal_curve(&a, 3, 0, ctl, NULL, NULL, &error, &err) ==
+	    LOFT_EINPUT, "a curve of 0 pieces is not LOFT_EINPUT");
+	a.npieces = 1;                  /* and the same curve of one piece */
+	CHECK(loft_normal_curve(&a, 3, 0, ctl, NULL, NULL, &error, &err) == 0,
+	    "a straight line of one piece: %s", err.msg);
+	NEAR(error, 0, 1e-20, "a line's own normal approximation is exact");
+}
+
+/*
+ * loft_design_split of a patch naming a neighbour the design lacks: it
+ * renamed the link in d->p[-1].  Now LOFT_EINPUT, the design unchanged.
+ */
+static void
+test_split_missing_neighbour(void)
+{
+	static const double corner[8] = { 0, 0, 1, 0, 0, 1, 1, 1 };
+	struct loft_attr attr[2] = { { "id", "1" }, { "u1", "2" } };
+	struct loft_record rec;
+	struct loft_design d = { 0 };
+	struct loft_error err;
+	double b[50];
+
+	loft_patch_bilinear(corner, 2, b);
+	memset(&rec, 0, sizeof rec);
+	rec.type = "patch";
+	rec.attr = attr;
+	rec.nattr = 2;
+	rec.num = b;
+	rec.nrows = 5;
+	rec.ncols = 10;
+	rec.line = 1;
+	rec.file = "test";
+	CHECK(loft_design_add(&d, &rec, &err) == 0, "add: %s", err.msg);
+	for (int dir = 0; dir < 2; dir++) {
+		CHECK(loft_design_split(&d, 0, dir, 0.5, &err) == LOFT_EINPUT,
+		    "split %d with neighbour 2 missing is not LOFT_EINPUT", dir);
+		CHECK(d.n == 1 && d.maxid == 1, "the design changed: %zu "
+		    "patches, largest id %ld", d.n, d.maxid);
+	}
+	CHECK(loft_design_split(&d, 1, 0, 0.5, &err) == LOFT_EINPUT,
+	    "split of patch 1 of 1 is not LOFT_EINPUT");
+	CHECK(loft_design_split(&d, 0, 2, 0.5, &err) == LOFT_EINPUT,
+	    "split in direction 2 is not LOFT_EINPUT");
+	CHECK(loft_design_split(&d, 0, 0, 1, &err) == LOFT_EINPUT,
+	    "split at t = 1 is not LOFT_EINPUT");
+	loft_design_free(&d);
+}
+
+int
+main(void)
+{
+	test_normal_no_pieces();
+	test_split_missing_neighbour();
+	return check_done("hostile");
+}
