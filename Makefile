@@ -19,7 +19,8 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
-          bin/test/numtest bin/test/pow10gen bin/test/hostile
+          bin/test/numtest bin/test/pow10gen bin/test/hostile \
+          bin/test/oom.so
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
@@ -47,6 +48,9 @@ bin/%: cmd/%.c $(LIB) lib/loft.h
 
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+bin/test/oom.so: tests/oom.c bin/test/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -shared -fPIC -o $@ tests/oom.c
 
 bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)

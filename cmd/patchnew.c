@@ -105,7 +105,11 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 		loft_report(run, &recs[i], &err);
 		return 1;
 	}
-	return put_patch(&run->w, b, dim, o->id, &err);
+	if (put_patch(&run->w, b, dim, o->id, &err) != 0) {
+		loft_report(run, &recs[0], &err);     /* out of memory */
+		return 1;
+	}
+	return 0;
 }
 
 /* -c: the bilinear patch through the corners, written to standard output. */

@@ -34,5 +34,6 @@ suite bin/test/pow10gen -c lib/pow10.h
 suite sh tests/plot.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
+suite sh tests/oom.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
