@@ -943,6 +943,19 @@ bezapprox_cases() {
 	expr "an unknown function" 1 "unknown function 'sinn'" -x 'sinn(t)' -y t
 	expr "u in a curve" 1 "unknown name 'u'" -x u -y t
 	expr "2t" 1 "-x: column 2" -x 2t -y t
+	# issue 12: 130,000 unary minuses ran the parser's recursion out of
+	# stack (a segmentation fault); 200 levels are allowed, not 201
+	m=$(awk 'BEGIN { while (n++ < 130000) printf "-" }')
+	expr "130,000 unary minuses" 1 "-y: column 201: nested more than 200 deep" \
+	    -x t -y "${m}t"
+	m=$(awk 'BEGIN { while (n++ < 100000) printf "(" }')
+	expr "100,000 parentheses" 1 "nested more than 200 deep" -x "${m}t" -y t
+	m=$(awk 'BEGIN { while (n++ < 198) printf "-" }')
+	tc="198 unary minuses and an exponent: 200 deep"
+	what=$tc
+	"$B/bezapprox" -x t -y "${m}t^2" >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 0
 	# degrees
 	for n in 0 25 -1; do
 		expr "-n $n" 1 "-n: degree $n: want 1 to 24" -n $n -x t -y t
