@@ -1176,6 +1176,15 @@ patchnew_cases() {
 	echo $? >"$T/rc"
 	status 1
 	says "-i 0: want an id from 1 to 1000000000"
+	# issue 12: the integer parser wrapped, and this wrote id=9
+	tc="-i 99999999999999999999"
+	what=$tc
+	"$B/patchnew" -i 99999999999999999999 -c 0,0 -c 1,0 -c 0,1 -c 1,1 \
+	    >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 2
+	says "-i '99999999999999999999': want a whole number from 0 to"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
 	tc="-c nan,0"
 	what=$tc
 	"$B/patchnew" -c nan,0 -c 1,0 -c 0,1 -c 1,1 >"$T/out" 2>"$T/err"

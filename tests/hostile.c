@@ -5,6 +5,7 @@
  * wrote out of bounds before.  The references are the contracts in
  * loft.h (the code each call must return) and hand-made values.
  */
+#include <limits.h>
 #include <string.h>
 
 #include "loft.h"
@@ -77,10 +78,42 @@ test_split_missing_neighbour(void)
 	loft_design_free(&d);
 }
 
+/* loft_parse_int near and past LONG_MAX: it wrapped (num.c, UBSan). */
+static void
+test_parse_int_wrap(void)
+{
+	static const struct { const char *s; long hi, want; } t[] = {
+		{ "9223372036854775807", LONG_MAX, 9223372036854775807L },
+		{ "9223372036854775808", LONG_MAX, -1 },
+		{ "99999999999999999999", LONG_MAX, -1 },
+		{ "999999999999999999999999999999999999999", LONG_MAX, -1 },
+		{ "00000000000000000000000000000000000000012", LONG_MAX, 12 },
+		{ "1000000001", 1000000000, -1 },
+		{ "1000000000", 1000000000, 1000000000 },
+		{ "10000000000000000001", 17, -1 },
+	};
+	struct loft_error err;
+
+	for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+		long v = -7;
+		int rc = loft_parse_int(t[i].s, 0, t[i].hi, &v, &err);
+
+		if (LONG_MAX < 9223372036854775807L && t[i].hi == LONG_MAX)
+			continue;       /* a 32-bit long: other limits */
+		if (t[i].want < 0)
+			CHECK(rc == LOFT_EINPUT && v == -7, "'%s' up to %ld: "
+			    "rc %d, value %ld", t[i].s, t[i].hi, rc, v);
+		else
+			CHECK(rc == 0 && v == t[i].want, "'%s': rc %d, value "
+			    "%ld", t[i].s, rc, v);
+	}
+}
+
 int
 main(void)
 {
 	test_normal_no_pieces();
 	test_split_missing_neighbour();
+	test_parse_int_wrap();
 	return check_done("hostile");
 }
