@@ -85,6 +85,13 @@ install: all
 clean:
 	rm -rf bin
 
+# make -j clean all: clean must finish before anything is built (it ran
+# beside the build and removed bin/ under ar); GNU make runs goals in
+# order only when not parallel, so with clean among them it is not.
+ifneq ($(filter clean,$(MAKECMDGOALS)),)
+.NOTPARALLEL:
+endif
+
 .PHONY: all check bench demo figures install clean
 .SECONDARY:
 
