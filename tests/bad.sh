@@ -694,6 +694,19 @@ knots() { printf "points\n$1" >"$T/case"; }
 
 splinefit_cases() {
 	opts
+	# issue 12: a given tangent's length overflowed or underflowed in its
+	# norm (a zero start tangent written, or refused as zero); it is a
+	# direction, and every length gives -S 1,0's curve
+	"$B/splinefit" -o -S 1,0 -E 0,-1 man/figures/insole.knots >"$T/ref"
+	for t in 1e300,0 1.7e308,0 1e-200,0 4.9e-324,0; do
+		tc="splinefit -o -S $t"
+		what=$tc
+		"$B/splinefit" -o -S "$t" -E 0,-1 man/figures/insole.knots >"$T/out" \
+		    2>"$T/err"
+		echo $? >"$T/rc"
+		status 0
+		cmp -s "$T/ref" "$T/out" && ok || no "$what: not -S 1,0's curve"
+	done
 	knots '0 0\n'
 	bad "one knot" 1 "1 knot: a closed curve needs at least 3"
 	knots '0 0\n1 0\n'
@@ -921,6 +934,18 @@ expr() {
 	[ ! -s "$T/out" ] && ok || no "$what: output"
 }
 
+# scaled_by K: the rows of $T/out are 2^K times those of $T/ref, within
+# 1e-15 relative (the header, with F in units squared, aside)
+scaled_by() {
+	awk -v k="$1" 'NR == FNR { if (FNR > 1) for (i = 1; i <= NF; i++)
+		r[FNR, i] = $i * 2^k; next }
+	    FNR > 1 { for (i = 1; i <= NF; i++) { w = r[FNR, i]; d = $i - w
+		if (d < 0) d = -d; if (w < 0) w = -w
+		if (d > 1e-15 * w) bad = 1 } } END { exit bad + 0 }' \
+	    "$T/ref" "$T/out" && ok || no "$what: not 2^$1 times the" \
+	    "unscaled: $(head -3 "$T/out")"
+}
+
 bezapprox_cases() {
 	opts
 	# not finite: log(0) at the end, poles at a panel's end and at a t_i
@@ -945,6 +970,38 @@ bezapprox_cases() {
 	expr "2t" 1 "-x: column 2" -x 2t -y t
 	# issue 12: 130,000 unary minuses ran the parser's recursion out of
 	# stack (a segmentation fault); 200 levels are allowed, not 201
+	# issue 12: far from the unit box squares overflowed or underflowed
+	# (error=inf written, exit 0; "singular"; "a single point"): the
+	# result of the curve scaled by 2^k is now the result scaled by 2^k
+	"$B/bezapprox" -n 4 -x t -y 't^3' >"$T/ref"
+	for k in 513 -600 -1000; do
+		tc="the curve scaled by 2^$k"
+		what=$tc
+		"$B/bezapprox" -n 4 -x "2^$k*t" -y "2^$k*t^3" >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 0
+		scaled_by "$k"
+	done
+	tc="F near the largest double"
+	what=$tc
+	"$B/bezapprox" -n 1 -x 1e154*t -y '1.3e154*sin(20*t)' >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 0
+	v=$(valid "$T/out") && ok || no "$what: $v"
+	grep -q -i -E '=-?(inf|nan)' "$T/out" && no "$what: $(head -1 "$T/out")" ||
+	    ok
+	expr "F overflows" 1 "the curve is too large: F, in its units squared, overflows" \
+	    -x 1e160*t -y '1e160*t^3'
+	expr "F of a surface overflows" 1 "the surface is too large: F" \
+	    -n 2,2 -x 1e160*u -y 1e160*v -z '1e160*sin(3*u)*cos(3*v)'
+	"$B/bezapprox" -n 2,2 -x u -y v -z 'sin(3*u)*cos(3*v)' >"$T/ref"
+	tc="the surface scaled by 2^-600"
+	what=$tc
+	"$B/bezapprox" -n 2,2 -x 2^-600*u -y 2^-600*v \
+	    -z '2^-600*sin(3*u)*cos(3*v)' >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 0
+	scaled_by -600
 	m=$(awk 'BEGIN { while (n++ < 130000) printf "-" }')
 	expr "130,000 unary minuses" 1 "-y: column 201: nested more than 200 deep" \
 	    -x t -y "${m}t"
@@ -983,7 +1040,7 @@ bezapprox_cases() {
 	# found here: the length overflowed, and every derivative seemed to
 	# vanish against it (lib/normal.c)
 	printf 'cubic\n0 0 1 0 1e308 0 1e308 0\n' >"$T/case"
-	bad "huge tangents" 1 "the curve is too large: its length overflows"
+	bad "huge tangents" 1 "the curve is too large"
 	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 1 0 1 0 0 0 0 0 1\n0 0.5 1 0.5 1 0 1 0 0.5 0.5\n' \
 	    >"$T/case"
 	bad "a surface record without -n m,n" 1 "give its degrees with -n m,n"
@@ -1348,6 +1405,20 @@ patchdrag_cases() {
 		status 1
 		says "outside the curve's parameter range 0 to 2"
 	fi
+
+	# issue 12: a viewing direction of length 1e200 or 1e-200 did not
+	# project (w . w overflowed or underflowed): it is a direction
+	patch 1 "" 0 0 >"$T/case"
+	"$B/patchdrag" -u 0.5 -v 0.5 -b 1,0,1 -w 0,0,1 "$T/case" >"$T/ref"
+	for w in 0,0,1e200 0,0,1e-200 0,0,1.7e308; do
+		tc="patchdrag -w $w"
+		what=$tc
+		"$B/patchdrag" -u 0.5 -v 0.5 -b 1,0,1 -w "$w" "$T/case" \
+		    >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 0
+		cmp -s "$T/ref" "$T/out" && ok || no "$what: not -w 0,0,1's drag"
+	done
 
 	# units: a drag of the scaled design by the scaled displacement
 	{ patch 1 " u1=2" 0 0; echo; patch 2 " u0=1" 4 0; } >"$T/design"

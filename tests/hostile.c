@@ -8,7 +8,7 @@
 #include <limits.h>
 #include <string.h>
 
-#include "loft.h"
+#include "internal.h"             /* vnorm, vunit: the scaled norm */
 #include "check.h"
 
 static void
@@ -109,11 +109,65 @@ test_parse_int_wrap(void)
 	}
 }
 
+/*
+ * The scaled norm: exact on powers of two far out (3-4-5 triangles, the
+ * reference by hand), and to the bit the plain root of the sum of
+ * squares inside the range where that works (the figures depend on it).
+ */
+static void
+test_scaled_norm(void)
+{
+	static const int ex[] = { 1000, 700, 600, 0, -600, -1000, -1060 };
+	unsigned long long rng = 0x2545F4914F6CDD1DULL;
+
+	for (size_t i = 0; i < sizeof ex / sizeof ex[0]; i++) {
+		double a[3] = { ldexp(3, ex[i]), ldexp(-4, ex[i]), 0 };
+		double n = vnorm(a, 3), m = vunit(a, 3);
+
+		CHECK(n == ldexp(5, ex[i]) && m == n, "|(3, -4, 0) 2^%d| = "
+		    "%.17g, %.17g, not 5 2^%d", ex[i], n, m, ex[i]);
+		/* 3 (1 / 5) is 0.6 within an ulp, not to the bit */
+		CHECK(fabs(a[0] - 0.6) < 2e-16 && fabs(a[1] + 0.8) < 2e-16 &&
+		    a[2] == 0, "unit (3, -4, 0) 2^%d: %.17g %.17g", ex[i], a[0],
+		    a[1]);
+	}
+	for (int i = 0; i < 10000; i++) {
+		double a[3], plain = 0;
+
+		for (int k = 0; k < 3; k++) {
+			rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+			/* magnitudes 2^-400 to 2^400 */
+			a[k] = ldexp((double)(rng >> 11) / 9007199254740992.0 -
+			    0.5, (int)(rng % 801) - 400);
+			plain += a[k] * a[k];
+		}
+		if (plain < 0x1p-900)
+			continue;
+		if (vnorm(a, 3) != sqrt(plain)) {
+			CHECK(0, "|(%a, %a, %a)| differs from the plain root",
+			    a[0], a[1], a[2]);
+			break;
+		}
+	}
+	{
+		double big[2] = { 1.7e308, 1.7e308 }, zero[2] = { 0, -0.0 };
+
+		double n = vnorm(big, 2), m = vunit(big, 2);
+
+		CHECK(isinf(n) && isinf(m), "|(1.7e308, 1.7e308)| is %g, %g, "
+		    "not above the largest double", n, m);
+		CHECK(fabs(big[0] - sqrt(0.5)) < 2e-16 && big[0] == big[1],
+		    "unit (1.7e308, 1.7e308): %g %g", big[0], big[1]);
+		CHECK(vunit(zero, 2) == 0 && zero[0] == 0, "unit (0, 0)");
+	}
+}
+
 int
 main(void)
 {
 	test_normal_no_pieces();
 	test_split_missing_neighbour();
 	test_parse_int_wrap();
+	test_scaled_norm();
 	return check_done("hostile");
 }
