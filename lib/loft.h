@@ -135,9 +135,10 @@ void loft_reader_free(struct loft_reader *rd);
 
 /*
  * Read the next record into rec.  Returns 1 when a record was read, 0 at
- * the end of the stream, LOFT_READ_BAD when a malformed record was read
- * and skipped (err says what and where; the next call goes on after it),
- * LOFT_READ_FAIL on a read error or out of memory (err says which).
+ * the end of the stream, LOFT_READ_BAD when a malformed record, or one
+ * too large for memory, was read and skipped (err says what and where;
+ * the next call goes on after it), LOFT_READ_FAIL on a read error or
+ * when memory ran out otherwise (err says which).
  */
 #define LOFT_READ_BAD  (-1)
 #define LOFT_READ_FAIL (-2)

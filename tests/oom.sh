@@ -125,4 +125,36 @@ oom design patchsplit -u 0.4 "$T/design"
 oom design patchdrag -i 1 -u 0.9 -v 0.5 -b 0,0,1 "$T/design"
 oom design patchjoin -P 1 -S 2 "$T/pieces"
 oom document plot -l id "$T/insole.cubic" "$T/design"
+
+# issue 12: a record too large for memory (made so by failing every
+# allocation above 1 MB) is one bad record, reported at a line of it
+# (where memory ran out) and skipped to its end; it ended the whole file,
+# losing the good record after it.  big NAME: $T/big between two good
+# records; its lines are 7 to 6 + its length.
+big() {
+	what="oom: $1"
+	g1='points id=1\n0 0\n1 0\n1 1\n0 1\n'
+	g3='points id=3\n2 0 1\n0 1 0\n-2 0 1\n0 -1 0\n'
+	{ printf "$g1\n"; cat "$T/big"; printf "\n$g3"; } >"$T/in"
+	{ printf "$g1\n$g3"; } >"$T/ref"
+	"$B/splinefit" "$T/ref" >"$T/good"
+	LD_PRELOAD=$SHIM LOFT_OOM_ABOVE=1000000 LOFT_OOM_PROG=splinefit \
+	    $TO "$B/splinefit" "$T/in" >"$T/out" 2>"$T/err"
+	rc=$?
+	[ $rc -eq 1 ] && ok || no "$what: exit $rc, want 1"
+	m="record too large for memory (out of memory at this line): skipped to its end"
+	awk -v p="splinefit: $T/in:" -v m=" $m" -v hi="$((6 + $(wc -l <"$T/big")))" '
+	    NR == 1 && index($0, p) == 1 { rest = substr($0, length(p) + 1)
+		l = rest + 0; good = l >= 7 && l <= hi && rest == l ":" m }
+	    END { exit !(good && NR == 1) }' "$T/err" && ok ||
+	    no "$what: want one message at a line of it: $(head -2 "$T/err")"
+	cmp -s "$T/out" "$T/good" && ok ||
+	    no "$what: stdout is not the good records' curves"
+}
+awk 'BEGIN { print "points id=2"; for (i = 0; i < 200000; i++) print i, i % 7 }' \
+    >"$T/big"
+big "a record of 200,000 rows"
+awk 'BEGIN { print "points id=2"; print "0 0"; for (i = 0; i < 600000; i++)
+    printf "0 "; print ""; print "1 1" }' >"$T/big"
+big "a row of 1.2 MB"
 finish oom
