@@ -37,17 +37,10 @@ static const char usage_text[] =
     "                 [-e edge] [-V] [-p digits] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "patchdrag: -%c %s\n", c, err->msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /* An option's value that dragging cannot use: bad input, exit 1. */
@@ -326,15 +319,15 @@ main(int argc, char *argv[])
 		case 'V': o.verbose = 1; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
 			bad_option(c, &err);
 	}
 	if (!o.have_u || moves != 1) {
 		fputs("patchdrag: give -u, and one of -b and -t\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    drag_design);

@@ -23,17 +23,10 @@ static const char usage_text[] =
     "       patchnew -b [-i id] [-p digits] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "patchnew: -%c %s\n", c, err->msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /* Write the one patch b to w. */
@@ -184,8 +177,8 @@ main(int argc, char *argv[])
 			break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
 			bad_option(c, &err);
@@ -194,7 +187,7 @@ main(int argc, char *argv[])
 	    (!o.boundary && optind < argc)) {
 		fputs("patchnew: give four corners with -c, or -b and the "
 		    "curves\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (!o.boundary) {
 		/* corners were stored LOFT_MAXDIM apart; pack them */

@@ -118,13 +118,6 @@ static const char *const colours[] = {
 };
 #define NCOLOURS (sizeof colours / sizeof colours[0])
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* ------------------------------------------------------------------ */
 /* Collecting the picture */
 
@@ -1082,12 +1075,12 @@ main(int argc, char *argv[])
 		    break;
 		case 'v': rc = loft_parse_word(optarg, views, &word, &err);
 		    pc.view = word; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0) {
 			fprintf(stderr, "plot: -%c %s\n", c, err.msg);
-			usage(2);
+			loft_usage(usage_text, 2);
 		}
 	}
 	box_empty(&pc.box);

@@ -223,6 +223,18 @@ int loft_run_made(struct loft_run *run);
  */
 int loft_run_write(struct loft_run *run, const char *doc, size_t len);
 
+/*
+ * A program's usage text ("usage: prog ...") and exit: with status 0 (-h)
+ * the text goes to standard output, and a failed write makes it "prog:
+ * write error: reason" on standard error (none for a closed pipe) and
+ * exit 1; with another status (a usage error) it goes to standard error.
+ */
+void loft_usage(const char *text, int status)
+#if defined(__GNUC__)
+	__attribute__((noreturn))
+#endif
+	;
+
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
     const struct loft_error *err);

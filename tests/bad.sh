@@ -123,6 +123,18 @@ out_valid() {
 	v=$(valid "$T/out") && ok || no "$what: stdout not whole records: $v"
 }
 
+# help_full: P -h into a full disk: a write error, exit 1 (issue 12: -h
+# ignored it and exited 0); for the programs on loft_usage
+help_full() {
+	tc="$P -h >/dev/full"
+	what=$tc
+	[ -w /dev/full ] || return 0
+	"$B/$P" -h >/dev/full 2>"$T/err"
+	echo $? >"$T/rc"
+	status 1
+	says "$P: write error: "
+}
+
 # ---- the sandwich --------------------------------------------------------
 
 # opts [OPTIONS]: the options of the cases that follow; makes the good
@@ -947,6 +959,7 @@ scaled_by() {
 }
 
 bezapprox_cases() {
+	help_full
 	opts
 	# not finite: log(0) at the end, poles at a panel's end and at a t_i
 	expr "log(t)" 1 "the curve is not finite at t = 0" -x 'log(t)' -y t
@@ -1193,6 +1206,7 @@ patchnew_good() {
 }
 
 patchnew_cases() {
+	help_full
 	opts
 	tc="three curves"
 	sed '$d' "$T/g12" | sed '$d' | sed '$d' >"$T/in"
@@ -1279,6 +1293,7 @@ patchsplit_good() {
 }
 
 patchsplit_cases() {
+	help_full
 	opts -u 0.4
 	design_cases
 	opts -v 0.5 -i 1
@@ -1334,6 +1349,7 @@ patchdrag_run() { "$B/patchdrag" "$@"; }
 patchdrag_good() { patchsplit_good "$@"; }
 
 patchdrag_cases() {
+	help_full
 	opts -i 1 -u 0.5 -v 0.5 -b 0,0,1
 	design_cases
 	opts -i 1 -u 0.9 -v 0.1 -t 3,0,2
@@ -1455,6 +1471,7 @@ pieces() {
 }
 
 patchjoin_cases() {
+	help_full
 	opts -P 1 -S 2
 	design_cases
 	for a in "-P 1 -S 1" "-P 1 -S 99" "-P 1 -S 9"; do
@@ -1504,6 +1521,7 @@ plot_good() {
 }
 
 plot_cases() {
+	help_full
 	opts
 	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
 	sane "coefficients near the largest double"
