@@ -181,6 +181,7 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 	const struct opts *o = run->ctx;
 	long found = -1;
 	struct loft_error err;
+	int bad = 0;
 
 	if (!o->have_id && n != 1) {
 		fprintf(run->msg, "patchdrag: the input holds %zu records: "
@@ -193,10 +194,20 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 		const char *v = loft_attr(&recs[i], "id");
 		long id;
 
-		if (v != NULL && loft_parse_int(v, 1, 1000000000, &id,
-		    &err) == 0 && id == o->id)
+		err.line = 0;
+		if (v == NULL)
+			continue;
+		if (is_patch(&recs[i]) && loft_patch_id(&recs[i], &id,
+		    &err) != 0) {
+			/* it may be the one: name it, not "no record" alone */
+			loft_report(run, &recs[i], &err);
+			bad = 1;
+		} else if (loft_parse_int(v, 1, 1000000000, &id, &err) == 0 &&
+		    id == o->id)
 			found = (long)i;
 	}
+	if (bad)
+		return -1;
 	if (found < 0)
 		fprintf(run->msg, "patchdrag: no record with id %ld in the "
 		    "input\n", o->id);

@@ -695,6 +695,11 @@ extern const char *const loft_edge_name[4];
 int loft_design_add(struct loft_design *d, const struct loft_record *rec,
     struct loft_error *err);
 
+/* The id= of a patch record rec: 0 and *id, or LOFT_EINPUT (none, or not
+ * a whole number from 1 to 1000000000) with err saying which. */
+int loft_patch_id(const struct loft_record *rec, long *id,
+    struct loft_error *err);
+
 /*
  * Append a patch with coefficients b, id and no neighbours (scale
  * factors 1).  Returns 0 or LOFT_ENOMEM.

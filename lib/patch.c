@@ -508,6 +508,19 @@ loft_design_new(struct loft_design *d, const double *b, int dim, long id,
 }
 
 int
+loft_patch_id(const struct loft_record *rec, long *id, struct loft_error *err)
+{
+	const char *v = loft_attr(rec, "id");
+
+	if (v == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
+	if (loft_parse_int(v, 1, ID_MAX, id, err) != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
+		    "a whole number from 1 to %ld", v, ID_MAX);
+	return 0;
+}
+
+int
 loft_design_add(struct loft_design *d, const struct loft_record *rec,
     struct loft_error *err)
 {
@@ -515,19 +528,18 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 	struct loft_patch *p;
 	const char *v;
 	int dim = rec->ncols / 5, rc;
+	long id;
 
 	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
 	if (loft__patch_shape(rec, err) != 0)
 		return LOFT_EINPUT;
-	if ((v = loft_attr(rec, "id")) == NULL)
-		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
+	if (loft_patch_id(rec, &id, err) != 0)
+		return LOFT_EINPUT;
 	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	p = &d->p[d->n];
-	if (loft_parse_int(v, 1, ID_MAX, &p->id, err) != 0)
-		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
-		    "a whole number from 1 to %ld", v, ID_MAX);
+	p->id = id;
 	p->dim = dim;
 	p->rec = rec;
 	memcpy(p->b, rec->num, 25 * (size_t)dim * sizeof *p->b);

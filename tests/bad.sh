@@ -1401,6 +1401,18 @@ patchdrag_cases() {
 	run -u 2.5 -b 0,1 "$T/case"
 	status 1
 	says "outside the curve's parameter range 0 to 2"
+	# issue 12: -i did not name a patch whose id= is bad, only that no
+	# record had the id
+	for v in x1 0 1.0 99999999999; do
+		{ patch 1 "" 0 0 | sed "1s/id=1/id=$v/"; echo; patch 2 "" 4 0; } \
+		    >"$T/case"
+		tc="-i 1 and a patch with id=$v"
+		run -i 1 -u 0.5 -v 0.5 -b 0,0,1 "$T/case"
+		status 1
+		message_at "$T/case" 1
+		says "attribute id=$v: want a whole number from 1 to 1000000000"
+		[ ! -s "$T/out" ] && ok || no "$what: output"
+	done
 	# issue 12: a bezier record's control points were read as a quartic
 	printf 'bezier\n0 0\n1 1\n' >"$T/case"
 	tc="a bezier record, dragged"
