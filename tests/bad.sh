@@ -1535,6 +1535,31 @@ plot_good() {
 plot_cases() {
 	help_full
 	opts
+	# issue 12: one far-out record among good ones emptied the picture
+	# and named no line; it is left out, named, and the rest drawn as if
+	# it had been a bad record
+	knots '1e308 0\n-1e308 1\n'
+	bad "a record 2e308 wide among good ones" 1 \
+	    "too far out to be framed with the other records: left out"
+	knots '1.7976931348623157e308 0\n1.7976931348623157e308 1\n'
+	bad "a record at the largest double among good ones" 1 "too far out"
+	opts -l id
+	knots '1e308 0\n-1e308 1\n'
+	bad "a far-out record, with labels" 1 "too far out"
+	opts
+	# issue 12: labels were placed in cubic time (each move compared the
+	# label with every other again): 6,000 crowded ones took 10 s; now a
+	# grid of the placed labels finds those it meets
+	tc="6,000 crowded labels"
+	what=$tc
+	awk 'BEGIN { for (i = 0; i < 6000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
+	    i, i % 60, int(i / 60), i % 60 + 1, int(i / 60) }' >"$T/case"
+	start=$(date +%s)
+	"$B/plot" -l id "$T/case" >"$T/out" 2>"$T/err"
+	echo $? >"$T/rc"
+	status 0
+	[ $(($(date +%s) - start)) -le 3 ] && ok || no "$what: more than 3 s"
+	[ "$(grep -c '^<text' "$T/out")" -eq 6000 ] && ok || no "$what: not 6000 labels"
 	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
 	sane "coefficients near the largest double"
 	tc="points 1e308 apart"
