@@ -188,6 +188,10 @@ double loft__h5(double u);
  * H5(a + b x): the restriction of the bump to a piece of it. */
 void loft__bump(double a, double b, double *coef);
 
+/* bezier.c: loft_bezier_surface_eval with second derivatives too. */
+void loft__bezier_surface_eval2(const double *ctl, int m, int n, double u,
+    double v, double *p, double *pu, double *pv, double *puu, double *pvv);
+
 /* patch.c: 0, or LOFT_EINPUT with err filled, unless rec has the five
  * rows of 10 or 15 numbers of a patch. */
 int loft__patch_shape(const struct loft_record *rec, struct loft_error *err);

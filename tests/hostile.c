@@ -7,6 +7,7 @@
  */
 #include <limits.h>
 #include <string.h>
+#include <time.h>
 
 #include "internal.h"             /* vnorm, vunit: the scaled norm */
 #include "check.h"
@@ -162,6 +163,112 @@ test_scaled_norm(void)
 	}
 }
 
+/* t^i (1 - t)^(n - i) and its first and second derivatives in t, by
+ * the product rule on the power form */
+static void
+monomial(int n, int i, double t, double *f)
+{
+	double a = i, b = n - i, s = 1 - t;
+
+	f[0] = pow(t, a) * pow(s, b);
+	f[1] = (a > 0 ? a * pow(t, a - 1) * pow(s, b) : 0) -
+	    (b > 0 ? b * pow(t, a) * pow(s, b - 1) : 0);
+	f[2] = (a > 1 ? a * (a - 1) * pow(t, a - 2) * pow(s, b) : 0) -
+	    (a > 0 && b > 0 ? 2 * a * b * pow(t, a - 1) * pow(s, b - 1) : 0) +
+	    (b > 1 ? b * (b - 1) * pow(t, a) * pow(s, b - 2) : 0);
+}
+
+static double
+choose(int n, int k)
+{
+	return exp(lgamma(n + 1.0) - lgamma(k + 1.0) - lgamma(n - k + 1.0));
+}
+
+/*
+ * A Bezier surface of degrees 63 x 63 (and 1 x 5, 2 x 2) against the
+ * sum of its definition, C(m, i) C(n, j) u^i (1-u)^(m-i) v^j (1-v)^(n-j)
+ * P_ij, differentiated by hand; and 10,000 points of the 63 x 63 net in
+ * well under a second of processor time: its evaluation is O(m n) per
+ * point (a de Casteljau triangle per row, O(m n^2), took 4 s).
+ */
+static void
+test_bezier_surface(void)
+{
+	static const int deg[][2] = { { 63, 63 }, { 1, 5 }, { 2, 2 } };
+	static double ctl[64 * 64 * 3];
+	struct loft_surface sf = { 0 };
+	struct loft_record rec;
+	struct loft_error err;
+	struct loft_attr attr[2] = { { "m", "63" }, { "n", "63" } };
+	clock_t t0;
+
+	for (size_t k = 0; k < sizeof ctl / sizeof ctl[0]; k++)
+		ctl[k] = sin(0.37 * (double)k) + (double)(k % 3);
+	for (size_t d = 0; d < sizeof deg / sizeof deg[0]; d++) {
+		int m = deg[d][0], n = deg[d][1];
+		char ms[8], ns[8];
+
+		snprintf(ms, sizeof ms, "%d", m);
+		snprintf(ns, sizeof ns, "%d", n);
+		attr[0].val = ms;
+		attr[1].val = ns;
+		memset(&rec, 0, sizeof rec);
+		rec.type = "bezier-surface";
+		rec.attr = attr;
+		rec.nattr = 2;
+		rec.num = ctl;
+		rec.nrows = (size_t)(m + 1) * (size_t)(n + 1);
+		rec.ncols = 3;
+		CHECK(loft_surface_from_record(&rec, &sf, &err) == 0, "%s",
+		    err.msg);
+		for (int q = 0; q < 7; q++) {
+			double u = q / 6.0, v = fmod(0.3 + q * 0.29, 1);
+			double got[5][3], want[5][3] = { { 0 } }, most = 0;
+
+			loft_surface_eval2(&sf, u, v, got[0], got[1], got[2],
+			    got[3], got[4]);
+			for (int i = 0; i <= m; i++)
+				for (int j = 0; j <= n; j++) {
+					double fu[3], fv[3], c = choose(m, i) *
+					    choose(n, j);
+					const double *pij = ctl + 3 * (i * (n + 1) + j);
+
+					monomial(m, i, u, fu);
+					monomial(n, j, v, fv);
+					for (int k = 0; k < 3; k++) {
+						want[0][k] += c * fu[0] * fv[0] * pij[k];
+						want[1][k] += c * fu[1] * fv[0] * pij[k];
+						want[2][k] += c * fu[0] * fv[1] * pij[k];
+						want[3][k] += c * fu[2] * fv[0] * pij[k];
+						want[4][k] += c * fu[0] * fv[2] * pij[k];
+					}
+				}
+			for (int e = 0; e < 5; e++)
+				for (int k = 0; k < 3; k++)
+					most = fmax(most, fabs(got[e][k] - want[e][k]) /
+					    fmax(1, fabs(want[e][k])));
+			/* the sum of 4096 terms, some 1e17 before they cancel
+			 * in the derivatives: 1e-9 is a few hundred ulps */
+			CHECK(most < 1e-9, "%dx%d at (%g, %g): off by %g", m, n,
+			    u, v, most);
+		}
+	}
+	attr[0].val = "63";
+	attr[1].val = "63";
+	rec.nrows = 64 * 64;
+	CHECK(loft_surface_from_record(&rec, &sf, &err) == 0, "%s", err.msg);
+	t0 = clock();
+	for (int q = 0; q < 10000; q++) {
+		double p[3], pu[3], pv[3];
+
+		loft_surface_eval(&sf, (q % 100) / 99.0, (q / 100) / 99.0, p, pu,
+		    pv);
+	}
+	CHECK((double)(clock() - t0) / CLOCKS_PER_SEC < 1.5, "10,000 points "
+	    "of a 63 x 63 net took %.2f s", (double)(clock() - t0) /
+	    CLOCKS_PER_SEC);
+}
+
 int
 main(void)
 {
@@ -169,5 +276,6 @@ main(void)
 	test_split_missing_neighbour();
 	test_parse_int_wrap();
 	test_scaled_norm();
+	test_bezier_surface();
 	return check_done("hostile");
 }
