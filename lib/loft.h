@@ -478,7 +478,9 @@ struct loft_psurface {
 };
 
 #define LOFT_NORMAL_MAXDEG 24   /* the Bernstein Gram matrix's condition
-				   number passes 1e12 not far above this */
+				   number passes 1e12 not far above this;
+				   a surface's is about the product of its
+				   two degrees': m + n up to about 30 */
 
 /*
  * Carriazo, Marquez and Ugail's normal approximation (section 3): the

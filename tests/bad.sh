@@ -1035,6 +1035,19 @@ bezapprox_cases() {
 	expr "-n 1.5" 2 "-n 1.5: want a whole number" -n 1.5 -x t -y t
 	expr "-n x" 2 "-n " -n x -x t -y t
 	expr "no -y" 2 "-y is missing" -x t
+	# issue 12: surface degrees above 17 were always "singular" though
+	# 24 was documented; bezapprox(1) now says m + n up to about 30:
+	# these solve (to the edge of that), and 24,24 is reported singular
+	for mn in 15,15 20,10 24,6 6,24 24,1; do
+		tc="the surface at -n $mn"
+		what=$tc
+		"$B/bezapprox" -n "$mn" -x u -y v -z 'sin(u+v)' >"$T/out" 2>"$T/err"
+		echo $? >"$T/rc"
+		status 0
+		v=$(valid "$T/out") && ok || no "$what: $v"
+	done
+	expr "the surface at -n 24,24" 1 "the system for the control points is singular" \
+	    -n 24,24 -x u -y v -z 'sin(u+v)'
 	tc="-n 24, the highest degree"
 	what=$tc
 	"$B/bezapprox" -n 24 -x 'cos(t)' -y 'sin(t)' >"$T/out" 2>"$T/err"
