@@ -1434,10 +1434,12 @@ patchdrag_cases() {
 	says "a bezier record: want a curve of cubic or quartic segments"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
 	# issue 12: -t read the point at -u before -u was checked (memcheck
-	# sees the uninitialised read; skipped without valgrind, and under
-	# check-valgrind, whose programs are memcheck's already)
+	# sees the uninitialised read; skipped without valgrind, under
+	# check-valgrind, whose programs are memcheck's already, and for a
+	# sanitized build, which memcheck cannot run)
 	tc="-t beyond the end of a curve, under memcheck"
-	if [ -z "$LOFT_BIN" ] && command -v valgrind >/dev/null 2>&1; then
+	if [ -z "$LOFT_BIN" ] && command -v valgrind >/dev/null 2>&1 &&
+	    ! grep -q __asan_init "$B/patchdrag"; then
 		printf 'cubic\n0 0 1 0 1 0 1 0\n1 0 2 0 1 0 1 0\n' >"$T/case"
 		what=$tc
 		valgrind -q --error-exitcode=99 "$B/patchdrag" -u 2.5 -t 5,5 \

@@ -125,6 +125,13 @@ oom design patchsplit -u 0.4 "$T/design"
 oom design patchdrag -i 1 -u 0.9 -v 0.5 -b 0,0,1 "$T/design"
 oom design patchjoin -P 1 -S 2 "$T/pieces"
 oom document plot -l id "$T/insole.cubic" "$T/design"
+# the other paths: surfaces, OBJ, every layer of a picture
+"$B/bezapprox" -n 3,3 -x u -y v -z 'u*v' >"$T/net" || exit 2
+oom records sample -f obj "$T/net"
+oom records sample -d -k -u "$T/insole.cubic"
+oom records bezapprox -n 3,3 "$T/p1"
+oom document plot -c -b -m -t -K $F/insole.knots "$T/insole.cubic" "$T/net" \
+    "$T/p1"
 
 # issue 12: a record too large for memory (made so by failing every
 # allocation above 1 MB) is one bad record, reported at a line of it
