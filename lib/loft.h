@@ -493,8 +493,11 @@ struct loft_psurface {
  * space curve has no principal normal, zero curvature, so the point
  * stays on the curve; may be NULL) and F at the minimum to *error.
  * Returns 0, or LOFT_EINPUT / LOFT_EGEOM with err saying why (a value
- * not finite, a vanishing derivative, a singular system; a->npieces 0,
- * which breaks the precondition a->npieces >= 1), or LOFT_ENOMEM.
+ * not finite, a vanishing derivative, a singular system; a->npieces 0
+ * or a->dim not 2 or 3, which break the preconditions), or LOFT_ENOMEM.
+ * A curve whose size is outside [1e-50, 1e50] is solved scaled by a
+ * power of two, so that the results scale with it; LOFT_EGEOM when F, in
+ * its units squared, overflows even so.
  */
 int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
     double *ctl, double *lambda, int *nonormal, double *error,
