@@ -1573,7 +1573,9 @@ plot_cases() {
 	"$B/plot" -l id "$T/case" >"$T/out" 2>"$T/err"
 	echo $? >"$T/rc"
 	status 0
-	[ $(($(date +%s) - start)) -le 3 ] && ok || no "$what: more than 3 s"
+	# (not timed through check-valgrind's wrappers)
+	[ -n "$LOFT_BIN" ] || [ $(($(date +%s) - start)) -le 3 ] && ok ||
+	    no "$what: more than 3 s"
 	[ "$(grep -c '^<text' "$T/out")" -eq 6000 ] && ok || no "$what: not 6000 labels"
 	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
 	sane "coefficients near the largest double"
