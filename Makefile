@@ -22,7 +22,8 @@ BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade \
           bin/offset
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
-          bin/test/numtest bin/test/pow10gen bin/test/offsetref
+          bin/test/numtest bin/test/pow10gen bin/test/offsetref \
+          bin/test/hostile bin/test/oom.so
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
@@ -50,6 +51,9 @@ bin/%: cmd/%.c $(LIB) lib/loft.h
 
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+bin/test/oom.so: tests/oom.c bin/test/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -shared -fPIC -o $@ tests/oom.c
 
 bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
@@ -83,6 +87,13 @@ install: all
 
 clean:
 	rm -rf bin
+
+# make -j clean all: clean must finish before anything is built (it ran
+# beside the build and removed bin/ under ar); GNU make runs goals in
+# order only when not parallel, so with clean among them it is not.
+ifneq ($(filter clean,$(MAKECMDGOALS)),)
+.NOTPARALLEL:
+endif
 
 .PHONY: all check bench demo figures install clean
 .SECONDARY:

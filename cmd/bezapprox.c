@@ -24,13 +24,6 @@ static const char usage_text[] =
     "[-z expr]\n"
     "       bezapprox [-cv] [-n degree | -n m,n] [-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* ------------------------------------------------------------------ */
 /* Where the curve or surface comes from                               */
 
@@ -242,7 +235,7 @@ static void
 bad_option(int c, const char *msg)
 {
 	fprintf(stderr, "bezapprox: -%c %s\n", c, msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /* -n degree or -n m,n */
@@ -353,8 +346,8 @@ main(int argc, char *argv[])
 		case 'x': o.src[0] = optarg; break;
 		case 'y': o.src[1] = optarg; break;
 		case 'z': o.src[2] = optarg; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (check_degrees(&o) != 0)
@@ -370,7 +363,7 @@ main(int argc, char *argv[])
 	if (optind < argc) {
 		fprintf(stderr, "bezapprox: give expressions or input files, "
 		    "not both\n");
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return run_expr(&o, &run);
 }

@@ -37,17 +37,10 @@ static const char usage_text[] =
     "                 [-e edge] [-V] [-p digits] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "patchdrag: -%c %s\n", c, err->msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /* An option's value that dragging cannot use: bad input, exit 1. */
@@ -99,21 +92,19 @@ drag_curve(struct loft_run *run, const struct loft_record *rec,
 	size_t i;
 	int rc;
 
-	if (loft_curve_from_record(rec, &c, err) != 0)
+	if (loft_curve_segments(rec, &c, err) != 0)
 		return LOFT_EINPUT;
+	if (!(o->u >= 0 && o->u <= (double)c.npieces))
+		/* before -t reads the point there: there is none */
+		return loft_fail(err, LOFT_EINPUT, -1, "-u %g is outside the "
+		    "curve's parameter range 0 to %zu", o->u, c.npieces);
 	if ((q = malloc(c.npieces * 5 * c.dim * sizeof *q)) == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	for (i = 0; i < c.npieces; i++)
-		if (strcmp(c.type, "cubic") == 0)
-			loft_cubic_to_quartic(c.coef + i * c.rowlen, c.dim,
-			    q + i * 5 * c.dim);
-		else
-			memcpy(q + i * 5 * c.dim, c.coef + i * c.rowlen,
-			    5 * c.dim * sizeof *q);
+		loft_curve_quartic(&c, i, q + i * 5 * c.dim);
 	i = o->u >= (double)c.npieces ? c.npieces - 1 : (size_t)o->u;
-	if (o->u >= 0 && o->u <= (double)c.npieces)
-		loft_quartic_eval(q + i * 5 * c.dim, c.dim, o->u - (double)i, p,
-		    NULL, NULL);
+	loft_quartic_eval(q + i * 5 * c.dim, c.dim, o->u - (double)i, p, NULL,
+	    NULL);
 	rc = displacement(o, p, c.dim, delta, err);
 	if (rc == 0)
 		rc = loft_quartic_drag(q, c.npieces, c.dim, c.closed, o->u,
@@ -190,6 +181,7 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 	const struct opts *o = run->ctx;
 	long found = -1;
 	struct loft_error err;
+	int bad = 0;
 
 	if (!o->have_id && n != 1) {
 		fprintf(run->msg, "patchdrag: the input holds %zu records: "
@@ -202,10 +194,20 @@ pick(struct loft_run *run, const struct loft_record *recs, size_t n)
 		const char *v = loft_attr(&recs[i], "id");
 		long id;
 
-		if (v != NULL && loft_parse_int(v, 1, 1000000000, &id,
-		    &err) == 0 && id == o->id)
+		err.line = 0;
+		if (v == NULL)
+			continue;
+		if (is_patch(&recs[i]) && loft_patch_id(&recs[i], &id,
+		    &err) != 0) {
+			/* it may be the one: name it, not "no record" alone */
+			loft_report(run, &recs[i], &err);
+			bad = 1;
+		} else if (loft_parse_int(v, 1, 1000000000, &id, &err) == 0 &&
+		    id == o->id)
 			found = (long)i;
 	}
+	if (bad)
+		return -1;
 	if (found < 0)
 		fprintf(run->msg, "patchdrag: no record with id %ld in the "
 		    "input\n", o->id);
@@ -328,15 +330,15 @@ main(int argc, char *argv[])
 		case 'V': o.verbose = 1; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
 			bad_option(c, &err);
 	}
 	if (!o.have_u || moves != 1) {
 		fputs("patchdrag: give -u, and one of -b and -t\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    drag_design);

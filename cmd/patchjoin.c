@@ -19,13 +19,6 @@ struct opts {
 static const char usage_text[] =
     "usage: patchjoin -P id -S id [-v] [-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 static int
 join_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 {
@@ -86,18 +79,18 @@ main(int argc, char *argv[])
 		case 'v': o.verbose = 1; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0) {
 			fprintf(stderr, "patchjoin: -%c %s\n", c, err.msg);
-			usage(2);
+			loft_usage(usage_text, 2);
 		}
 	}
 	if (!o.have_p || !o.have_s) {
 		fputs("patchjoin: give the two patches with -P and -S\n",
 		    stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    join_design);

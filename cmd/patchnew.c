@@ -23,17 +23,10 @@ static const char usage_text[] =
     "       patchnew -b [-i id] [-p digits] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "patchnew: -%c %s\n", c, err->msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /* Write the one patch b to w. */
@@ -79,15 +72,7 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 	}
 	for (size_t i = 0; i < 4; i++) {
 		err.line = 0;
-		if (loft_curve_from_record(&recs[i], &c, &err) != 0) {
-			loft_report(run, &recs[i], &err);
-			return 1;
-		}
-		if (strcmp(c.type, "cubic") != 0 &&
-		    strcmp(c.type, "quartic") != 0) {
-			/* its rows are control points, not quartic vectors */
-			loft_fail(&err, LOFT_EINPUT, -1, "a %s record: a "
-			    "boundary is a cubic or quartic segment", c.type);
+		if (loft_curve_segments(&recs[i], &c, &err) != 0) {
 			loft_report(run, &recs[i], &err);
 			return 1;
 		}
@@ -102,10 +87,7 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 			return 1;
 		}
 		dim = c.dim;
-		if (strcmp(c.type, "cubic") == 0)
-			loft_cubic_to_quartic(c.coef, dim, q[i]);
-		else
-			memcpy(q[i], c.coef, 5 * (size_t)dim * sizeof *c.coef);
+		loft_curve_quartic(&c, 0, q[i]);
 		qp[i] = q[i];
 	}
 	err.line = 0;
@@ -116,7 +98,11 @@ from_curves(struct loft_run *run, const struct loft_record *recs, size_t n)
 		loft_report(run, &recs[i], &err);
 		return 1;
 	}
-	return put_patch(&run->w, b, dim, o->id, &err);
+	if (put_patch(&run->w, b, dim, o->id, &err) != 0) {
+		loft_report(run, &recs[0], &err);     /* out of memory */
+		return 1;
+	}
+	return 0;
 }
 
 /* -c: the bilinear patch through the corners, written to standard output. */
@@ -191,8 +177,8 @@ main(int argc, char *argv[])
 			break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
 			bad_option(c, &err);
@@ -201,7 +187,7 @@ main(int argc, char *argv[])
 	    (!o.boundary && optind < argc)) {
 		fputs("patchnew: give four corners with -c, or -b and the "
 		    "curves\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (!o.boundary) {
 		/* corners were stored LOFT_MAXDIM apart; pack them */

@@ -20,13 +20,6 @@ struct opts {
 static const char usage_text[] =
     "usage: patchsplit -u t | -v t [-i id] [-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 static int
 split_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 {
@@ -80,11 +73,11 @@ parse_t(int c, const char *arg, struct opts *o)
 
 	if (o->dir >= 0) {
 		fputs("patchsplit: give one of -u and -v\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (loft_parse_num(arg, strlen(arg), &o->t, &err) != 0) {
 		fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (!(o->t > 0 && o->t < 1)) {
 		/* a number splitting cannot use: bad input, not usage */
@@ -120,18 +113,18 @@ main(int argc, char *argv[])
 				goto bad;
 			run.w.digits = whole;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.dir < 0) {
 		fputs("patchsplit: give -u t or -v t\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    split_design);
 bad:
 	fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

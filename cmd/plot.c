@@ -69,12 +69,22 @@ struct stroke {
 struct label {
 	int rec;
 	double at[2];           /* where the label's text begins */
+	double anchor[2];       /* its record's rightmost point */
+	int numbered;           /* the text is the record's number */
 	char *text;
 };
 
 /* A box in the plane: lo[0..1], hi[0..1]; empty while lo > hi. */
 struct box {
 	double lo[2], hi[2];
+};
+
+/* A record drawn: its extent, and where it came from. */
+struct drawn {
+	struct box box;
+	double kmax;            /* its comb's largest curvature */
+	const char *file;
+	long line;
 };
 
 struct pic {
@@ -93,8 +103,11 @@ struct pic {
 	struct label *lb;
 	size_t nlb, lbcap;
 	struct box box;         /* of the curves, points and knots */
+	struct box kbox;        /* of the knots of -K */
 	double kmax;            /* largest curvature of any comb tooth */
 	int nrec;               /* records drawn */
+	struct drawn *rec;      /* each of them */
+	size_t reccap;
 	int failed;             /* out of memory */
 };
 
@@ -117,13 +130,6 @@ static const char *const colours[] = {
 	"#6d4c41", "#ad1457",
 };
 #define NCOLOURS (sizeof colours / sizeof colours[0])
-
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
 
 /* ------------------------------------------------------------------ */
 /* Collecting the picture */
@@ -603,8 +609,9 @@ add_label(struct pic *pc, const struct loft_record *rec,
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	l = &pc->lb[pc->nlb++];
 	l->rec = pc->nrec;
-	l->at[0] = e->right[0];
-	l->at[1] = e->right[1];
+	l->numbered = v == num;
+	l->at[0] = l->anchor[0] = e->right[0];
+	l->at[1] = l->anchor[1] = e->right[1];
 	return 0;
 }
 
@@ -626,6 +633,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	int rc;
 
 	box_empty(&e.box);
+	pc->kmax = 0;           /* this record's own, for pc->rec */
 	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
 		rc = draw_points(pc, rec, &e, err);
 	else if (loft_is_surface(rec)) {
@@ -642,6 +650,9 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	}
 	if (rc == 0 && pc->label_key != NULL)
 		rc = add_label(pc, rec, &e, err);
+	if (rc == 0 && grow((void **)&pc->rec, &pc->reccap,
+	    (size_t)pc->nrec + 1, sizeof *pc->rec) != 0)
+		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc != 0) {
 		pc->npt = npt;
 		pc->nst = nst;
@@ -651,6 +662,9 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_EINPUT;
 	}
 	box_join(&pc->box, &e.box);
+	pc->rec[pc->nrec] = (struct drawn){ e.box, pc->kmax, rec->file,
+	    rec->line };
+	pc->kmax = fmax(kmax, pc->kmax);
 	pc->nrec++;
 	return 0;
 }
@@ -675,6 +689,7 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_EINPUT;
 	}
 	box_join(&pc->box, &e.box);
+	box_join(&pc->kbox, &e.box);
 	return 0;
 }
 
@@ -915,44 +930,150 @@ overlap(const struct box *a, const struct box *b)
 }
 
 /*
+ * The labels placed so far, in a grid of cells of the size of a typical
+ * label (font high, the mean label wide), so that finding those a label
+ * may overlap looks at its few cells, not at every label: 20,000 labels
+ * took 102 s by comparing each with all the others after every move.
+ * A hash of (column, row) picks a chain of the cells' entries.
+ */
+struct grid {
+	double cw, ch, x0, y0;  /* cell size, origin */
+	size_t *head;           /* nbucket chains, (size_t)-1 at their end */
+	size_t nbucket;
+	struct cell { long cx, cy; size_t lb, next; } *e;
+	size_t ne, ecap;
+};
+
+static size_t
+bucket(const struct grid *g, long cx, long cy)
+{
+	unsigned long h = (unsigned long)cx * 2654435761UL ^
+	    (unsigned long)cy * 40503UL;
+
+	return (size_t)(h ^ h >> 15) & (g->nbucket - 1);
+}
+
+/* The cell range [c0, c1] of box b along k. */
+static void
+cells(const struct grid *g, const struct box *b, int k, long *c0, long *c1)
+{
+	double o = k ? g->y0 : g->x0, w = k ? g->ch : g->cw;
+
+	*c0 = (long)floor((b->lo[k] - o) / w);
+	*c1 = (long)floor((b->hi[k] - o) / w);
+}
+
+/* Add label lb, in box b, to every cell it covers; -1: out of memory. */
+static int
+grid_add(struct grid *g, const struct box *b, size_t lb)
+{
+	long x0, x1, y0, y1;
+
+	cells(g, b, 0, &x0, &x1);
+	cells(g, b, 1, &y0, &y1);
+	for (long cx = x0; cx <= x1; cx++)
+		for (long cy = y0; cy <= y1; cy++) {
+			size_t h = bucket(g, cx, cy);
+
+			if (grow((void **)&g->e, &g->ecap, g->ne + 1,
+			    sizeof *g->e) != 0)
+				return -1;
+			g->e[g->ne] = (struct cell){ cx, cy, lb, g->head[h] };
+			g->head[h] = g->ne++;
+		}
+	return 0;
+}
+
+/* The first label placed (lowest index) whose box overlaps b, or
+ * (size_t)-1 if none does. */
+static size_t
+grid_first(const struct grid *g, const struct box *b, const struct box *placed)
+{
+	size_t first = (size_t)-1;
+	long x0, x1, y0, y1;
+
+	cells(g, b, 0, &x0, &x1);
+	cells(g, b, 1, &y0, &y1);
+	for (long cx = x0; cx <= x1; cx++)
+		for (long cy = y0; cy <= y1; cy++)
+			for (size_t k = g->head[bucket(g, cx, cy)];
+			    k != (size_t)-1; k = g->e[k].next)
+				if (g->e[k].cx == cx && g->e[k].cy == cy &&
+				    g->e[k].lb < first &&
+				    overlap(b, &placed[g->e[k].lb]))
+					first = g->e[k].lb;
+	return first;
+}
+
+/*
  * Place the labels: each at its record's rightmost point, moved down a
- * line at a time while it overlaps a label placed before it (records
- * that share their rightmost point get their labels one under another).
- * Adds their boxes to frame.
+ * line at a time while it overlaps a label placed before it, below the
+ * first (in input order) it overlaps (records that share their rightmost
+ * point get their labels one under another).  Adds their boxes to frame.
  */
 static int
 place_labels(struct pic *pc, double font, struct box *frame)
 {
 	struct box *placed = malloc(pc->nlb * sizeof *placed);
+	struct grid g = { 0 };
+	double width = 0;
+	size_t n = 0;
+	int rc = 0;
 
-	if (placed == NULL)
-		return -1;
 	for (size_t i = 0; i < pc->nlb; i++) {
-		label_box(&pc->lb[i], font, &placed[i]);
-		for (size_t j = 0; j < i; j++)
-			if (overlap(&placed[i], &placed[j])) {
-				pc->lb[i].at[1] = placed[j].lo[1] - 0.6 * font;
-				label_box(&pc->lb[i], font, &placed[i]);
-				j = (size_t)-1;         /* check them all again */
-			}
-		box_join(frame, &placed[i]);
+		struct label *l = &pc->lb[i];
+
+		l->at[0] = l->anchor[0];
+		l->at[1] = l->anchor[1];
+		width += CHAR_EM * font * (double)strlen(l->text);
+		n++;
 	}
+	g.ch = font;
+	g.cw = fmax(font, width / (double)(n > 0 ? n : 1));
+	g.x0 = frame->lo[0];
+	g.y0 = frame->lo[1];
+	for (g.nbucket = 64; g.nbucket < 2 * n; g.nbucket *= 2)
+		;
+	g.head = malloc(g.nbucket * sizeof *g.head);
+	if (placed == NULL || g.head == NULL || !(g.cw > 0 && g.ch > 0)) {
+		rc = placed == NULL || g.head == NULL ? -1 : 0;
+		goto done;
+	}
+	for (size_t h = 0; h < g.nbucket; h++)
+		g.head[h] = (size_t)-1;
+	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
+		size_t j;
+
+		label_box(&pc->lb[i], font, &placed[i]);
+		while ((j = grid_first(&g, &placed[i], placed)) != (size_t)-1) {
+			pc->lb[i].at[1] = placed[j].lo[1] - 0.6 * font;
+			label_box(&pc->lb[i], font, &placed[i]);
+		}
+		box_join(frame, &placed[i]);
+		rc = grid_add(&g, &placed[i], i);
+	}
+done:
+	free(g.head);
+	free(g.e);
 	free(placed);
-	return 0;
+	return rc;
 }
 
-/* Write the whole picture into d; 0, or -1 with err filled. */
+/*
+ * Write the whole picture into d; 0, or LOFT_EGEOM (it cannot be framed)
+ * or LOFT_ENOMEM with err filled.
+ */
 static int
 write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 {
 	struct box b = pc->box;
 	double w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2], dec,
-	    vb[4];
+	    vb[4], kmax = pc->kmax;
 
 	/* the comb's scale, from the curves' extent, and its teeth's tips */
 	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
-	if (scale == 0 && pc->kmax > 0)
-		scale = COMB_LENGTH * big / pc->kmax;
+	if (scale == 0 && kmax > 0)
+		scale = COMB_LENGTH * big / kmax;
 	for (size_t i = 0; i < pc->nst; i++)
 		for (size_t j = 0; pc->st[i].kind == K_COMB &&
 		    j < pc->st[i].n / 2; j++) {
@@ -1051,6 +1172,66 @@ free_pic(struct pic *pc)
 	free(pc->lb);
 	free(pc->pt);
 	free(pc->st);
+	free(pc->rec);
+}
+
+/*
+ * A picture that cannot be framed: take out the record farthest from the
+ * origin (the largest coordinate of its extent), naming it, as if it had
+ * failed when it was read, so that the others are still drawn (one
+ * far-out record emptied the whole picture, naming none).
+ */
+static void
+take_out_farthest(struct pic *pc)
+{
+	int far = 0;
+	double most = -1;
+	size_t k = 0;
+
+	for (int r = 0; r < pc->nrec; r++) {
+		const struct box *b = &pc->rec[r].box;
+		double m = fmax(fmax(fabs(b->lo[0]), fabs(b->hi[0])),
+		    fmax(fabs(b->lo[1]), fabs(b->hi[1])));
+
+		if (m > most) {
+			most = m;
+			far = r;
+		}
+	}
+	fprintf(stderr, "plot: %s:%ld: too far out to be framed with the "
+	    "other records: left out\n", pc->rec[far].file,
+	    pc->rec[far].line);
+	/* its strokes and label go; those after it move up a number */
+	for (size_t i = 0; i < pc->nst; i++)
+		if (pc->st[i].rec != far) {
+			pc->st[k] = pc->st[i];
+			pc->st[k].rec -= pc->st[k].rec > far;
+			k++;
+		}
+	pc->nst = k;
+	k = 0;
+	for (size_t i = 0; i < pc->nlb; i++) {
+		struct label *l = &pc->lb[i];
+
+		if (l->rec == far) {
+			free(l->text);
+			continue;
+		}
+		if (l->rec > far && l->numbered)        /* fewer digits */
+			snprintf(l->text, strlen(l->text) + 1, "%d", l->rec);
+		l->rec -= l->rec > far;
+		pc->lb[k++] = *l;
+	}
+	pc->nlb = k;
+	memmove(pc->rec + far, pc->rec + far + 1,
+	    (size_t)(pc->nrec - far - 1) * sizeof *pc->rec);
+	pc->nrec--;
+	pc->box = pc->kbox;
+	pc->kmax = 0;
+	for (int r = 0; r < pc->nrec; r++) {
+		box_join(&pc->box, &pc->rec[r].box);
+		pc->kmax = fmax(pc->kmax, pc->rec[r].kmax);
+	}
 }
 
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
@@ -1082,15 +1263,16 @@ main(int argc, char *argv[])
 		    break;
 		case 'v': rc = loft_parse_word(optarg, views, &word, &err);
 		    pc.view = word; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0) {
 			fprintf(stderr, "plot: -%c %s\n", c, err.msg);
-			usage(2);
+			loft_usage(usage_text, 2);
 		}
 	}
 	box_empty(&pc.box);
+	box_empty(&pc.kbox);
 	if (knots != NULL) {
 		run.handle = keep_knots;
 		loft_run_files(&run, 1, &knots);
@@ -1100,9 +1282,19 @@ main(int argc, char *argv[])
 	if (pc.nst == 0) {
 		fputs("plot: nothing to draw\n", stderr);
 		status = 1;
-	} else if (write_svg(&d, &pc, &err) != 0) {
-		fprintf(stderr, "plot: %s\n", err.msg);
-		status = 1;
+	} else if ((rc = write_svg(&d, &pc, &err)) != 0) {
+		/* one far-out record must not empty the whole picture */
+		while (rc == LOFT_EGEOM && pc.nrec > 1) {
+			take_out_farthest(&pc);
+			d.len = 0;
+			d.bad = 0;
+			rc = write_svg(&d, &pc, &err);
+		}
+		if (rc != 0)
+			fprintf(stderr, "plot: %s\n", err.msg);
+		else
+			loft_run_write(&run, d.buf, d.len);
+		status = 1;     /* a record was left out, or nothing drawn */
 	} else {
 		status = loft_run_write(&run, d.buf, d.len);
 	}

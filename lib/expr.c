@@ -53,7 +53,16 @@ struct parser {
 	struct loft_error *err;
 	int *col;
 	int failed;
+	int nest;               /* unary() calls now open */
 };
+
+/*
+ * How deep an expression may nest: every nesting (a sign, a parenthesis,
+ * a function's argument, an exponent) passes through unary(), one C
+ * stack frame chain each.  No formula a person writes comes near 200;
+ * 130,000 unary minuses ran the stack out.
+ */
+#define EXPR_MAXNEST 200
 
 static void sum(struct parser *ps);
 
@@ -246,6 +255,12 @@ power(struct parser *ps)
 static void
 unary(struct parser *ps)
 {
+	if (ps->nest >= EXPR_MAXNEST) {
+		skip_space(ps);
+		fail_at(ps, ps->s, "nested more than %d deep", EXPR_MAXNEST);
+		return;
+	}
+	ps->nest++;
 	if (accept(ps, '-')) {
 		unary(ps);
 		emit(ps, OP_NEG, 0, 0);
@@ -253,6 +268,7 @@ unary(struct parser *ps)
 		unary(ps);
 	else
 		power(ps);
+	ps->nest--;
 }
 
 static void
@@ -302,7 +318,7 @@ loft_expr_parse(const char *src, const char *vars, int *col,
     struct loft_error *err)
 {
 	struct loft_expr *e = calloc(1, sizeof *e);
-	struct parser ps = { src, src, vars, e, err, col, 0 };
+	struct parser ps = { src, src, vars, e, err, col, 0, 0 };
 
 	*col = 0;
 	if (e == NULL) {

@@ -28,10 +28,48 @@ vdot(const double *a, const double *b, int dim)
 	return s;
 }
 
+/*
+ * Plain sums of squares inside [VNORM_LO, VNORM_HI] are exact enough, and
+ * vnorm keeps them (figures are compared byte for byte); outside, a
+ * square overflowed or lost its digits to underflow, and vnorm scales
+ * by a power of two first (exact), so that a length of 1e200 or 1e-200
+ * is a length, not infinity or zero: the units of a record never change
+ * a result (issue 12).  Both limits leave each square a normal double.
+ */
+#define VNORM_LO 0x1p-900
+#define VNORM_HI 0x1p+900
+
+/* The largest |a[k]|. */
+static inline double
+vmaxabs(const double *a, int dim)
+{
+	double m = 0;
+
+	for (int k = 0; k < dim; k++)
+		if (fabs(a[k]) > m)
+			m = fabs(a[k]);
+	return m;
+}
+
+/* |a|: the plain root of the sum of squares, or rescaled where it fails */
 static inline double
 vnorm(const double *a, int dim)
 {
-	return sqrt(vdot(a, a, dim));
+	double s = vdot(a, a, dim), m, t = 0;
+	int e;
+
+	if ((s >= VNORM_LO && s <= VNORM_HI) || s != s)
+		return sqrt(s);
+	m = vmaxabs(a, dim);
+	if (m == 0 || isinf(m))
+		return m;
+	e = ilogb(m);
+	for (int k = 0; k < dim; k++) {
+		double x = ldexp(a[k], -e);     /* |x| < 2: no overflow */
+
+		t += x * x;
+	}
+	return ldexp(sqrt(t), e);
 }
 
 /* d = a - b */
@@ -74,13 +112,25 @@ vdist(const double *a, const double *b, int dim)
 	return vnorm(d, dim);
 }
 
-/* Scale a to unit length; returns its former length (0: left alone). */
+/*
+ * Scale a to unit length; returns its former length (0: left alone).
+ * A length whose reciprocal would overflow or be subnormal is scaled by
+ * a power of two first, exactly.
+ */
 static inline double
 vunit(double *a, int dim)
 {
 	double n = vnorm(a, dim);
 
-	if (n > 0)
+	if (n > 0 && (n < VNORM_LO || n > VNORM_HI) &&
+	    vmaxabs(a, dim) < INFINITY) {       /* n may overflow, a not */
+		double m[LOFT_MAXDIM];
+		int e = ilogb(vmaxabs(a, dim));
+
+		for (int k = 0; k < dim; k++)
+			m[k] = ldexp(a[k], -e);
+		vscale(a, 1 / vnorm(m, dim), m, dim);
+	} else if (n > 0)
 		vscale(a, 1 / n, a, dim);
 	return n;
 }
@@ -137,6 +187,10 @@ double loft__h5(double u);
 /* quartic.c: the quartic coefficients, over x in [0, 1], of
  * H5(a + b x): the restriction of the bump to a piece of it. */
 void loft__bump(double a, double b, double *coef);
+
+/* bezier.c: loft_bezier_surface_eval with second derivatives too. */
+void loft__bezier_surface_eval2(const double *ctl, int m, int n, double u,
+    double v, double *p, double *pu, double *pv, double *puu, double *pvv);
 
 /* patch.c: 0, or LOFT_EINPUT with err filled, unless rec has the five
  * rows of 10 or 15 numbers of a patch. */

@@ -135,9 +135,10 @@ void loft_reader_free(struct loft_reader *rd);
 
 /*
  * Read the next record into rec.  Returns 1 when a record was read, 0 at
- * the end of the stream, LOFT_READ_BAD when a malformed record was read
- * and skipped (err says what and where; the next call goes on after it),
- * LOFT_READ_FAIL on a read error or out of memory (err says which).
+ * the end of the stream, LOFT_READ_BAD when a malformed record, or one
+ * too large for memory, was read and skipped (err says what and where;
+ * the next call goes on after it), LOFT_READ_FAIL on a read error or
+ * when memory ran out otherwise (err says which).
  */
 #define LOFT_READ_BAD  (-1)
 #define LOFT_READ_FAIL (-2)
@@ -221,6 +222,18 @@ int loft_run_made(struct loft_run *run);
  * run->status, or 1 when the write failed.
  */
 int loft_run_write(struct loft_run *run, const char *doc, size_t len);
+
+/*
+ * A program's usage text ("usage: prog ...") and exit: with status 0 (-h)
+ * the text goes to standard output, and a failed write makes it "prog:
+ * write error: reason" on standard error (none for a closed pipe) and
+ * exit 1; with another status (a usage error) it goes to standard error.
+ */
+void loft_usage(const char *text, int status)
+#if defined(__GNUC__)
+	__attribute__((noreturn))
+#endif
+	;
 
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
@@ -526,7 +539,9 @@ struct loft_psurface {
 };
 
 #define LOFT_NORMAL_MAXDEG 24   /* the Bernstein Gram matrix's condition
-				   number passes 1e12 not far above this */
+				   number passes 1e12 not far above this;
+				   a surface's is about the product of its
+				   two degrees': m + n up to about 30 */
 
 /*
  * Carriazo, Marquez and Ugail's normal approximation (section 3): the
@@ -539,7 +554,11 @@ struct loft_psurface {
  * space curve has no principal normal, zero curvature, so the point
  * stays on the curve; may be NULL) and F at the minimum to *error.
  * Returns 0, or LOFT_EINPUT / LOFT_EGEOM with err saying why (a value
- * not finite, a vanishing derivative, a singular system).
+ * not finite, a vanishing derivative, a singular system; a->npieces 0
+ * or a->dim not 2 or 3, which break the preconditions), or LOFT_ENOMEM.
+ * A curve whose size is outside [1e-50, 1e50] is solved scaled by a
+ * power of two, so that the results scale with it; LOFT_EGEOM when F, in
+ * its units squared, overflows even so.
  */
 int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
     double *ctl, double *lambda, int *nonormal, double *error,
@@ -551,7 +570,8 @@ int loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
  * clamped when clamp), interior control points on the surface normals at
  * (i / m, j / n), least squares over the square.  Writes (m + 1)(n + 1)
  * control points, u-major, to ctl, and the double integral of
- * |x - B|^2 to *error.  Returns 0 or LOFT_E* with err filled.
+ * |x - B|^2 to *error.  Returns 0 or LOFT_E* with err filled (LOFT_EINPUT
+ * for x->npu or x->npv 0: the precondition is at least one piece each).
  */
 int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err);
@@ -741,6 +761,11 @@ extern const char *const loft_edge_name[4];
 int loft_design_add(struct loft_design *d, const struct loft_record *rec,
     struct loft_error *err);
 
+/* The id= of a patch record rec: 0 and *id, or LOFT_EINPUT (none, or not
+ * a whole number from 1 to 1000000000) with err saying which. */
+int loft_patch_id(const struct loft_record *rec, long *id,
+    struct loft_error *err);
+
 /*
  * Append a patch with coefficients b, id and no neighbours (scale
  * factors 1).  Returns 0 or LOFT_ENOMEM.
@@ -790,7 +815,10 @@ void loft_design_put(struct loft_writer *w, const struct loft_design *d,
  * 0 to t) in its place at i, the second appended at d->n - 1; scale
  * factors multiplied by t and 1 - t, and neighbour links updated on
  * both sides, T-junctions included.  No other patch moves in d->p.
- * Returns 0 or LOFT_ENOMEM.
+ * Preconditions, checked: i < d->n, dir 0 or 1, 0 < t < 1, and every
+ * neighbour patch i names is in d (as loft_design_check ensures).
+ * Returns 0, LOFT_EINPUT (a precondition broken, d unchanged; or the
+ * ids are used up) or LOFT_ENOMEM.
  */
 int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
     struct loft_error *err);
@@ -854,6 +882,19 @@ void loft_patch_bilinear(const double *corner, int dim, double *b);
 #define LOFT_CORNER_TOL 1e-9
 int loft_patch_coons(const double *const *c, int dim, double *b,
     struct loft_error *err);
+
+/*
+ * Recognise rec as a curve of cubic or quartic segments, the curves
+ * patchnew's boundaries and patchdrag's dragged curves are, and fill c
+ * as loft_curve_from_record does.  Returns 0, or LOFT_EINPUT when rec is
+ * no curve or a curve of another kind (a bezier record's rows are
+ * control points, not segments).
+ */
+int loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
+    struct loft_error *err);
+
+/* Segment i of c (from loft_curve_segments) as a quartic: 5 * dim numbers. */
+void loft_curve_quartic(const struct loft_curve *c, size_t i, double *q);
 
 /* ------------------------------------------------------------------ */
 /* Surfaces of any record type, for programs that evaluate them        */

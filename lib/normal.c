@@ -45,6 +45,74 @@
  * largest diagonal entry: the system is singular to working precision. */
 #define SINGULAR_TOL 1e-13
 
+/*
+ * F and the normal equations hold squares of lengths, which overflow for
+ * a curve larger than about 1e150 and lose their digits to underflow
+ * below 1e-150.  A curve or surface whose size lies outside [SCALE_LO,
+ * SCALE_HI] is therefore solved scaled by a power of two (exactly) and
+ * the results scaled back, so that they scale with the units; inside,
+ * far from both ends, nothing changes, to the last bit.
+ */
+#define SCALE_LO 1e-50
+#define SCALE_HI 1e50
+
+/* A curve or surface, its coordinates multiplied by 2^-e. */
+struct scaled {
+	const struct loft_pcurve *a;
+	const struct loft_psurface *x;
+	int e;
+};
+
+static void
+unscale(double *v, int n, int e)
+{
+	for (int k = 0; v != NULL && k < n; k++)
+		v[k] = ldexp(v[k], e);
+}
+
+static void
+scaled_curve_eval(void *ctx, double t, double *p, double *d1, double *d2)
+{
+	const struct scaled *c = ctx;
+
+	c->a->eval(c->a->ctx, t, p, d1, d2);
+	unscale(p, c->a->dim, -c->e);
+	unscale(d1, c->a->dim, -c->e);
+	unscale(d2, c->a->dim, -c->e);
+}
+
+static void
+scaled_surface_eval(void *ctx, double u, double v, double *p, double *pu,
+    double *pv, double *puu, double *pvv)
+{
+	const struct scaled *c = ctx;
+
+	c->x->eval(c->x->ctx, u, v, p, pu, pv, puu, pvv);
+	unscale(p, 3, -c->e);
+	unscale(pu, 3, -c->e);
+	unscale(pv, 3, -c->e);
+	unscale(puu, 3, -c->e);
+	unscale(pvv, 3, -c->e);
+}
+
+/*
+ * The power of two to scale by: 0 for a size (the largest coordinate at
+ * a few parameters) inside [SCALE_LO, SCALE_HI], or not finite, or 0;
+ * those are for the method to judge.
+ */
+static int
+scale_of(const double *pts, int n)
+{
+	double m = 0;
+
+	for (int k = 0; k < n; k++)
+		m = fmax(m, fabs(pts[k]));
+	return m > 0 && isfinite(m) && (m < SCALE_LO || m > SCALE_HI) ?
+	    ilogb(m) : 0;
+}
+
+#define SCALE_PROBES 9  /* t = 0, 1/8, ..., 1 (and that squared) */
+
 struct rule {
 	double *t, *w;
 	size_t count;
@@ -92,17 +160,24 @@ rule_free(struct rule *r)
 	free(r->t);
 	free(r->w);
 	free(r->ends);
+	/* a second free, by squad_free after a failed rule_make, is none */
+	r->t = r->w = r->ends = NULL;
 }
 
 static int
 rule_make(struct rule *r, size_t npieces, struct loft_error *err)
 {
 	double gx[QUAD_NODES], gw[QUAD_NODES];
-	size_t per = npieces >= QUAD_MIN_PANELS ? 1 :
-	    (QUAD_MIN_PANELS + npieces - 1) / npieces;
-	size_t panels = npieces * per;
+	size_t per, panels;
 
-	if (npieces == 0 || panels > (size_t)-1 / QUAD_NODES / sizeof(double))
+	r->t = r->w = r->ends = NULL;
+	if (npieces == 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "a curve or surface of "
+		    "no pieces");
+	per = npieces >= QUAD_MIN_PANELS ? 1 :
+	    (QUAD_MIN_PANELS + npieces - 1) / npieces;
+	panels = npieces * per;
+	if (panels > (size_t)-1 / QUAD_NODES / sizeof(double))
 		return loft_fail(err, LOFT_ENOMEM, -1, "too many pieces");
 	r->count = panels * QUAD_NODES;
 	r->panels = panels;
@@ -413,8 +488,44 @@ curve_solve(const struct rule *r, const double *ap, int dim, int n,
 	return 0;
 }
 
+static int normal_curve(const struct loft_pcurve *a, int n, int clamp,
+    double *ctl, double *lambda, int *nonormal, double *error,
+    struct loft_error *err);
+
 int
 loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
+    double *ctl, double *lambda, int *nonormal, double *error,
+    struct loft_error *err)
+{
+	double pts[SCALE_PROBES * LOFT_MAXDIM];
+	struct scaled c = { a, NULL, 0 };
+	struct loft_pcurve sa = *a;
+	int rc;
+
+	if (a->dim < 2 || a->dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "a curve of dimension "
+		    "%d: want 2 or 3", a->dim);
+	for (int k = 0; k < SCALE_PROBES; k++)
+		a->eval(a->ctx, (double)k / (SCALE_PROBES - 1),
+		    pts + k * a->dim, NULL, NULL);
+	if ((c.e = scale_of(pts, SCALE_PROBES * a->dim)) != 0) {
+		sa.eval = scaled_curve_eval;
+		sa.ctx = &c;
+	}
+	rc = normal_curve(&sa, n, clamp, ctl, lambda, nonormal, error, err);
+	if (rc != 0 || c.e == 0)
+		return rc;
+	unscale(ctl, (n + 1) * a->dim, c.e);
+	unscale(lambda, lambda != NULL ? n + 1 : 0, c.e);
+	*error = ldexp(*error, 2 * c.e);
+	if (!isfinite(*error))
+		return loft_fail(err, LOFT_EGEOM, -1, "the curve is too large: "
+		    "F, in its units squared, overflows");
+	return 0;
+}
+
+static int
+normal_curve(const struct loft_pcurve *a, int n, int clamp,
     double *ctl, double *lambda, int *nonormal, double *error,
     struct loft_error *err)
 {
@@ -712,8 +823,41 @@ squad_make(struct squad *s, const struct loft_psurface *x, int m, int n,
 	return sample_surface(x, &s->ru, &s->rv, s->xp, err);
 }
 
+static int normal_surface(const struct loft_psurface *x, int m, int n,
+    int clamp, double *ctl, double *error, struct loft_error *err);
+
 int
 loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
+    double *ctl, double *error, struct loft_error *err)
+{
+	double pts[SCALE_PROBES * SCALE_PROBES * 3];
+	struct scaled c = { NULL, x, 0 };
+	struct loft_psurface sx = *x;
+	int rc;
+
+	for (int i = 0; i < SCALE_PROBES; i++)
+		for (int j = 0; j < SCALE_PROBES; j++)
+			x->eval(x->ctx, (double)i / (SCALE_PROBES - 1),
+			    (double)j / (SCALE_PROBES - 1),
+			    pts + 3 * (i * SCALE_PROBES + j), NULL, NULL, NULL,
+			    NULL);
+	if ((c.e = scale_of(pts, SCALE_PROBES * SCALE_PROBES * 3)) != 0) {
+		sx.eval = scaled_surface_eval;
+		sx.ctx = &c;
+	}
+	rc = normal_surface(&sx, m, n, clamp, ctl, error, err);
+	if (rc != 0 || c.e == 0)
+		return rc;
+	unscale(ctl, (m + 1) * (n + 1) * 3, c.e);
+	*error = ldexp(*error, 2 * c.e);
+	if (!isfinite(*error))
+		return loft_fail(err, LOFT_EGEOM, -1, "the surface is too "
+		    "large: F, in its units squared, overflows");
+	return 0;
+}
+
+static int
+normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err)
 {
 	struct squad s;

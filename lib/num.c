@@ -210,15 +210,16 @@ loft_parse_int(const char *s, long lo, long hi, long *v,
 {
 	long x = 0;
 	size_t i = 0;
+	int big = 0;            /* above hi: no more arithmetic, it could wrap */
 
 	for (; s[i] >= '0' && s[i] <= '9'; i++) {
-		if (x > (hi - (s[i] - '0')) / 10) {
-			x = hi + 1;     /* too big; keep scanning the digits */
+		if (big || x > (hi - (s[i] - '0')) / 10) {
+			big = 1;        /* keep scanning the digits */
 			continue;
 		}
 		x = 10 * x + (s[i] - '0');
 	}
-	if (i == 0 || s[i] != '\0' || x < lo || x > hi)
+	if (i == 0 || s[i] != '\0' || big || x < lo || x > hi)
 		return loft_fail(err, LOFT_EINPUT, -1, "'%s': want a whole "
 		    "number from %ld to %ld", s, lo, hi);
 	*v = x;

@@ -153,6 +153,29 @@ loft_patch_bilinear(const double *corner, int dim, double *b)
 				    lin1[i] * lin1[j] * p11[c];
 }
 
+int
+loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
+    struct loft_error *err)
+{
+	int rc = loft_curve_from_record(rec, c, err);
+
+	if (rc == 0 && c->eval == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "a %s record: want a "
+		    "curve of cubic or quartic segments", c->type);
+	return rc;
+}
+
+void
+loft_curve_quartic(const struct loft_curve *c, size_t i, double *q)
+{
+	const double *piece = c->coef + i * (size_t)c->rowlen;
+
+	if (c->rowlen == 4 * c->dim)            /* a cubic's four vectors */
+		loft_cubic_to_quartic(piece, c->dim, q);
+	else
+		memcpy(q, piece, 5 * (size_t)c->dim * sizeof *q);
+}
+
 /*
  * Coons' bilinearly blended patch, the Boolean sum
  *   f = (1 - u) a(v) + u b(v) + (1 - v) c(u) + v d(u) - bilinear(corners)
@@ -485,6 +508,19 @@ loft_design_new(struct loft_design *d, const double *b, int dim, long id,
 }
 
 int
+loft_patch_id(const struct loft_record *rec, long *id, struct loft_error *err)
+{
+	const char *v = loft_attr(rec, "id");
+
+	if (v == NULL)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
+	if (loft_parse_int(v, 1, ID_MAX, id, err) != 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
+		    "a whole number from 1 to %ld", v, ID_MAX);
+	return 0;
+}
+
+int
 loft_design_add(struct loft_design *d, const struct loft_record *rec,
     struct loft_error *err)
 {
@@ -492,19 +528,18 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 	struct loft_patch *p;
 	const char *v;
 	int dim = rec->ncols / 5, rc;
+	long id;
 
 	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
 	if (loft__patch_shape(rec, err) != 0)
 		return LOFT_EINPUT;
-	if ((v = loft_attr(rec, "id")) == NULL)
-		return loft_fail(err, LOFT_EINPUT, -1, "patch has no id=");
+	if (loft_patch_id(rec, &id, err) != 0)
+		return LOFT_EINPUT;
 	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	p = &d->p[d->n];
-	if (loft_parse_int(v, 1, ID_MAX, &p->id, err) != 0)
-		return loft_fail(err, LOFT_EINPUT, -1, "attribute id=%s: want "
-		    "a whole number from 1 to %ld", v, ID_MAX);
+	p->id = id;
 	p->dim = dim;
 	p->rec = rec;
 	memcpy(p->b, rec->num, 25 * (size_t)dim * sizeof *p->b);
@@ -832,6 +867,19 @@ loft_design_split(struct loft_design *d, size_t i, int dir, double t,
 	    dir == 0 ? LOFT_V1 : LOFT_U1 };
 	struct loft_patch ch[2], *q;
 
+	if (i >= d->n || (dir != 0 && dir != 1) || !(t > 0 && t < 1))
+		return loft_fail(err, LOFT_EINPUT, -1, "split of patch %zu of "
+		    "%zu, direction %d, at %g: want a patch of the design, "
+		    "direction 0 or 1, 0 < t < 1", i, d->n, dir, t);
+	/* the links the children keep are renamed in the neighbours: each
+	 * must be there (loft_design_check's promise, checked here) */
+	for (int e = 0; e < 4; e++)
+		for (size_t k = 0; k < d->p[i].nlink[e]; k++)
+			if (loft_design_find(d, d->p[i].link[e][k].id) < 0)
+				return loft_fail(err, LOFT_EINPUT, -1, "patch %ld:"
+				    " neighbour %ld across %s is not in the "
+				    "design", d->p[i].id, d->p[i].link[e][k].id,
+				    loft_edge_name[e]);
 	if (d->maxid > ID_MAX - 2)
 		return loft_fail(err, LOFT_EINPUT, -1, "ids are used up (the "
 		    "largest is %ld)", d->maxid);

@@ -217,7 +217,14 @@ loft_drag_project(double *delta, const double *view, int dim,
     struct loft_error *err)
 {
 	double ww = vdot(view, view, dim), len = vnorm(delta, dim);
+	double unit[LOFT_MAXDIM];
 
+	if (!(ww >= VNORM_LO && ww <= VNORM_HI)) {
+		/* w . w overflowed or underflowed: project on w / |w| */
+		vcopy(unit, view, dim);
+		ww = vunit(unit, dim) > 0 ? 1 : 0;
+		view = unit;
+	}
 	if (!(ww > 0))
 		return loft_fail(err, LOFT_EGEOM, -1, "the viewing direction "
 		    "is zero");

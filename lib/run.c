@@ -95,6 +95,28 @@ write_failed(struct loft_run *run)
 	return 1;
 }
 
+void
+loft_usage(const char *text, int status)
+{
+	FILE *fp = status == 0 ? stdout : stderr;
+	const char *prog = "loft";
+	int n = 4;
+
+	if (strncmp(text, "usage: ", 7) == 0) {
+		prog = text + 7;
+		n = (int)strcspn(prog, " \n");
+	}
+	errno = 0;
+	if ((fputs(text, fp) == EOF || fflush(fp) != 0 || ferror(fp)) &&
+	    status == 0) {
+		if (errno != EPIPE)
+			fprintf(stderr, "%.*s: write error: %s\n", n, prog,
+			    strerror(errno ? errno : EIO));
+		status = 1;
+	}
+	exit(status);
+}
+
 /* Release the writer, flush the output, and return the exit status. */
 static int
 finish(struct loft_run *run)

@@ -132,8 +132,8 @@ looks_nonfinite(const char *s)
 	return 0;
 }
 
-/* Kinds of line. */
-enum { L_EOF, L_BLANK, L_COMMENT, L_HEADER, L_ROW, L_FAIL };
+/* Kinds of line; L_NOMEM: a line too long for memory, skipped. */
+enum { L_EOF, L_BLANK, L_COMMENT, L_HEADER, L_ROW, L_FAIL, L_NOMEM };
 
 /*
  * Read the next line into rd->line, strip its comment, and classify it.
@@ -148,6 +148,20 @@ next_line(struct loft_reader *rd, struct loft_error *err, int *bad)
 
 	errno = 0;
 	n = getline(&rd->line, &rd->linecap, rd->fp);
+	if (n < 0 && errno == ENOMEM && !ferror(rd->fp)) {
+		/* the line did not fit: read past it, a byte at a time */
+		int c;
+
+		while ((c = getc(rd->fp)) != EOF && c != '\n')
+			;
+		if (!ferror(rd->fp)) {
+			rd->lineno++;
+			err->line = rd->lineno;
+			loft_fail(err, LOFT_ENOMEM, -1, "line too long for "
+			    "memory");
+			return L_NOMEM;
+		}
+	}
 	if (n < 0) {
 		if (ferror(rd->fp) || errno == ENOMEM) {
 			err->line = rd->lineno;
@@ -286,7 +300,8 @@ parse_row(struct loft_reader *rd, struct loft_record *rec,
 	return 0;
 }
 
-/* Skip the rest of a bad record: up to a blank line or the end. */
+/* Skip the rest of a bad record: up to a blank line or the end (a line
+ * too long for memory is one of its lines). */
 static void
 skip_record(struct loft_reader *rd)
 {
@@ -314,6 +329,12 @@ loft_read(struct loft_reader *rd, struct loft_record *rec,
 		kind = rd->eof ? L_EOF : next_line(rd, err, &bad);
 		if (kind == L_FAIL)
 			return LOFT_READ_FAIL;
+		if (kind == L_NOMEM) {
+			if (!started)
+				rec->line = rd->lineno;
+			started = 1;
+			goto nomem;
+		}
 		if (kind == L_EOF || (kind == L_BLANK && started))
 			return started ? 1 : 0;
 		if (bad) {
@@ -339,8 +360,19 @@ loft_read(struct loft_reader *rd, struct loft_record *rec,
 			rc = parse_row(rd, rec, err);
 		}
 		started = 1;
-		if (rc == LOFT_ENOMEM)
-			return LOFT_READ_FAIL;
+		if (rc == LOFT_ENOMEM) {
+			err->line = rd->lineno;
+nomem:
+			/*
+			 * A record too large for memory is one bad record: the
+			 * others, after it too, are still read (issue 12).
+			 */
+			loft_fail(err, LOFT_ENOMEM, -1, "record too large for "
+			    "memory (out of memory at this line): skipped to "
+			    "its end");
+			skip_record(rd);
+			return LOFT_READ_BAD;
+		}
 		if (rc != 0) {
 			skip_record(rd);
 			return LOFT_READ_BAD;

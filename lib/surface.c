@@ -111,20 +111,13 @@ eval2_patch(const struct loft_surface *s, double u, double v, double *p,
 	}
 }
 
-/* The same for a Bezier net: its u-rows are Bezier curves in v. */
+/* The same for a Bezier net. */
 static void
 eval2_bezier_surface(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv, double *duu, double *dvv)
 {
-	double g[3][LOFT_BEZIER_MAXPTS * 3];
-	size_t m = (size_t)s->m + 1, n = (size_t)s->n + 1;
-
-	for (size_t i = 0; i < m; i++)
-		loft_bezier_eval(s->coef + 3 * i * n, n, 3, v, g[0] + 3 * i,
-		    g[1] + 3 * i, g[2] + 3 * i);
-	loft_bezier_eval(g[0], m, 3, u, p, du, duu);
-	loft_bezier_eval(g[1], m, 3, u, dv, NULL, NULL);
-	loft_bezier_eval(g[2], m, 3, u, dvv, NULL, NULL);
+	loft__bezier_surface_eval2(s->coef, s->m, s->n, u, v, p, du, dv, duu,
+	    dvv);
 }
 
 static const struct surface_type types[] = {

@@ -35,5 +35,7 @@ suite sh tests/plot.sh
 suite sh tests/grade.sh
 suite sh tests/offset.sh
 suite sh tests/bad.sh
+suite bin/test/hostile
+suite sh tests/oom.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -26,6 +26,13 @@ $W/gen outline 1000000 >$W/outline.knots || exit 1
 $W/gen space 20000 >$W/space.knots || exit 1
 $W/gen spline $W/space.knots >$W/space.spline || exit 1
 $B/splinefit $W/insoles.knots >$W/insoles.cubic || exit 1
+# 20,000 labelled records crowded on a grid (plot -l placed them in cubic
+# time once), and a bezier-surface of 64 x 64 control points
+awk 'BEGIN { for (i = 0; i < 20000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
+    i, i % 140, int(i / 140), i % 140 + 1, int(i / 140) }' >$W/labels.pts
+awk 'BEGIN { print "bezier-surface m=63 n=63"; for (i = 0; i < 64; i++)
+    for (j = 0; j < 64; j++) printf "%d %d %.6f\n", i, j, sin(i / 9) * cos(j / 7) }' \
+    >$W/surface63.bez
 
 have_spline=0
 if command -v "$SPLINE" >/dev/null 2>&1 &&
@@ -65,6 +72,8 @@ while [ "$rep" -le "$REPS" ]; do
 	    case_ gnu-spline "$SPLINE -a -d 2 -p -n 440 $W/insoles.spline"
 	[ $have_scipy = 1 ] &&
 	    case_ scipy "$PYTHON tests/bench/scipy_spline.py 20 $W/insoles.knots"
+	case_ plot-labels "$B/plot -l id $W/labels.pts"
+	case_ surface-63 "$B/sample -n 100 $W/surface63.bez"
 	case_ outline-fit "$B/splinefit $W/outline.knots"
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"
 	[ $have_spline = 1 ] &&

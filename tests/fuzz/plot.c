@@ -65,6 +65,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	pc.steps = 1 + (data[1] & 7);
 	pc.grid = 1 + ((data[1] >> 3) & 7);
 	box_empty(&pc.box);
+	box_empty(&pc.kbox);
 	fuzz_records(&run, data + 2, size - 2);
 	if (pc.nst > 0 && write_svg(&d, &pc, &err) == 0)
 		fuzz_check_svg(d.buf, d.len);
