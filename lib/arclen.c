@@ -48,10 +48,14 @@ static const double wg[4] = {
  */
 #define QUAD_DEPTH 40
 
-/* Newton on the length stops within this fraction of the curve's. */
+/* Newton on the length stops within this fraction of the piece's. */
 #define ARC_TOL 1e-13
 
 #define QUAD_MAXF 4
+
+/* Newton's corrections below this fraction of a walk's fine width
+ * take 3 points. */
+#define SHORT_STEP 1e-3
 
 struct quad {
 	const struct loft__piece *pc;
@@ -59,6 +63,7 @@ struct quad {
 	void *ctx;
 	int m;
 	int failed;
+	int deepest;            /* the deepest level accepted */
 };
 
 /* K15 and G7 over [a, b], and K15 of |f|. */
@@ -106,6 +111,8 @@ adapt(struct quad *q, double a, double b, const double *k, const double *g,
 	if (ok || depth >= QUAD_DEPTH) {
 		if (!ok)
 			q->failed = 1;
+		if (depth > q->deepest)
+			q->deepest = depth;
 		for (int j = 0; j < q->m; j++)
 			sum[j] += k[j];
 		return;
@@ -121,9 +128,9 @@ adapt(struct quad *q, double a, double b, const double *k, const double *g,
 int
 loft__quad(const struct loft__piece *pc, double a, double b, int m,
     loft__integrand f, void *ctx, double rel, const double *floor,
-    double *sum)
+    double *sum, int *depth)
 {
-	struct quad q = { pc, f, ctx, m, 0 };
+	struct quad q = { pc, f, ctx, m, 0, 0 };
 	double k[QUAD_MAXF], g[QUAD_MAXF], kabs[QUAD_MAXF], tol[QUAD_MAXF];
 
 	if (!(b > a))
@@ -132,6 +139,8 @@ loft__quad(const struct loft__piece *pc, double a, double b, int m,
 	for (int j = 0; j < m; j++)
 		tol[j] = rel * kabs[j] + (floor != NULL ? floor[j] * (b - a) : 0);
 	adapt(&q, a, b, k, g, tol, 0, sum);
+	if (depth != NULL)
+		*depth = q.deepest;
 	return q.failed ? LOFT_ENOCONV : 0;
 }
 
@@ -145,13 +154,14 @@ loft__speed(const struct loft__piece *pc, double u, double *f, void *ctx)
 	f[0] = vnorm(d, pc->dim);
 }
 
-/* The length of piece pc over [a, b]. */
+/* The length of piece pc over [a, b]; *depth the deepest halving. */
 static double
-piece_arc(const struct loft__piece *pc, double a, double b)
+piece_arc(const struct loft__piece *pc, double a, double b, int *depth)
 {
 	double s = 0;
 
-	loft__quad(pc, a, b, 1, loft__speed, NULL, LOFT_ARC_REL, NULL, &s);
+	loft__quad(pc, a, b, 1, loft__speed, NULL, LOFT_ARC_REL, NULL, &s,
+	    depth);
 	return s;
 }
 
@@ -173,7 +183,7 @@ loft_curve_arc(const struct loft_curve *c, double u0, double u1)
 	for (size_t i = (size_t)u0; i < c->npieces && (double)i < u1; i++) {
 		loft__piece(c, i, &pc);
 		s += piece_arc(&pc, fmax(u0 - (double)i, 0),
-		    fmin(u1 - (double)i, 1));
+		    fmin(u1 - (double)i, 1), NULL);
 	}
 	return sign * s;
 }
@@ -185,26 +195,95 @@ loft_curve_length(const struct loft_curve *c)
 }
 
 /*
- * The local parameter in piece pc where the length from its start is t,
- * given that the length to ub is *sb <= t (on return: the length to the
- * parameter returned) and the piece's whole length is
- * len >= t: Newton's method on s(u) - t, s'(u) = |P'(u)|, the length
- * brought up from the last iterate each step; a step that leaves the
- * bracket, or a zero speed, bisects instead.  tol is the length error
- * accepted.
+ * A piece being walked by arc length: its length, and the widest
+ * interval fine on which a fixed rule is trusted, 2^-d where the
+ * adaptive rule halved the piece d times to reach LOFT_ARC_REL: the
+ * speed is as smooth over any interval that narrow as over the
+ * intervals the rule accepted, and a Gauss rule's error falls with the
+ * width to its order, so G7 there is as good as K15 was (for an
+ * analytic speed; near a cusp the halving goes deep and fine with it).
+ */
+struct walk {
+	struct loft__piece pc;
+	double len, fine;
+};
+
+static void
+walk_piece(struct walk *w, const struct loft_curve *c, size_t i)
+{
+	int depth = 0;
+
+	loft__piece(c, i, &w->pc);
+	w->len = piece_arc(&w->pc, 0, 1, &depth);
+	w->fine = ldexp(1, -depth);
+}
+
+/* The speed and its u-derivative, P'.P'' / |P'|. */
+static void
+speed2(const struct loft__piece *pc, double u, double *v, double *dv)
+{
+	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+
+	loft__piece_eval(pc, u, NULL, d1, d2);
+	*v = vnorm(d1, pc->dim);
+	*dv = *v > 0 ? vdot(d1, d2, pc->dim) / *v : 0;
+}
+
+/*
+ * The length of w's piece from a to b (either order): Gauss-Legendre's
+ * 3 points on an interval below SHORT_STEP of fine (Newton's
+ * corrections; their error, the width to the 7th power, is then below
+ * the rounding), its 7 on one up to fine, the adaptive rule beyond.
  */
 static double
-solve_piece(const struct loft__piece *pc, double ub, double *sb, double t,
-    double len, double tol)
+walk_arc(const struct walk *w, double a, double b)
 {
-	double lo = ub, hi = 1, u = ub, s = *sb, v;
+	static const double x3 = 0.774596669241483377035853079956480;
+	double c = 0.5 * (a + b), h = 0.5 * (b - a), v0, v1, v2, s;
 
-	if (t >= len) {
-		*sb = len;
+	if (fabs(b - a) < SHORT_STEP * w->fine) {
+		loft__speed(&w->pc, c - h * x3, &v0, NULL);
+		loft__speed(&w->pc, c, &v1, NULL);
+		loft__speed(&w->pc, c + h * x3, &v2, NULL);
+		return h * (5 * (v0 + v2) + 8 * v1) / 9;
+	}
+	if (fabs(b - a) <= w->fine) {
+		loft__speed(&w->pc, c, &v1, NULL);
+		s = wg[3] * v1;
+		for (int i = 1; i < 7; i += 2) {
+			loft__speed(&w->pc, c - h * xk[i], &v0, NULL);
+			loft__speed(&w->pc, c + h * xk[i], &v2, NULL);
+			s += wg[i / 2] * (v0 + v2);
+		}
+		return h * s;
+	}
+	return b > a ? piece_arc(&w->pc, a, b, NULL) :
+	    -piece_arc(&w->pc, b, a, NULL);
+}
+
+/*
+ * The local parameter in w's piece where the length from its start is
+ * t, given that the length to ub is *sb <= t (on return: the length to
+ * the parameter returned) and t <= the piece's length: Newton's method
+ * on s(u) - t, s'(u) = |P'(u)|, the length brought up from the last
+ * iterate each step, the first step of second order (s'' = P'.P''/|P'|);
+ * a step that leaves the bracket, or a zero speed, bisects instead.
+ * tol is the length error accepted; a Newton step whose own error
+ * estimate, s'' (f / s')^2 / 2, is below tol / 4 is taken without
+ * measuring again.
+ */
+static double
+solve_piece(const struct walk *w, double ub, double *sb, double t,
+    double tol)
+{
+	double lo = ub, hi = 1, u = ub, s = *sb, v, dv;
+
+	if (t >= w->len) {
+		*sb = w->len;
 		return 1;
 	}
 	for (int it = 0; it < 100 && hi > lo; it++) {
-		double f = s - t, next;
+		double f = s - t, next, e;
 
 		*sb = s;
 		if (fabs(f) <= tol)
@@ -213,13 +292,21 @@ solve_piece(const struct loft__piece *pc, double ub, double *sb, double t,
 			lo = u;
 		else
 			hi = u;
-		loft__speed(pc, u, &v, NULL);
-		next = v > 0 ? u - f / v : -1;
-		if (!(next > lo && next < hi))
+		speed2(&w->pc, u, &v, &dv);
+		e = v > 0 ? -f / v : 0;
+		/* the first step solves v h + dv h^2 / 2 = -f */
+		if (it == 0 && v > 0 && v * v - 2 * dv * f > 0)
+			e = -2 * f / (v + sqrt(v * v - 2 * dv * f));
+		next = u + e;
+		if (!(v > 0 && next > lo && next < hi))
 			next = 0.5 * (lo + hi);
+		else if (it > 0 && fabs(dv) * e * e <= 0.5 * tol) {
+			*sb = t;
+			return next;
+		}
 		if (next == u)
 			return u;
-		s += next > u ? piece_arc(pc, u, next) : -piece_arc(pc, next, u);
+		s += walk_arc(w, u, next);
 		u = next;
 	}
 	*sb = s;
@@ -229,20 +316,19 @@ solve_piece(const struct loft__piece *pc, double ub, double *sb, double t,
 double
 loft_curve_at_length(const struct loft_curve *c, double s)
 {
-	struct loft__piece pc;
-	double cum = 0, tol = ARC_TOL * loft_curve_length(c);
+	struct walk w;
+	double cum = 0;
 
 	if (s <= 0)
 		return 0;
 	for (size_t i = 0; i < c->npieces; i++) {
-		double len, sb = 0;
+		double sb = 0;
 
-		loft__piece(c, i, &pc);
-		len = piece_arc(&pc, 0, 1);
-		if (s < cum + len)
-			return (double)i + solve_piece(&pc, 0, &sb, s - cum, len,
-			    tol);
-		cum += len;
+		walk_piece(&w, c, i);
+		if (s < cum + w.len)
+			return (double)i + solve_piece(&w, 0, &sb, s - cum,
+			    ARC_TOL * w.len);
+		cum += w.len;
 	}
 	return (double)c->npieces;
 }
@@ -261,27 +347,22 @@ void
 loft_curve_spaced(const struct loft_curve *c, double step, double *u,
     size_t n)
 {
-	struct loft__piece pc;
-	double cum = 0, len = 0, ub = 0, sb = 0, tol;
+	struct walk w;
+	double cum = 0, ub = 0, sb = 0;
 	size_t i = 0, k = 1;
 
-	tol = ARC_TOL * loft_curve_length(c);
 	u[0] = 0;
-	if (c->npieces > 0) {
-		loft__piece(c, 0, &pc);
-		len = piece_arc(&pc, 0, 1);
-	}
+	walk_piece(&w, c, 0);
 	for (; k + 1 < n; k++) {
 		double t = (double)k * step;
 
 		/* on to the piece where length t ends */
-		while (t >= cum + len && i + 1 < c->npieces) {
-			cum += len;
-			loft__piece(c, ++i, &pc);
-			len = piece_arc(&pc, 0, 1);
+		while (t >= cum + w.len && i + 1 < c->npieces) {
+			cum += w.len;
+			walk_piece(&w, c, ++i);
 			ub = sb = 0;
 		}
-		ub = solve_piece(&pc, ub, &sb, t - cum, len, tol);
+		ub = solve_piece(&w, ub, &sb, t - cum, ARC_TOL * w.len);
 		u[k] = (double)i + ub;
 	}
 	if (n > 1)

@@ -13,6 +13,14 @@
 #include "internal.h"
 
 /*
+ * Pieces of degree up to this also keep their derivatives' power
+ * coefficients, for speed: converting a Bernstein polynomial of low
+ * degree on [0, 1] to powers loses only a few bits (the conversion's
+ * coefficients are at most C(n, j) C(j, i), 20 at degree 4).
+ */
+#define POWER_DEG 4
+
+/*
  * Subdivision stops at intervals this narrow: a cluster of roots closer
  * than this (in a piece's parameter) is reported as one root.
  */
@@ -177,6 +185,26 @@ loft__bern_roots(const double *c, int n, double zero, double *r, int max)
 	return rs.n;
 }
 
+/*
+ * The power coefficients a[0..n] of the Bernstein coefficients c[0..n]:
+ * a_j = C(n, j) sum over i <= j of (-1)^(j - i) C(j, i) c_i.
+ */
+static void
+to_power(const double *c, int n, double *a)
+{
+	double bn[LOFT__BMAX], bj[LOFT__BMAX];
+
+	binomials(n, bn);
+	for (int j = 0; j <= n; j++) {
+		double s = 0;
+
+		binomials(j, bj);
+		for (int i = 0; i <= j; i++)
+			s += ((j - i) % 2 ? -bj[i] : bj[i]) * c[i];
+		a[j] = bn[j] * s;
+	}
+}
+
 void
 loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc)
 {
@@ -199,13 +227,37 @@ loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc)
 		for (int j = 0; j + 2 < n; j++)
 			pc->d3[k][j] = (n - 2) * (pc->d2[k][j + 1] -
 			    pc->d2[k][j]);
+		if (n <= POWER_DEG) {
+			to_power(pc->d1[k], n - 1, pc->p1[k]);
+			to_power(pc->d2[k], LOFT__DEG(pc, 2), pc->p2[k]);
+		}
 	}
+}
+
+/* Horner's rule on the power coefficients a[0..n] at u. */
+static double
+horner(const double *a, int n, double u)
+{
+	double v = a[n];
+
+	for (int j = n - 1; j >= 0; j--)
+		v = v * u + a[j];
+	return v;
 }
 
 void
 loft__piece_eval(const struct loft__piece *pc, double u, double *p,
     double *d1, double *d2)
 {
+	if (pc->n <= POWER_DEG && p == NULL) {
+		for (int k = 0; k < pc->dim; k++) {
+			if (d1 != NULL)
+				d1[k] = horner(pc->p1[k], pc->n - 1, u);
+			if (d2 != NULL)
+				d2[k] = horner(pc->p2[k], LOFT__DEG(pc, 2), u);
+		}
+		return;
+	}
 	for (int k = 0; k < pc->dim; k++) {
 		if (p != NULL)
 			p[k] = u == 1 ? pc->b[k][pc->n] :

@@ -178,6 +178,8 @@ struct loft__piece {
 	double d1[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
 	double d2[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
 	double d3[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
+	double p1[LOFT_MAXDIM][8], p2[LOFT_MAXDIM][8]; /* low degrees: P'
+	                           and P'' in powers of u, for speed */
 };
 /* The degree of the j-th derivative's coefficients in a piece. */
 #define LOFT__DEG(pc, j) ((pc)->n > (j) ? (pc)->n - (j) : 0)
@@ -195,14 +197,15 @@ double loft__curve_extent(const struct loft_curve *c);
  * accepted when every component's |K15 - G7| is at most rel times the
  * K15 of its absolute value plus floor[k] (b - a) (floor may be NULL),
  * else it is halved, the tolerance with it.  Adds the integrals to
- * sum[0..m).  Returns 0, or LOFT_ENOCONV when an interval was accepted
+ * sum[0..m) and, if depth is not NULL, stores the deepest halving.
+ * Returns 0, or LOFT_ENOCONV when an interval was accepted
  * at the depth limit without meeting its tolerance.
  */
 typedef void (*loft__integrand)(const struct loft__piece *pc, double u,
     double *f, void *ctx);
 int loft__quad(const struct loft__piece *pc, double a, double b, int m,
     loft__integrand f, void *ctx, double rel, const double *floor,
-    double *sum);
+    double *sum, int *depth);
 /* The speed |P'(u)|: the integrand of arc length. */
 void loft__speed(const struct loft__piece *pc, double u, double *f, void *ctx);
 

@@ -174,7 +174,7 @@ loft_curve_centroid(const struct loft_curve *c, double *cen,
 			for (int k = 0; k < c->dim; k++)
 				o[k] = pc.b[k][0];
 		loft__quad(&pc, 0, 1, c->dim + 1, length_moments, o,
-		    LOFT_ARC_REL, NULL, sum);
+		    LOFT_ARC_REL, NULL, sum, NULL);
 	}
 	if (!(sum[0] > 0)) {
 		for (int k = 0; k < c->dim; k++)
@@ -445,14 +445,28 @@ loft_curve_min_radius(const struct loft_curve *c, double *radius, double *u,
 	return 0;
 }
 
-/* k^2 |P'| = |P' x P''|^2 / |P'|^5, the integrand of bending energy. */
+/*
+ * k^2 |P'| = |P' x P''|^2 / |P'|^5, the integrand of bending energy,
+ * from the derivatives divided by their largest component m (k scales
+ * as 1/m, |P'| as m), so that neither overflows nor underflows.
+ */
 static void
 bending(const struct loft__piece *pc, double u, double *f, void *ctx)
 {
-	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], q, cc;
+	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], q, cc, m = 0;
 
 	(void)ctx;
 	loft__piece_eval(pc, u, NULL, d1, d2);
+	for (int k = 0; k < pc->dim; k++)
+		m = fmax(m, fmax(fabs(d1[k]), fabs(d2[k])));
+	if (!(m > 0)) {
+		f[0] = 0;
+		return;
+	}
+	for (int k = 0; k < pc->dim; k++) {
+		d1[k] /= m;
+		d2[k] /= m;
+	}
 	q = vdot(d1, d1, pc->dim);
 	if (pc->dim == 2) {
 		cc = d1[0] * d2[1] - d1[1] * d2[0];
@@ -464,7 +478,7 @@ bending(const struct loft__piece *pc, double u, double *f, void *ctx)
 
 		cc = a * a + b * b + e * e;
 	}
-	f[0] = cc == 0 ? 0 : cc / (q * q * sqrt(q));
+	f[0] = cc == 0 ? 0 : cc / (q * q * sqrt(q)) / m;
 }
 
 int
@@ -477,7 +491,7 @@ loft_curve_energy(const struct loft_curve *c, double *energy,
 	for (size_t i = 0; i < c->npieces; i++) {
 		loft__piece(c, i, &pc);
 		if (loft__quad(&pc, 0, 1, 1, bending, NULL, ENERGY_REL, &floor,
-		    &e) != 0 || !isfinite(e))
+		    &e, NULL) != 0 || !isfinite(e))
 			return loft_fail(err, LOFT_EGEOM, (long)i, "the bending "
 			    "energy of piece %zu is not finite: its tangent "
 			    "vanishes (a cusp)", i + 1);
