@@ -136,7 +136,10 @@ chosen_params(struct opts *o, const struct loft_curve *c, size_t *n,
 	if (o->spacing > 0) {
 		len = loft_curve_length(c);
 		*n = loft_spaced_count(len, o->spacing);
-		if (!isfinite(len) || *n > MAX_POINTS)
+		if (!isfinite(len))
+			return loft_fail(err, LOFT_EGEOM, -1, "the length "
+			    "overflows: coefficients too large");
+		if (*n > MAX_POINTS)
 			return loft_fail(err, LOFT_EINPUT, -1, "-s %g along a "
 			    "curve of length %g: more than %d points",
 			    o->spacing, len, MAX_POINTS);

@@ -48,6 +48,13 @@ static const double wg[4] = {
  */
 #define QUAD_DEPTH 40
 
+/*
+ * And at this many halvings in one call: a singular point costs some
+ * 40 of them, so only an integrand that rounding keeps from meeting its
+ * tolerance everywhere, or that is not finite, gets here.
+ */
+#define QUAD_BUDGET 4000
+
 /* Newton on the length stops within this fraction of the piece's. */
 #define ARC_TOL 1e-13
 
@@ -64,6 +71,7 @@ struct quad {
 	int m;
 	int failed;
 	int deepest;            /* the deepest level accepted */
+	long budget;            /* intervals it may still halve */
 };
 
 /* K15 and G7 over [a, b], and K15 of |f|. */
@@ -105,9 +113,14 @@ adapt(struct quad *q, double a, double b, const double *k, const double *g,
 	    abs1[QUAD_MAXF], abs2[QUAD_MAXF], half[QUAD_MAXF];
 	int ok = 1;
 
-	for (int j = 0; j < q->m; j++)
+	for (int j = 0; j < q->m; j++) {
 		if (!(fabs(k[j] - g[j]) <= tol[j]))
 			ok = 0;
+		if (!isfinite(k[j]))
+			depth = QUAD_DEPTH;     /* halving cannot help */
+	}
+	if (!ok && q->budget-- <= 0)
+		depth = QUAD_DEPTH;
 	if (ok || depth >= QUAD_DEPTH) {
 		if (!ok)
 			q->failed = 1;
@@ -130,7 +143,7 @@ loft__quad(const struct loft__piece *pc, double a, double b, int m,
     loft__integrand f, void *ctx, double rel, const double *floor,
     double *sum, int *depth)
 {
-	struct quad q = { pc, f, ctx, m, 0, 0 };
+	struct quad q = { pc, f, ctx, m, 0, 0, QUAD_BUDGET };
 	double k[QUAD_MAXF], g[QUAD_MAXF], kabs[QUAD_MAXF], tol[QUAD_MAXF];
 
 	if (!(b > a))

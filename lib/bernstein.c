@@ -173,6 +173,10 @@ roots_in(struct roots *rs, const double *c, int n, double a, double b)
 		left[n - k + 1] = right[0];
 	}
 	roots_in(rs, left, n, a, 0.5 * (a + b));
+	/* a root at the split point is an end of both halves, which count
+	 * it as neither's: it is the halves' common coefficient */
+	if (sign_of(right[0], rs->zero) == 0 && rs->n < rs->max)
+		rs->r[rs->n++] = 0.5 * (a + b);
 	roots_in(rs, right, n, 0.5 * (a + b), b);
 }
 

@@ -478,7 +478,10 @@ bending(const struct loft__piece *pc, double u, double *f, void *ctx)
 
 		cc = a * a + b * b + e * e;
 	}
-	f[0] = cc == 0 ? 0 : cc / (q * q * sqrt(q)) / m;
+	/* a curvature below CURV_ZERO over the piece's length is none, as
+	 * for inflexions: a straight piece has energy 0, not rounding */
+	f[0] = cc <= CURV_ZERO * CURV_ZERO * q * q ? 0 :
+	    cc / (q * q * sqrt(q)) / m;
 }
 
 int

@@ -33,5 +33,6 @@ suite bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
 suite sh tests/plot.sh
 suite sh tests/bad.sh
+suite sh tests/measure.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
