@@ -359,26 +359,37 @@ sign_changes(const struct signs *s, int closed)
 	return s->changes + (closed && s->first != 0 && s->first != s->last);
 }
 
-int
-loft_curve_inflexions(const struct loft_curve *c, long *count,
-    struct loft_error *err)
+/*
+ * The sign changes along c of the polynomial poly makes of each piece
+ * (plane_cross or curvature_slope).
+ */
+static long
+count_changes(const struct loft_curve *c,
+    int (*poly)(const struct loft__piece *, double *, double *))
 {
 	struct loft__piece pc;
 	struct signs s = { 0, 0, 0 };
-	double poly[LOFT__BMAX], r[LOFT__BMAX], zero;
+	double p[LOFT__BMAX], r[LOFT__BMAX], zero;
 
-	if (c->dim != 2)
-		return loft_fail(err, LOFT_EINPUT, -1, "a space curve's "
-		    "curvature has no sign: inflexions are for plane curves");
 	for (size_t i = 0; i < c->npieces; i++) {
 		int deg, nr;
 
 		loft__piece(c, i, &pc);
-		deg = plane_cross(&pc, poly, &zero);
-		nr = loft__bern_roots(poly, deg, zero, r, LOFT__BMAX);
-		feed_piece(&s, poly, deg, zero, r, nr);
+		deg = poly(&pc, p, &zero);
+		nr = loft__bern_roots(p, deg, zero, r, LOFT__BMAX);
+		feed_piece(&s, p, deg, zero, r, nr);
 	}
-	*count = sign_changes(&s, c->closed);
+	return sign_changes(&s, c->closed);
+}
+
+int
+loft_curve_inflexions(const struct loft_curve *c, long *count,
+    struct loft_error *err)
+{
+	if (c->dim != 2)
+		return loft_fail(err, LOFT_EINPUT, -1, "a space curve's "
+		    "curvature has no sign: inflexions are for plane curves");
+	*count = count_changes(c, plane_cross);
 	return 0;
 }
 
@@ -386,20 +397,8 @@ int
 loft_curve_extrema(const struct loft_curve *c, long *count,
     struct loft_error *err)
 {
-	struct loft__piece pc;
-	struct signs s = { 0, 0, 0 };
-	double poly[LOFT__BMAX], r[LOFT__BMAX], zero;
-
 	(void)err;
-	for (size_t i = 0; i < c->npieces; i++) {
-		int deg, nr;
-
-		loft__piece(c, i, &pc);
-		deg = curvature_slope(&pc, poly, &zero);
-		nr = loft__bern_roots(poly, deg, zero, r, LOFT__BMAX);
-		feed_piece(&s, poly, deg, zero, r, nr);
-	}
-	*count = sign_changes(&s, c->closed);
+	*count = count_changes(c, curvature_slope);
 	return 0;
 }
 
