@@ -22,7 +22,7 @@ BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade \
           bin/measure
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
-          bin/test/numtest bin/test/pow10gen
+          bin/test/numtest bin/test/pow10gen bin/test/arclen
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
