@@ -218,39 +218,36 @@ dot_poly(const double (*a)[LOFT_BEZIER_MAXPTS], int na,
 }
 
 /*
- * m[j]: the largest j-th derivative coefficient of piece pc, but for
- * j > 1 no less than the first's, so that a straight piece (second
- * derivative zero but for rounding) is measured against its own length.
+ * The speed scale of piece pc: its largest first-derivative coefficient,
+ * a bound on |P'|.  The thresholds below are made of it alone: a
+ * piece's higher derivatives' coefficients can be far larger than the
+ * derivatives (a Bezier curve of high degree), and a straight piece's
+ * are rounding.
  */
-static void
-scales(const struct loft__piece *pc, double *m)
+static double
+speed_scale(const struct loft__piece *pc)
 {
-	m[0] = 0;
-	for (int j = 1; j <= 3; j++) {
-		const double (*d)[LOFT_BEZIER_MAXPTS] = j == 1 ? pc->d1 :
-		    j == 2 ? pc->d2 : pc->d3;
+	double m = 0;
 
-		m[j] = j > 1 ? m[1] : 0;
-		for (int k = 0; k < pc->dim; k++)
-			m[j] = fmax(m[j], loft__bern_max(d[k],
-			    LOFT__DEG(pc, j)));
-	}
+	for (int k = 0; k < pc->dim; k++)
+		m = fmax(m, loft__bern_max(pc->d1[k], LOFT__DEG(pc, 1)));
+	return m;
 }
 
 /*
  * The plane cross product C = x' y'' - y' x'' of piece pc, whose sign
  * is the curvature's; returns its degree and sets *zero, the size below
- * which its values are rounding: a curvature below CURV_ZERO over the
- * piece's length.
+ * which its values are rounding: C = k |P'|^3, and a curvature below
+ * CURV_ZERO over the piece's length (of the order of the speed scale m)
+ * is none, so zero = CURV_ZERO m^2.
  */
 static int
 plane_cross(const struct loft__piece *pc, double *out, double *zero)
 {
 	int n1 = LOFT__DEG(pc, 1), n2 = LOFT__DEG(pc, 2);
-	double m[4];
+	double m = speed_scale(pc);
 
-	scales(pc, m);
-	*zero = CURV_ZERO * m[1] * m[2];
+	*zero = CURV_ZERO * m * m;
 	return cross_poly(pc->d1, n1, pc->d2, n2, 0, 1, out);
 }
 
@@ -267,7 +264,7 @@ curvature_slope(const struct loft__piece *pc, double *out, double *zero)
 {
 	int n1 = LOFT__DEG(pc, 1), n2 = LOFT__DEG(pc, 2), n3 = LOFT__DEG(pc, 3);
 	double q[LOFT__BMAX], d[LOFT__BMAX], a[LOFT__BMAX], b[LOFT__BMAX],
-	    t[LOFT__BMAX], m[4];
+	    t[LOFT__BMAX], m;
 	int nq, nd, na, nb, deg;
 
 	nq = dot_poly(pc->d1, n1, pc->d1, n1, pc->dim, q);
@@ -302,15 +299,12 @@ curvature_slope(const struct loft__piece *pc, double *out, double *zero)
 				b[j] += t[j];
 		}
 	}
-	/* the sizes a, q, b and d would have if every derivative were as
-	 * large as scales() says */
-	scales(pc, m);
-	if (pc->dim == 2)
-		*zero = CURV_ZERO * (m[1] * m[3] * m[1] * m[1] +
-		    3 * m[1] * m[2] * m[1] * m[2]);
-	else
-		*zero = CURV_ZERO * (m[1] * m[2] * m[1] * m[3] * m[1] * m[1] +
-		    3 * m[1] * m[2] * m[1] * m[2] * m[1] * m[2]);
+	/* N = dk/ds |P'|^6 in the plane and k dk/ds |P'|^9 in space:
+	 * below a change of CURV_ZERO of the curvature over the piece's
+	 * length, of the order of m, N is rounding */
+	m = speed_scale(pc);
+	*zero = CURV_ZERO * (pc->dim == 2 ? m * m * m * m :
+	    m * m * m * m * m * m);
 	deg = na + nq > nb + nd ? na + nq : nb + nd;
 	for (int j = 0; j <= deg; j++)
 		out[j] = 0;
