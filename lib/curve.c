@@ -132,6 +132,24 @@ loft_curve_eval(const struct loft_curve *c, size_t i, double u,
 		c->eval(c->coef + i * c->rowlen, c->dim, u, p, d1, d2);
 }
 
+void
+loft_curve_cubic(struct loft_curve *c, const double *seg, size_t nseg, int dim,
+    int closed)
+{
+	const struct curve_type *t = &types[0];         /* cubic */
+
+	c->type = t->name;
+	c->coef = seg;
+	c->npieces = nseg;
+	c->npts = 0;
+	c->dim = dim;
+	c->rowlen = t->rows_per_point * dim;
+	c->eval = t->eval;
+	c->eval_ctl = NULL;
+	c->bezier = t->bezier;
+	c->closed = closed;
+}
+
 int
 loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl)
 {

@@ -357,6 +357,15 @@ int loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
     struct loft_error *err);
 
 /*
+ * Fill c for the nseg > 0 cubic segments seg (the row layout of
+ * loft_cubic_eval, 4 * dim numbers a segment, as loft_fit writes them),
+ * closed or not, so that the curve functions take a fit without a
+ * record.  c points into seg.
+ */
+void loft_curve_cubic(struct loft_curve *c, const double *seg, size_t nseg,
+    int dim, int closed);
+
+/*
  * Evaluate piece i at local parameter u in [0, 1]: point, first and
  * second derivatives with respect to u (any may be NULL).
  */
@@ -492,7 +501,7 @@ int loft_curve_min_radius(const struct loft_curve *c, double *radius,
  * curvature along it, cyclically on a closed curve (so an even number
  * there), a straight stretch between curvatures of opposite sign
  * counting as one.  Curvature within 1e-10 of zero (relative to a
- * piece's derivatives) has no sign.  Returns 0, or LOFT_EINPUT for a
+ * piece's length) has no sign.  Returns 0, or LOFT_EINPUT for a
  * space curve.
  */
 int loft_curve_inflexions(const struct loft_curve *c, long *count,

@@ -155,13 +155,12 @@ static void
 test_jump(void)
 {
 	double two[] = { 0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 2, 1, 1, 0, 1, 2 };
-	struct loft_record rec;
 	struct loft_curve c;
 	struct loft_error err;
 	double jump, u, r;
 	long k;
 
-	curve(&rec, &c, "cubic", two, 2, 8);
+	loft_curve_cubic(&c, two, 2, 2, 0);
 	loft_curve_jump(&c, &jump, &u);
 	NEAR(jump, 2, 1e-14, "the jump at the knot");
 	CHECK(u == 1, "the jump at u = %g", u);
@@ -170,6 +169,8 @@ test_jump(void)
 	CHECK(u == 1, "at u = %g", u);
 	CHECK(loft_curve_inflexions(&c, &k, &err) == 0 && k == 0,
 	    "a straight stretch is no inflexion on its own: %ld", k);
+	NEAR(loft_curve_length(&c), 1 + (sqrt(5) + asinh(2) / 2) / 2, 1e-14,
+	    "1 and the arc of y = t^2 to t = 1");
 }
 
 int
