@@ -21,9 +21,11 @@ struct opts {
 	double tol;             /* -t: chordal tolerance, or 0 */
 	double *u;              /* -s, -t: the parameters of a record */
 	size_t ucap;
+	size_t most;            /* -s, -t: points a record, at most */
 };
 
-/* -s and -t write at most this many points of a record. */
+/* -s and -t write at most this many points of a record (the fuzzing
+ * harness sets fewer in opts). */
 #define MAX_POINTS 10000000
 
 /*
@@ -139,10 +141,10 @@ chosen_params(struct opts *o, const struct loft_curve *c, size_t *n,
 		if (!isfinite(len))
 			return loft_fail(err, LOFT_EGEOM, -1, "the length "
 			    "overflows: coefficients too large");
-		if (*n > MAX_POINTS)
+		if (*n > o->most)
 			return loft_fail(err, LOFT_EINPUT, -1, "-s %g along a "
-			    "curve of length %g: more than %d points",
-			    o->spacing, len, MAX_POINTS);
+			    "curve of length %g: more than %zu points",
+			    o->spacing, len, o->most);
 		if (room(o, *n, err) != 0)
 			return LOFT_ENOMEM;
 		loft_curve_spaced(c, o->spacing, o->u, *n);
@@ -155,9 +157,9 @@ chosen_params(struct opts *o, const struct loft_curve *c, size_t *n,
 		return loft_fail(err, LOFT_EINPUT, -1, "-t %g is below %g of "
 		    "the curve's size %g", o->tol, MIN_TOL, size);
 	while ((*n = loft_curve_flatten(c, o->tol, o->u, o->ucap)) > o->ucap)
-		if (*n > MAX_POINTS)
+		if (*n > o->most)
 			return loft_fail(err, LOFT_EINPUT, -1, "-t %g: more "
-			    "than %d points", o->tol, MAX_POINTS);
+			    "than %zu points", o->tol, o->most);
 		else if (room(o, *n, err) != 0)
 			return LOFT_ENOMEM;
 	return 0;
@@ -350,7 +352,7 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const formats[] = { "points", "obj", NULL };
-	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, NULL, 0 };
+	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, NULL, 0, MAX_POINTS };
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
