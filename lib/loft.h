@@ -422,8 +422,8 @@ double loft_curve_length(const struct loft_curve *c);
  * The parameter u where the length of c from u = 0 is s: 0 for s <= 0,
  * npieces for s at least the length.  Newton's method on the length
  * (its derivative is the speed), bisection where a step would leave the
- * bracket or the speed vanishes; accurate to 1e-13 of the curve's
- * length.
+ * bracket or the speed vanishes; accurate to 1e-13 of the length of
+ * the piece it falls in.
  */
 double loft_curve_at_length(const struct loft_curve *c, double s);
 
@@ -511,8 +511,10 @@ int loft_curve_inflexions(const struct loft_curve *c, long *count,
  * The number of curvature extrema of c: the sign changes of dk/ds (of
  * the signed curvature in the plane, of |k| in space) along it,
  * cyclically on a closed curve, at knots too; the ends of an open curve
- * do not count, and changes of curvature below 1e-10 relative (a
- * circle's) are none.  Returns 0 (err is not used).
+ * do not count, and a curvature whose rate of change times the
+ * square of a piece's length is below 1e-10 (a line's) has none there.
+ * A jump of the curvature at a knot is no extremum by itself.  Returns
+ * 0 (err is not used).
  */
 int loft_curve_extrema(const struct loft_curve *c, long *count,
     struct loft_error *err);
