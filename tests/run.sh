@@ -37,5 +37,7 @@ suite sh tests/offset.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
 suite sh tests/oom.sh
+suite bin/test/arclen
+suite sh tests/measure.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

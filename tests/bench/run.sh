@@ -66,6 +66,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ floor-sample "$W/floor -n 20 $W/insoles.cubic"
 	case_ offset "$B/offset -d 15 $W/insoles.cubic"
 	case_ offset-lining "$B/offset -d -5 $W/insoles.cubic"
+	case_ measure "$B/measure $W/insoles.cubic"
+	case_ sample-s "$B/sample -s 1.4 $W/insoles.cubic"
 	case_ pipeline "$B/splinefit $W/insoles.knots | $B/sample -n 20"
 	case_ pipeline-p6 "$B/splinefit $W/insoles.knots | $B/sample -n 20 -p 6"
 	[ $have_spline = 1 ] &&
@@ -82,8 +84,10 @@ while [ "$rep" -le "$REPS" ]; do
 done
 echo
 echo "bench: insoles: $N outlines of 22 knots, 441 points each (sample" \
-    "-n 20; GNU spline -n 440); offset -d 15 and -d -5 of their curves"
+    "-n 20; GNU spline -n 440; sample -s 1.4 about as many); offset -d 15" \
+    "and -d -5 of their curves"
 $W/timeit -r $OUT pipeline/gnu-spline pipeline-p6/gnu-spline \
     pipeline/floor pipeline-p6/floor-p6 splinefit/floor sample/floor-sample \
     floor-printf/floor floor/gnu-spline scipy/gnu-spline \
-    space/space-gnu offset/sample offset-lining/sample
+    space/space-gnu offset/sample offset-lining/sample measure/sample \
+    sample-s/sample
