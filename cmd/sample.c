@@ -98,12 +98,11 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 		    "vanishes in segment %zu at u = %g: no direction or "
 		    "curvature there", i + 1, u);
 	if (o->tangent) {
-		double len = 0;
+		double t[LOFT_MAXDIM];
 
+		(void)loft_unit_tangent(d1, dim, t); /* d1 != 0: checked above */
 		for (int q = 0; q < dim; q++)
-			len += d1[q] * d1[q];
-		for (int q = 0; q < dim; q++)
-			loft_put_num(&run->w, d1[q] / sqrt(len));
+			loft_put_num(&run->w, t[q]);
 	}
 	if (o->curvature)
 		loft_put_num(&run->w, k);

@@ -42,15 +42,44 @@ loft_cubic_eval(const double *seg, int dim, double u,
 /*
  * Eq. 2: d2P/ds2 = P''/(P'.P') - (P'.P'') P' / (P'.P')^2.
  */
+static void
+curvature_plain(const double *d1, const double *d2, double dd, int dim,
+    double *kn)
+{
+	double dq = vdot(d1, d2, dim);
+
+	for (int k = 0; k < dim; k++)
+		kn[k] = (d2[k] - dq / dd * d1[k]) / dd;
+}
+
+/*
+ * Where P'.P' overflows or loses its digits to underflow (a curve far
+ * outside the unit box), P' and P'' are scaled by the same power of two,
+ * 2^-e, exactly: the curvature vector of the scaled derivatives is 2^e
+ * times the true one, and scaling back by 2^-e is exact too.  Inside
+ * VNORM_LO .. VNORM_HI (of P'.P') the plain formula stands, bit for bit.
+ */
 int
 loft_curvature_vector(const double *d1, const double *d2, int dim, double *kn)
 {
-	double dd = vdot(d1, d1, dim), dq = vdot(d1, d2, dim);
+	double dd = vdot(d1, d1, dim), a[LOFT_MAXDIM], b[LOFT_MAXDIM];
+	double m = vmaxabs(d1, dim);
+	int e;
 
-	if (!(dd > 0))
+	if (!(m > 0) || !(m < INFINITY))
 		return LOFT_EGEOM;
+	if (dd >= VNORM_LO && dd <= VNORM_HI) {
+		curvature_plain(d1, d2, dd, dim, kn);
+		return 0;
+	}
+	e = ilogb(m);
+	for (int k = 0; k < dim; k++) {
+		a[k] = ldexp(d1[k], -e);
+		b[k] = ldexp(d2[k], -e);
+	}
+	curvature_plain(a, b, vdot(a, a, dim), dim, kn);
 	for (int k = 0; k < dim; k++)
-		kn[k] = (d2[k] - dq / dd * d1[k]) / dd;
+		kn[k] = ldexp(kn[k], -e);
 	return 0;
 }
 

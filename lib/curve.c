@@ -168,7 +168,22 @@ loft_curvature(const double *d1, const double *d2, int dim, double *k)
 	if (loft_curvature_vector(d1, d2, dim, kn) != 0)
 		return LOFT_EGEOM;
 	*k = vnorm(kn, dim);
-	if (dim == 2 && d1[0] * d2[1] - d1[1] * d2[0] < 0)
+	/* the sign of d1 x kn is that of d1 x d2, which may underflow */
+	if (dim == 2 && d1[0] * kn[1] - d1[1] * kn[0] < 0)
 		*k = -*k;
+	return 0;
+}
+
+int
+loft_unit_tangent(const double *d1, int dim, double *t)
+{
+	double a[LOFT_MAXDIM];
+
+	for (int q = 0; q < dim; q++)
+		a[q] = d1[q];
+	if (vunit(a, dim) == 0)
+		return LOFT_EGEOM;
+	for (int q = 0; q < dim; q++)
+		t[q] = a[q];
 	return 0;
 }

@@ -402,6 +402,14 @@ int loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl);
  */
 int loft_curvature(const double *d1, const double *d2, int dim, double *k);
 
+/*
+ * The unit tangent t (dim numbers) of a curve with first derivative d1,
+ * by the library's scaled norm, so a curve of any size has one (a plain
+ * sum of squares overflows above about 1e154 and underflows below
+ * 1e-154).  Returns 0, or LOFT_EGEOM where d1 = 0 (t left alone).
+ */
+int loft_unit_tangent(const double *d1, int dim, double *t);
+
 /* ------------------------------------------------------------------ */
 /* Offsets of plane curves (offset.c)                                  */
 

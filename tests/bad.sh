@@ -846,6 +846,21 @@ sample_good() {
 
 sample_cases() {
 	opts
+	# issue 12: sample -d took its own plain norm, so the unit tangent of
+	# a curve of size 1e160 was 0 0 (the sum of squares overflowed), and
+	# the curvature of one of size 1e-300 "vanished".  By hand, for rows
+	# 0 0 s 0 s s s -s: at u = 0, P' = (s, s) and P'' = (0, -2 s), so the
+	# tangent is (1, 1) / sqrt 2 and the curvature -1 / (sqrt 2 s)
+	for s in 1e160 1e-160 1e300 1e-300; do
+		what="sample -d -k at u = 0 of a curve of size $s"
+		printf 'cubic\n0 0 %s 0 %s %s %s -%s\n' $s $s $s $s $s >"$T/case"
+		"$B/sample" -d -k -n 1 "$T/case" 2>&1 | awk -v s=$s '
+		    NR == 1 { r = sqrt(0.5); e = $3 - r; if (e < 0) e = -e
+			f = $4 - r; if (f < 0) f = -f; g = $5 * s * sqrt(2) + 1
+			if (g < 0) g = -g; ok = NF == 5 && e < 1e-15 && f < 1e-15 && g < 1e-14 }
+		    END { exit !ok }' && ok || no "$what: $("$B/sample" -d -k -n 1 \
+		    "$T/case" 2>&1 | head -1)"
+	done
 	printf 'cubic\n0 0 1 0 0 2 0\n' >"$T/case"
 	bad "a truncated cubic row" 2 "cubic rows need 8 or 12 numbers, not 7"
 	printf 'cubic\n0 1 0 1\n' >"$T/case"
