@@ -20,17 +20,15 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/offset.o \
           bin/obj/bernstein.o bin/obj/arclen.o bin/obj/measure.o \
           bin/obj/flatten.o
-BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
-          bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade \
-          bin/offset bin/measure
+# PROGS is the one list of programs: their binaries and pages follow
+# from it (a program is cmd/NAME.c and man/NAME.1).
+BINS    = $(PROGS:%=bin/%)
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
           bin/test/hostile bin/test/oom.so bin/test/arclen
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
-MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
-          man/patchsplit.1 man/patchdrag.1 man/patchjoin.1 man/plot.1 \
-          man/grade.1 man/offset.1 man/measure.1
+MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
 MAN7    = man/loft.7
 
