@@ -112,9 +112,9 @@ says "sample: $T/mixed.cubic:5: cubic rows need 8 or 12 numbers, not 3"
 
 # ---- degeneracies, each named ---------------------------------------
 fails 1 "<stdin>:3: knot 3 coincides with knot 2" \
-    "printf '0 0\n1 0\n1 0\n0 1\n' | $B/splinefit"
+    "printf '0 0\n1 0\n1 0\n0 1\n' | $B/splinefit -d 0"
 fails 1 "<stdin>:1: knot 1 coincides with knot 4 (closing the curve" \
-    "printf '0 0\n1 0\n1 1\n0 0\n' | $B/splinefit"
+    "printf '0 0\n1 0\n1 1\n0 0\n' | $B/splinefit -d 0"
 fails 1 "2 knots: a closed curve needs at least 3" \
     "printf '0 0\n1 0\n' | $B/splinefit"
 fails 1 "1 knot: an open curve needs at least 2" \

@@ -13,7 +13,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	struct opts o = { 0 };
+	struct opts o = { .merge = -1 };
 	struct loft_run run = { .prog = "splinefit", .msg = fuzz_null(),
 	    .handle = fit_record, .ctx = &o };
 	int bits;
@@ -47,5 +47,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fuzz_records(&run, data + 2, size - 2);
 	free(o.seg);
 	free(o.other);
+	free(o.knots);
+	free(o.keep);
+	free(o.into);
+	free(o.corner);
 	return 0;
 }

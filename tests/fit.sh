@@ -1,0 +1,134 @@
+#!/bin/sh
+# fit.sh: splinefit's merging of knots that are one knot and its corners
+# (issue 13), run from the top of the tree.  References are derived by
+# hand in the comments or are invariants checked in awk; the last line is
+# "fit: N passed, M failed".
+
+T=bin/test/fit
+. tests/lib.sh
+
+# same_as FILE: standard output is that of FILE, number for number
+same_as() {
+	cmp -s "$1" "$T/out" && ok || no "$what: output differs from $1"
+}
+
+# ---- merging ---------------------------------------------------------
+# The insole as a CAD system exports it: the first knot repeated at the
+# end, 0.5 micrometre off, and a double click 0.011 mm after knot 5.
+grep -v '^#' man/figures/insole.knots >"$T/insole.knots"
+awk 'NR == 5 { print; print $1 + 0.011, $2; next } { print }
+    END { print "0.0005 0" }' "$T/insole.knots" >"$T/cad.knots"
+for m in "" "-m manning" "-m chord" "-m ferguson"; do
+	$B/splinefit $m "$T/insole.knots" >"$T/plain.cubic"
+	run "$B/splinefit $m $T/cad.knots"
+	status 0
+	same_as "$T/plain.cubic"
+	says "splinefit: $T/cad.knots:6: knot 6 is nearer than 0.0265 to knot 5 (line 5): merged into it"
+	says "splinefit: $T/cad.knots:24: knot 24 is nearer than 0.0265 to knot 1 (line 1), closing the curve: merged into it"
+	[ "$(wc -l <"$T/err")" -eq 2 ] && ok || no "$what: two notes"
+done
+# scaled to metres the knots merge the same (the distance is relative)
+awk '{ print $1 / 1000, $2 / 1000 }' "$T/cad.knots" >"$T/cadm.knots"
+run "$B/splinefit $T/cadm.knots"
+status 0
+[ "$(wc -l <"$T/err")" -eq 2 ] && ok || no "$what: two notes in metres"
+# an open curve keeps a last knot on its first: it ends where it began
+run "$B/splinefit -o $T/cad.knots"
+status 0
+[ "$(grep -c . "$T/out")" -eq 23 ] && ok || no "$what: 22 segments open"
+# -d 0 merges nothing: the double click is a knot again
+run "$B/splinefit -d 0 $T/cad.knots"
+status 0
+[ ! -s "$T/err" ] && [ "$(grep -c . "$T/out")" -eq 25 ] && ok ||
+    no "$what: 24 segments, no note"
+# -d sets the distance in the knots' units: 0.01 keeps the double click
+run "$B/splinefit -d 0.01 $T/cad.knots"
+says "knot 24 is nearer than 0.01 to knot 1"
+[ "$(wc -l <"$T/err")" -eq 1 ] && ok || no "$what: only the closing knot"
+fails 2 "-d '-1': want a number from 0" "$B/splinefit -d -1 $T/cad.knots"
+# designer's spacing kept: knots 0.3 mm apart at a toe are not merged
+awk 'NR == 12 { print; print $1 + 0.3, $2 + 0.3; next } { print }' \
+    "$T/insole.knots" >"$T/toe.knots"
+run "$B/splinefit $T/toe.knots"
+[ ! -s "$T/err" ] && [ "$(grep -c . "$T/out")" -eq 24 ] && ok ||
+    no "$what: 0.3 mm spacing merged"
+
+# ---- corners -----------------------------------------------------------
+# A 4 by 1 rectangle with its four corners: every side a straight line in
+# every method, so sampled points lie on x = 0, x = 4, y = 0 or y = 1 to
+# rounding, and each side's points run between its two corners.
+printf 'points corners=1,2,3,4\n0 0\n4 0\n4 1\n0 1\n' >"$T/rect.knots"
+for m in "" "-m manning" "-m chord" "-m ferguson"; do
+	run "$B/splinefit $m $T/rect.knots | $B/sample -n 10"
+	status 0
+	awk 'function a(x) { return x < 0 ? -x : x }
+	    NF == 2 { n++; s = int((n - 1) / 10); if (s > 3) s = 3
+	        d = s == 0 ? a($2) : s == 1 ? a($1 - 4) : s == 2 ? a($2 - 1) : a($1)
+	        if (d > 4e-15) bad = 1
+	        if ($1 < -4e-15 || $1 > 4 + 4e-15 || $2 < -4e-15 || $2 > 1 + 4e-15) bad = 1 }
+	    END { exit bad || n != 41 }' "$T/out" && ok ||
+	    no "$what: the rectangle's sides are not straight"
+done
+# A D: five knots on the unit circle from (0,-1) round through (1,0) to
+# (0,1), corners at the ends of the arc.  The closing side is the line
+# x = 0, its row P_A P_B P'_A P'_B = (0,1) (0,-1) and the chord (0,-2)
+# twice; the arc leaves (0,-1) along (1,0) and arrives at (0,1) along
+# (-1,0), the tangents of the circle through the first and last three
+# knots, and stays near the circle (see below).
+printf 'points corners=1,5\n0 -1\n%s -%s\n1 0\n%s %s\n0 1\n' \
+    0.70710678118654752 0.70710678118654752 0.70710678118654752 \
+    0.70710678118654752 >"$T/d.knots"
+for m in "" "-m manning" "-m chord" "-m ferguson"; do
+	run "$B/splinefit -p 12 $m $T/d.knots"
+	status 0
+	awk 'function a(x) { return x < 0 ? -x : x }
+	    NR == 2 { if (a($1) > 1e-12 || a($2 + 1) > 1e-12 || a($6) > 1e-12 || !($5 > 0)) bad = 1 }
+	    NR == 5 { if (a($3) > 1e-12 || a($4 - 1) > 1e-12 || a($8) > 1e-12 || !($7 < 0)) bad = 1 }
+	    NR == 6 { if ($0 != "0 1 0 -1 0 -2 0 -2") bad = 1 }
+	    END { exit bad || NR != 7 }' "$T/out" && ok ||
+	    no "$what: the D's corners: $(cat "$T/out")"
+done
+# Manning's curve, and the default, stay within 1e-4 of the circle on the
+# arc: a cubic per 45 degrees with the circle's end tangents is off it by
+# 4.2e-6 at best (the best Bezier arc), and by far more if the corners'
+# tangents were wrong.
+for m in "" "-m manning"; do
+	run "$B/splinefit $m $T/d.knots | $B/sample -n 20"
+	awk 'NF == 2 && NR <= 81 { r = sqrt($1 * $1 + $2 * $2) - 1
+	    if (r < 0) r = -r; if (r > m) m = r } END { exit !(m < 1e-4) }' \
+	    "$T/out" && ok || no "$what: the D's arc leaves the circle"
+done
+# An open L, corner at the bend: two straight segments, P' the chords.
+printf 'points corners=2\n0 0\n1 0\n1 1\n' >"$T/l.knots"
+run "$B/splinefit -o $T/l.knots"
+out_is "cubic closed=0
+0 0 1 0 1 0 1 0
+1 0 1 1 0 1 0 1
+"
+# With -S 0,1 the first piece starts up and ends along its chord at the
+# corner: Manning's eq. 11 with cos A = 0, cos B = 1, alpha = 2/3 gives
+# r = 2/(1 + 2/3) = 1.2 and l = 2/(1 + 1/3) = 1.5; -E changes the
+# second piece alone the same way (cos A = 1, cos B = 0: r = 1.5, l = 1.2).
+run "$B/splinefit -m manning -o -S 0,1 -E 1,0 -p 6 $T/l.knots"
+out_is "cubic closed=0
+0 0 1 0 0 1.2 1.5 0
+1 0 1 1 0 1.5 1.2 0
+"
+# a corner at an end of an open curve changes nothing
+printf 'points corners=1,3\n0 0\n1 0\n1 1\n' >"$T/ends.knots"
+printf 'points\n0 0\n1 0\n1 1\n' >"$T/noends.knots"
+$B/splinefit -o "$T/noends.knots" >"$T/noends.cubic"
+run "$B/splinefit -o $T/ends.knots"
+same_as "$T/noends.cubic"
+# a corner on a knot merged away moves to the knot it merged into
+printf 'points corners=3\n0 0\n4 0\n4 1e-9\n4 1\n0 1\n' >"$T/mc.knots"
+printf 'points corners=2\n0 0\n4 0\n4 1\n0 1\n' >"$T/mc2.knots"
+$B/splinefit "$T/mc2.knots" >"$T/mc2.cubic"
+run "$B/splinefit $T/mc.knots"
+same_as "$T/mc2.cubic"
+# the attribute is consumed, others pass
+run "printf 'points id=4 corners=1\n0 0\n1 0\n1 1\n' | $B/splinefit"
+head -1 "$T/out" | grep -q '^cubic closed=1 id=4$' && ok ||
+    no "$what: header $(head -1 "$T/out")"
+
+finish fit
