@@ -16,7 +16,7 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o \
-          bin/obj/merge.o
+          bin/obj/merge.o bin/obj/fair.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \

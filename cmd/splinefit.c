@@ -28,9 +28,9 @@ struct opts {
 static const char usage_text[] =
     "usage: splinefit [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-a alpha] "
     "[-k positive|turn]\n"
-    "                 [-m manning|ferguson|chord] [-t tol] [-i maxiter] "
-    "[-p digits] [-v]\n"
-    "                 [-d dist] [file ...]\n";
+    "                 [-m fair|manning|ferguson|chord] [-t tol] [-i maxiter] "
+    "[-p digits]\n"
+    "                 [-v] [-d dist] [file ...]\n";
 
 static void
 usage(int status)
@@ -311,7 +311,7 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const methods[] = { "manning", "ferguson", "chord",
-	    NULL };
+	    "fair", NULL };
 	static const char *const signs[] = { "positive", "turn", NULL };
 	struct opts o = { .merge = -1 };
 	struct loft_run run = { .prog = "splinefit", .out = stdout,

@@ -24,7 +24,7 @@ void
 loft_fit_defaults(struct loft_fit_opts *o)
 {
 	memset(o, 0, sizeof *o);
-	o->method = LOFT_MANNING;
+	o->method = LOFT_FAIR;
 	o->sign = LOFT_SIGN_POSITIVE;
 	o->alpha = 2.0 / 3;
 	o->tol = 1e-12;
@@ -409,6 +409,8 @@ fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 {
 	if (o->method == LOFT_MANNING)
 		return fit_manning(o, q, n, dim, seg, info, err);
+	if (o->method == LOFT_FAIR)
+		return loft__fit_fair(o, q, n, dim, seg, info, err);
 	info->converged = 1;
 	return loft__fit_cspline(o, q, n, dim, seg, err);
 }

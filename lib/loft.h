@@ -258,7 +258,7 @@ int loft_normalise(const double *chord, const double *ta, const double *tb,
 /* ------------------------------------------------------------------ */
 /* Fitting a spline through knots (fit.c, cspline.c)                   */
 
-enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD };
+enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD, LOFT_FAIR };
 enum loft_sign { LOFT_SIGN_POSITIVE, LOFT_SIGN_TURN };
 
 struct loft_fit_opts {
@@ -274,7 +274,8 @@ struct loft_fit_opts {
 	size_t ncorner;
 };
 
-/* The paper's and the programs' defaults. */
+/* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
+ * paper's alpha and sign rule. */
 void loft_fit_defaults(struct loft_fit_opts *o);
 
 struct loft_fit_info {

@@ -639,6 +639,7 @@ scale_opts() {
 units() {
 	OPTS=$1
 	file=$2
+	utol=${3:-$UNITS_TOL}
 	tc="units of $file ($OPTS)"
 	run "$file"
 	status 0
@@ -653,7 +654,7 @@ units() {
 		OPTS=$o0
 		status 0
 		curve_points <"$T/out" >"$T/p1"
-		e=$(awk -v s="$1" -v d="$2" -v tol=$UNITS_TOL '
+		e=$(awk -v s="$1" -v d="$2" -v tol=$utol '
 		$1 == "error" { if (NR == FNR) err[FNR] = $2 * s * s
 			else { e = $2 - err[FNR]; e = e < 0 ? -e : e
 				if (e > eworst) eworst = e }
@@ -839,7 +840,7 @@ splinefit_cases() {
 	sane "fig. 15 (sign rules disagree), -k positive"
 	opts -k turn
 	sane "fig. 15 (sign rules disagree), -k turn"
-	opts -i 2
+	opts -m manning -i 2
 	cp "$T/fig15" "$T/case"
 	bad "no convergence in -i 2" 1 "no convergence in 2 iterations: tangents still move by 0."
 
@@ -856,7 +857,7 @@ splinefit_cases() {
 	    if (d > m) m = d } END { exit !(m < 1e-12) }' && ok ||
 	    no "open collinear knots: the curve leaves their line"
 	knots '0 0\n1 0\n0 0\n'
-	bad "open, doubling back" 3 "knots 1 and 3 on either side of knot 2 coincide"
+	sane "open, doubling back"
 	printf 'points start=1\n0 0\n1 0\n' >"$T/case"
 	bad "start= of 1 number" 1 "attribute start=1: want 2 numbers"
 	printf 'points end=nan,1\n0 0\n1 0\n' >"$T/case"
@@ -864,7 +865,13 @@ splinefit_cases() {
 	printf 'points start=0,0\n0 0\n1 0\n' >"$T/case"
 	bad "start=0,0" 1 "start tangent is zero"
 	printf 'points start=-1,0 end=-1,0\n0 0\n1 0\n' >"$T/case"
-	bad "both tangents back along the chord" 3 "turn back along the chord"
+	sane "both tangents back along the chord"
+	# Manning's method fails on these two, as the paper's eq. 9 must
+	opts -o -m manning
+	knots '0 0\n1 0\n0 0\n'
+	bad "open, doubling back, -m manning" 3 "knots 1 and 3 on either side of knot 2 coincide"
+	printf 'points start=-1,0 end=-1,0\n0 0\n1 0\n' >"$T/case"
+	bad "both tangents back along the chord, -m manning" 3 "turn back along the chord"
 
 	# a record of BIG knots on the unit circle: fits, in linear memory
 	# (peak measured with /usr/bin/time -v: see the notes), lossless
@@ -887,7 +894,11 @@ splinefit_cases() {
 	for o in "" -o "-m chord" "-m ferguson -o"; do
 		units "$o" man/figures/insole.knots
 	done
-	units "-k turn" "$T/fig15"
+	units "-m manning -k turn" "$T/fig15"
+	# the fair descent stops where a step gains too little; on the
+	# knots of fig. 15, whose curve the knots hardly decide, the
+	# rounding of other units moves that point by up to 6e-9 of the size
+	units "" "$T/fig15" 1e-7
 	printf '0 0 0\n4 1 1\n5 3 -2\n2 5 0\n-1 2 1\n' >"$T/space"
 	units "" "$T/space"
 	units "-o -S 1,0,0 -E 0,1,1" "$T/space"

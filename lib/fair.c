@@ -1,0 +1,349 @@
+/*
+ * fair.c: the fair default of loft_fit.  Of the cubic splines with
+ * continuous first and second derivatives (so continuous tangent and
+ * curvature: G2) through the knots, with any positive parameter
+ * intervals h_i, the one of least bending energy E, the integral of
+ * curvature squared along the curve, that descent from the chord-length
+ * intervals reaches.
+ *
+ * Every h gives a G2 curve through the knots from one tridiagonal
+ * system, so no step can break continuity or fail.  E and its gradient
+ * with respect to log h cost O(n): E by Gauss quadrature per segment,
+ * dE/dP' in closed form, dE/dh by the adjoint of the system (cspline.c).
+ * The descent takes L-BFGS steps, each kept only when it lowers E enough
+ * (Armijo) and keeps every curvature within the chord spline's largest;
+ * so the curve is never worse than the chord-length spline, and never
+ * more sharply bent.
+ *
+ * The free second-derivative jumps make the family every G2 cubic curve
+ * through the knots with those end tangents: the tangent magnitudes at a
+ * knot may differ (h) and the curvature is matched without matching
+ * P'' (y), the two freedoms Manning's normalisation fixes one way.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Steps: L-BFGS takes the insole within 1e-5 of its settled energy in 6
+ * to 8; each costs a few O(n) passes, and the bench's 10^4 insoles must
+ * stay within half GNU spline's time.  Always this many, unless no step
+ * lowers E at all: a test of "settled" would stop one step sooner or
+ * later for knots that differ only by rounding (the same knots in other
+ * units), and the curves would differ by a step. */
+#define FAIR_STEPS 12
+
+/* No step changes a log interval by more than this: a factor e, so a
+ * step cannot jump across a fold of the energy into a worse valley. */
+#define FAIR_MAXSTEP 1.0
+
+/* Stop once a step lowers E by less than this fraction of it: below
+ * what the eye or any fairness measure can tell. */
+#define FAIR_SETTLED 1e-6
+
+/* No tangent vector longer than this many times its segment's chord: a
+ * curve's energy falls as it grows (a circle's is 2 pi / R), so a
+ * descent left free would swell loops out of the knots' reach. */
+#define FAIR_MAXMAG 3.0
+
+/* The pairs of steps L-BFGS remembers. */
+#define FAIR_MEMORY 4
+
+/* Armijo's fraction of the first-order decrease a step must achieve. */
+#define FAIR_ARMIJO 1e-4
+
+/* 4-point Gauss-Legendre on [0, 1]: exact to degree 7, and within 1e-5
+ * relative of the energy of the segments of a fair curve; the descent
+ * compares curves by this one rule, so it need not be closer. */
+#define GAUSS 4
+static const double gauss_u[GAUSS] = {
+	0.069431844202973712, 0.33000947820757187, 0.66999052179242813,
+	0.93056815579702629 };
+static const double gauss_w[GAUSS] = {
+	0.17392742256872693, 0.32607257743127307, 0.32607257743127307,
+	0.17392742256872693 };
+
+/*
+ * The bending energy of segment s (a row P_A P_B P'_A P'_B) and, unless g
+ * is NULL, its gradient with respect to P'_A and P'_B into g (2 dim); the
+ * largest curvature at the quadrature points raises *kmax.  With V =
+ * |P'|^2, W = |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2)
+ * V^-5/2.  HUGE_VAL where the tangent vanishes.
+ */
+static double
+segment_energy(const double *s, int dim, double *g, double *kmax)
+{
+	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
+	double c[LOFT_MAXDIM], e = 0;
+
+	vsub(c, b, a, dim);
+	if (g != NULL)
+		memset(g, 0, 2 * dim * sizeof *g);
+	for (int q = 0; q < GAUSS; q++) {
+		double u = gauss_u[q], a0 = 1 - 4 * u + 3 * u * u;
+		double a1 = -2 * u + 3 * u * u, gc = 6 * u - 6 * u * u;
+		double b0 = -4 + 6 * u, b1 = -2 + 6 * u, dc = 6 - 12 * u;
+		double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v, w, x, num, r;
+
+		for (int k = 0; k < dim; k++) {
+			p1[k] = a0 * d0[k] + a1 * d1[k] + gc * c[k];
+			p2[k] = b0 * d0[k] + b1 * d1[k] + dc * c[k];
+		}
+		v = vdot(p1, p1, dim);
+		w = vdot(p2, p2, dim);
+		x = vdot(p1, p2, dim);
+		num = fmax(v * w - x * x, 0);
+		if (!(v > 0))
+			return HUGE_VAL;
+		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
+		e += gauss_w[q] * num * r;
+		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
+		if (g == NULL)
+			continue;
+		for (int k = 0; k < dim; k++) {
+			double f1 = (2 * w * p1[k] - 2 * x * p2[k]) * r -
+			    5 * num * r / v * p1[k];
+			double f2 = (2 * v * p2[k] - 2 * x * p1[k]) * r;
+
+			g[k] += gauss_w[q] * (f1 * a0 + f2 * b0);
+			g[dim + k] += gauss_w[q] * (f1 * a1 + f2 * b1);
+		}
+	}
+	return e;
+}
+
+/* Whether every tangent vector of the segments is within FAIR_MAXMAG
+ * chords. */
+static int
+tame(const double *seg, size_t nseg, int dim)
+{
+	for (size_t s = 0; s < nseg; s++) {
+		const double *q = seg + s * 4 * dim;
+		double w = FAIR_MAXMAG * vdist(q + dim, q, dim);
+
+		if (!(vnorm(q + 2 * dim, dim) <= w && vnorm(q + 3 * dim, dim) <= w))
+			return 0;
+	}
+	return 1;
+}
+
+/* The energy of all nseg segments, gradients into g unless NULL. */
+static double
+curve_energy(const double *seg, size_t nseg, int dim, double *g,
+    double *kmax)
+{
+	double e = 0;
+
+	*kmax = 0;
+	for (size_t s = 0; s < nseg; s++)
+		e += segment_energy(seg + s * 4 * dim, dim,
+		    g ? g + s * 2 * dim : NULL, kmax);
+	return e;
+}
+
+struct fair {
+	const struct loft_fit_opts *o;
+	const double *p;
+	size_t n, nseg;
+	int dim;
+	double *seg, *work, *gseg;
+	double kcap;
+	double e0;              /* the start's energy: E / e0 is descended,
+	                         * so steps do not depend on the units */
+};
+
+/* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
+ * into f->seg, its energy (HUGE_VAL where a curvature passes the cap). */
+static double
+try_intervals(struct fair *f, const double *x, double *h)
+{
+	double e, kmax;
+	struct loft_error err;
+
+	for (size_t s = 0; s < f->nseg; s++)
+		h[s] = exp(x[s]);
+	if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg, f->seg,
+	    f->work, &err) != 0)
+		return HUGE_VAL;
+	if (!tame(f->seg, f->nseg, f->dim))
+		return HUGE_VAL;
+	e = curve_energy(f->seg, f->nseg, f->dim, NULL, &kmax) / f->e0;
+	return kmax <= f->kcap && isfinite(e) ? e : HUGE_VAL;
+}
+
+/* dE/dx at the x last solved (h = exp(x)), into g. */
+static void
+gradient(struct fair *f, const double *x, const double *h, double *g)
+{
+	double kmax;
+
+	curve_energy(f->seg, f->nseg, f->dim, f->gseg, &kmax);
+	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
+	    f->gseg, g, g + f->nseg, f->work);
+	for (size_t s = 0; s < f->nseg; s++)
+		g[s] *= h[s] / f->e0;
+	for (size_t i = 0; i < f->n; i++)
+		g[f->nseg + i] /= f->e0;
+}
+
+/*
+ * The L-BFGS direction -H g into d from the last k of FAIR_MEMORY pairs
+ * (s, y) of steps and gradient changes, stored round from slot k0.
+ */
+static void
+direction(size_t m, const double *g, double *d, double *const *sv,
+    double *const *yv, const double *rho, int k, int k0)
+{
+	double al[FAIR_MEMORY], gamma = 1;
+
+	memcpy(d, g, m * sizeof *d);
+	for (int j = k - 1; j >= 0; j--) {
+		int q = (k0 + j) % FAIR_MEMORY;
+		double a = 0;
+
+		for (size_t i = 0; i < m; i++)
+			a += sv[q][i] * d[i];
+		al[j] = a *= rho[q];
+		for (size_t i = 0; i < m; i++)
+			d[i] -= a * yv[q][i];
+	}
+	if (k > 0) {
+		int q = (k0 + k - 1) % FAIR_MEMORY;
+		double yy = 0;
+
+		for (size_t i = 0; i < m; i++)
+			yy += yv[q][i] * yv[q][i];
+		gamma = 1 / (rho[q] * yy);
+	}
+	for (size_t i = 0; i < m; i++)
+		d[i] *= gamma;
+	for (int j = 0; j < k; j++) {
+		int q = (k0 + j) % FAIR_MEMORY;
+		double b = 0;
+
+		for (size_t i = 0; i < m; i++)
+			b += yv[q][i] * d[i];
+		b *= rho[q];
+		for (size_t i = 0; i < m; i++)
+			d[i] += (al[j] - b) * sv[q][i];
+	}
+	for (size_t i = 0; i < m; i++)
+		d[i] = -d[i];
+}
+
+/* The descent; returns the steps taken.  x: log h and y, the best on
+ * return, whose spline f->seg holds.  v: room for 2 FAIR_MEMORY + 3
+ * vectors of nseg + n. */
+static int
+descend(struct fair *f, double *x, double *h, double *v, double e)
+{
+	size_t m = f->nseg + f->n;
+	double *g = v, *d = g + m, *xp = d + m, *sv[FAIR_MEMORY],
+	    *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
+	int it, k = 0, k0 = 0;
+
+	for (int j = 0; j < FAIR_MEMORY; j++) {
+		sv[j] = xp + m + 2 * j * m;
+		yv[j] = sv[j] + m;
+	}
+	gradient(f, x, h, g);
+	for (it = 0; it < FAIR_STEPS; it++) {
+		double gd = 0, big = 0, t = 1, en = HUGE_VAL;
+		int q;
+
+		direction(m, g, d, sv, yv, rho, k, k0);
+		for (size_t i = 0; i < m; i++) {
+			gd += g[i] * d[i];
+			big = fmax(big, fabs(d[i]));
+		}
+		if (!(gd < 0) || !isfinite(gd)) {       /* start afresh */
+			if (k == 0)
+				break;
+			k = 0;
+			it--;
+			continue;
+		}
+		t = fmin(1, FAIR_MAXSTEP / big);
+		memcpy(xp, x, m * sizeof *x);
+		for (int half = 0; half < 10; half++, t *= 0.25) {
+			for (size_t i = 0; i < m; i++)
+				x[i] = xp[i] + t * d[i];
+			en = try_intervals(f, x, h);
+			if (en <= e + FAIR_ARMIJO * t * gd)
+				break;
+		}
+		if (!(en <= e + FAIR_ARMIJO * t * gd)) {
+			memcpy(x, xp, m * sizeof *x);
+			break;
+		}
+		if (e - en < FAIR_SETTLED * e) {
+			e = en;
+			it++;
+			break;
+		}
+		/* the new pair: s = x - xp, y = g(x) - g(xp) */
+		q = k < FAIR_MEMORY ? (k0 + k) % FAIR_MEMORY : k0;
+		if (k == FAIR_MEMORY)
+			k0 = (k0 + 1) % FAIR_MEMORY;
+		else
+			k++;
+		for (size_t i = 0; i < m; i++) {
+			sv[q][i] = x[i] - xp[i];
+			yv[q][i] = -g[i];
+		}
+		gradient(f, x, h, g);
+		{
+			double sy = 0;
+
+			for (size_t i = 0; i < m; i++) {
+				yv[q][i] += g[i];
+				sy += yv[q][i] * sv[q][i];
+			}
+			if (sy > 0) {
+				rho[q] = 1 / sy;
+			} else {                /* no curvature: forget all */
+				k = 0;
+				k0 = 0;
+			}
+		}
+		e = en;
+	}
+	/* the spline of the best x, in f->seg */
+	try_intervals(f, x, h);
+	return it;
+}
+
+int
+loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	size_t nseg = o->closed ? n : n - 1;
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 1 };
+	double *mem, *x, *h, e, kmax;
+	int rc;
+
+	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3),
+	    sizeof *mem);
+	if (mem == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	f.work = mem;
+	f.gseg = f.work + (7 + 2 * dim) * n;
+	x = f.gseg + 2 * dim * n;
+	h = x + 2 * n;
+	for (size_t s = 0; s < nseg; s++)
+		x[s] = log(vdist(p + ((s + 1) % n) * dim, p + s * dim, dim));
+	for (size_t s = 0; s < nseg; s++)
+		h[s] = exp(x[s]);
+	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
+	if (rc == 0) {
+		e = curve_energy(seg, nseg, dim, NULL, &kmax);
+		/* the chord spline's largest curvature, less rounding */
+		f.kcap = kmax * (1 + 1e-9);
+		f.e0 = e;
+		if (isfinite(e) && e > 0)
+			info->iterations = descend(&f, x, h, h + n, 1);
+		info->converged = 1;
+	}
+	free(mem);
+	return rc;
+}
