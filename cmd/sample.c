@@ -1,9 +1,11 @@
 /*
- * sample: evaluate each curve record at equal parameter steps and write
- * the points, optionally with parameter, unit tangent and curvature;
- * each surface record as a wireframe of iso-parameter lines; or either
- * as a Wavefront OBJ mesh.
+ * sample: evaluate each curve record at equal parameter steps, at equal
+ * arc lengths (-s) or at as few points as keep within a tolerance (-t),
+ * and write the points, optionally with parameter, unit tangent and
+ * curvature; each surface record as a wireframe of iso-parameter lines;
+ * or either as a Wavefront OBJ mesh.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -15,11 +17,25 @@ struct opts {
 	int param, tangent, curvature;
 	int obj;                /* -f obj */
 	long nvert;             /* OBJ vertices written so far */
+	double spacing;         /* -s: arc length between points, or 0 */
+	double tol;             /* -t: chordal tolerance, or 0 */
+	double *u;              /* -s, -t: the parameters of a record */
+	size_t ucap;
 };
 
+/* -s and -t write at most this many points of a record. */
+#define MAX_POINTS 10000000
+
+/*
+ * -t refuses a tolerance below this fraction of the curve's size: the
+ * points would be millions a segment, and rounding of the size itself.
+ */
+#define MIN_TOL 1e-9
+
 static const char usage_text[] =
-    "usage: sample [-n per-segment] [-p digits] [-u] [-d] [-k] "
-    "[-f points|obj] [file ...]\n";
+    "usage: sample [-n per-segment | -s spacing | -t tolerance] "
+    "[-p digits] [-u] [-d] [-k]\n"
+    "              [-f points|obj] [file ...]\n";
 
 static void
 usage(int status)
@@ -93,6 +109,77 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 	return 0;
 }
 
+/* Room for n parameters in o->u: 0, or LOFT_ENOMEM. */
+static int
+room(struct opts *o, size_t n, struct loft_error *err)
+{
+	double *u;
+
+	if (n <= o->ucap)
+		return 0;
+	if ((u = realloc(o->u, n * sizeof *u)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	o->u = u;
+	o->ucap = n;
+	return 0;
+}
+
+/*
+ * -s and -t: the parameters of the points, in o->u; their count in *n.
+ */
+static int
+chosen_params(struct opts *o, const struct loft_curve *c, size_t *n,
+    struct loft_error *err)
+{
+	double len, lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], size = 0;
+
+	if (o->spacing > 0) {
+		len = loft_curve_length(c);
+		*n = loft_spaced_count(len, o->spacing);
+		if (!isfinite(len))
+			return loft_fail(err, LOFT_EGEOM, -1, "the length "
+			    "overflows: coefficients too large");
+		if (*n > MAX_POINTS)
+			return loft_fail(err, LOFT_EINPUT, -1, "-s %g along a "
+			    "curve of length %g: more than %d points",
+			    o->spacing, len, MAX_POINTS);
+		if (room(o, *n, err) != 0)
+			return LOFT_ENOMEM;
+		loft_curve_spaced(c, o->spacing, o->u, *n);
+		return 0;
+	}
+	loft_curve_bbox(c, lo, hi);
+	for (int k = 0; k < c->dim; k++)
+		size = fmax(size, hi[k] - lo[k]);
+	if (!isfinite(size) || o->tol < MIN_TOL * size)
+		return loft_fail(err, LOFT_EINPUT, -1, "-t %g is below %g of "
+		    "the curve's size %g", o->tol, MIN_TOL, size);
+	while ((*n = loft_curve_flatten(c, o->tol, o->u, o->ucap)) > o->ucap)
+		if (*n > MAX_POINTS)
+			return loft_fail(err, LOFT_EINPUT, -1, "-t %g: more "
+			    "than %d points", o->tol, MAX_POINTS);
+		else if (room(o, *n, err) != 0)
+			return LOFT_ENOMEM;
+	return 0;
+}
+
+/* The points at parameters o->u[0..n), curve-wide (piece + local u). */
+static int
+put_params(struct loft_run *run, const struct loft_curve *c, size_t n,
+    struct loft_error *err)
+{
+	const struct opts *o = run->ctx;
+
+	for (size_t j = 0; j < n; j++) {
+		double f = floor(o->u[j]);
+		size_t i = f >= (double)c->npieces ? c->npieces - 1 : (size_t)f;
+
+		if (put_point(run, c, i, o->u[j] - (double)i, err) != 0)
+			return LOFT_EGEOM;
+	}
+	return 0;
+}
+
 static int
 sample_curve(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
@@ -100,21 +187,34 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 	struct opts *o = run->ctx;
 	struct loft_curve c;
 	long nv;
+	size_t n = 0;
 	char buf[32];
+	int rc;
 
 	if (loft_curve_from_record(rec, &c, err) != 0)
 		return LOFT_EINPUT;
+	if ((o->spacing > 0 || o->tol > 0) &&
+	    (rc = chosen_params(o, &c, &n, err)) != 0)
+		return rc;
 	if (o->obj)
 		put_object(run, rec);
-	for (size_t i = 0; i < c.npieces; i++)
-		for (long j = 0; j < o->per; j++)
-			if (put_point(run, &c, i, (double)j / o->per, err) != 0)
-				return LOFT_EGEOM;
-	/* the last segment's end: the first point again on a closed curve */
-	if (put_point(run, &c, c.npieces - 1, 1, err) != 0)
-		return LOFT_EGEOM;
+	if (n > 0) {
+		if (put_params(run, &c, n, err) != 0)
+			return LOFT_EGEOM;
+	} else {
+		for (size_t i = 0; i < c.npieces; i++)
+			for (long j = 0; j < o->per; j++)
+				if (put_point(run, &c, i, (double)j / o->per,
+				    err) != 0)
+					return LOFT_EGEOM;
+		/* the last segment's end: the first point again on a
+		 * closed curve */
+		if (put_point(run, &c, c.npieces - 1, 1, err) != 0)
+			return LOFT_EGEOM;
+		n = c.npieces * (size_t)o->per + 1;
+	}
 	if (o->obj) {
-		nv = (long)c.npieces * o->per + 1;
+		nv = (long)n;
 		loft_put_type(&run->w, "l");
 		for (long k = 1; k <= nv; k++) {
 			snprintf(buf, sizeof buf, " %ld", o->nvert + k);
@@ -224,10 +324,25 @@ sample_record(struct loft_run *run, const struct loft_record *rec,
 		return sample_curve(run, rec, err);
 	if (loft_surface_from_record(rec, &s, err) != 0)
 		return LOFT_EINPUT;
+	if (o->spacing > 0 || o->tol > 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "-s and -t need a curve; "
+		    "a %s record is a surface", rec->type);
 	if (o->tangent || o->curvature)
 		return loft_fail(err, LOFT_EINPUT, -1, "-d and -k need a curve; "
 		    "a %s record has no tangent or curvature", rec->type);
 	return o->obj ? mesh(run, rec, &s, err) : wireframe(run, &s, err);
+}
+
+/* An option's length: a number greater than 0. */
+static int
+positive(const char *s, double *x, struct loft_error *err)
+{
+	if (loft_parse_real(s, 0, DBL_MAX, x, err) != 0)
+		return LOFT_EINPUT;
+	if (*x == 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "'%s': want a number "
+		    "greater than 0", s);
+	return 0;
 }
 
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
@@ -235,18 +350,29 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const formats[] = { "points", "obj", NULL };
-	struct opts o = { 16, 0, 0, 0, 0, 0 };
+	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, NULL, 0 };
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
 	long digits;
-	int c;
+	int c, rc, ways = 0;
 
-	while ((c = getopt(argc, argv, "n:p:udkf:h")) != -1) {
+	while ((c = getopt(argc, argv, "n:s:t:p:udkf:h")) != -1) {
 		switch (c) {
 		case 'n':
 			if (loft_parse_int(optarg, 1, 1000000, &o.per, &err))
 				goto bad;
+			ways |= 1;
+			break;
+		case 's':
+			if (positive(optarg, &o.spacing, &err))
+				goto bad;
+			ways |= 2;
+			break;
+		case 't':
+			if (positive(optarg, &o.tol, &err))
+				goto bad;
+			ways |= 4;
 			break;
 		case 'p':
 			if (loft_parse_int(optarg, 1, 17, &digits, &err))
@@ -269,7 +395,14 @@ main(int argc, char *argv[])
 		    "-f obj has none\n", stderr);
 		usage(2);
 	}
-	return loft_run_files(&run, argc - optind, argv + optind);
+	if (ways != 0 && (ways & (ways - 1)) != 0) {
+		fputs("sample: -n, -s and -t are three ways of choosing the "
+		    "points: give one\n", stderr);
+		usage(2);
+	}
+	rc = loft_run_files(&run, argc - optind, argv + optind);
+	free(o.u);
+	return rc;
 bad:
 	fprintf(stderr, "sample: -%c %s\n", c, err.msg);
 	usage(2);

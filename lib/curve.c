@@ -19,12 +19,51 @@ struct curve_type {
 	    double *p, double *d1, double *d2);
 	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
 	    double *p, double *d1, double *d2);
+	int (*bezier)(const double *piece, int dim, double *ctl);
 };
 
+/*
+ * Manning's eq. 7 in the Bernstein basis: the inner control points are
+ * one third of the end tangents in from the ends, as P'(0) = 3 (b1 - b0).
+ */
+static int
+cubic_bezier(const double *seg, int dim, double *ctl)
+{
+	for (int k = 0; k < dim; k++) {
+		ctl[k] = seg[k];
+		ctl[dim + k] = seg[k] + seg[2 * dim + k] / 3;
+		ctl[2 * dim + k] = seg[dim + k] - seg[3 * dim + k] / 3;
+		ctl[3 * dim + k] = seg[dim + k];
+	}
+	return 3;
+}
+
+/*
+ * MacCallum's quartic (0) (1) (0)_u (1)_u (h) in the Bernstein basis of
+ * degree 4: P'(0) = 4 (b1 - b0), P'(1) = 4 (b4 - b3), and the point at
+ * u = 1/2 is (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16, which gives b2.
+ */
+static int
+quartic_bezier(const double *q, int dim, double *ctl)
+{
+	for (int k = 0; k < dim; k++) {
+		double b0 = q[k], b4 = q[dim + k];
+		double b1 = b0 + q[2 * dim + k] / 4, b3 = b4 - q[3 * dim + k] / 4;
+
+		ctl[k] = b0;
+		ctl[dim + k] = b1;
+		ctl[2 * dim + k] = (16 * q[4 * dim + k] - b0 - b4 -
+		    4 * (b1 + b3)) / 6;
+		ctl[3 * dim + k] = b3;
+		ctl[4 * dim + k] = b4;
+	}
+	return 4;
+}
+
 static const struct curve_type types[] = {
-	{ "cubic", 4, loft_cubic_eval, NULL },
-	{ "quartic", 5, loft_quartic_eval, NULL },
-	{ "bezier", 1, NULL, loft_bezier_eval },
+	{ "cubic", 4, loft_cubic_eval, NULL, cubic_bezier },
+	{ "quartic", 5, loft_quartic_eval, NULL, quartic_bezier },
+	{ "bezier", 1, NULL, loft_bezier_eval, NULL },
 };
 
 /* Parse an optional 0/1 attribute; -1 when it is something else. */
@@ -75,6 +114,7 @@ loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
 	c->rowlen = rec->ncols;
 	c->eval = t->eval;
 	c->eval_ctl = t->eval_ctl;
+	c->bezier = t->bezier;
 	c->closed = flag_attr(rec, "closed");
 	if (c->closed < 0)
 		return loft_fail(err, LOFT_EINPUT, -1,
@@ -90,6 +130,16 @@ loft_curve_eval(const struct loft_curve *c, size_t i, double u,
 		c->eval_ctl(c->coef, c->npts, c->dim, u, p, d1, d2);
 	else
 		c->eval(c->coef + i * c->rowlen, c->dim, u, p, d1, d2);
+}
+
+int
+loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl)
+{
+	if (c->bezier == NULL) {
+		memcpy(ctl, c->coef, c->npts * c->dim * sizeof *ctl);
+		return (int)c->npts - 1;
+	}
+	return c->bezier(c->coef + i * c->rowlen, c->dim, ctl);
 }
 
 int

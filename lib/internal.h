@@ -172,4 +172,71 @@ void loft__bump(double a, double b, double *coef);
  * rows of 10 or 15 numbers of a patch. */
 int loft__patch_shape(const struct loft_record *rec, struct loft_error *err);
 
+/*
+ * bernstein.c: polynomials on [0, 1] in the Bernstein basis, as
+ * coefficient arrays c[0..n] of degree n <= LOFT__BMAX - 1.  The degree
+ * 6 n - 9 of the curvature-derivative numerator of a space Bezier curve
+ * with LOFT_BEZIER_MAXPTS points fits.
+ */
+#define LOFT__BMAX (6 * LOFT_BEZIER_MAXPTS)
+/* The value at t, by de Casteljau's algorithm. */
+double loft__bern_eval(const double *c, int n, double t);
+/* h[0..m+n] = f g, f of degree m and g of degree n. */
+void loft__bern_mul(const double *f, int m, const double *g, int n, double *h);
+/* f[0..n] += s g, g of degree m <= n raised to degree n. */
+void loft__bern_addto(double *f, int n, double s, const double *g, int m);
+/* The largest |c[i]|: a bound on |f| over [0, 1]. */
+double loft__bern_max(const double *c, int n);
+/*
+ * The roots of c in (0, 1), increasing, at most max of them, written to
+ * r; returns their count.  Coefficients within zero of 0 count as 0: a
+ * stretch where the polynomial stays within zero has no roots.  Roots
+ * are isolated by subdivision (a polynomial whose coefficients do not
+ * change sign has no root) and refined to the last bits by bisection.
+ */
+int loft__bern_roots(const double *c, int n, double zero, double *r, int max);
+
+/*
+ * A piece of a curve as a Bezier curve: degree n, dim, and per
+ * coordinate k its control values b[k][0..n] and those of its first,
+ * second and third derivatives (degree max(n - j, 0), zero where the
+ * piece has none).
+ */
+struct loft__piece {
+	int n, dim;
+	double b[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
+	double d1[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
+	double d2[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
+	double d3[LOFT_MAXDIM][LOFT_BEZIER_MAXPTS];
+	double p1[LOFT_MAXDIM][8], p2[LOFT_MAXDIM][8]; /* low degrees: P'
+	                           and P'' in powers of u, for speed */
+};
+/* The degree of the j-th derivative's coefficients in a piece. */
+#define LOFT__DEG(pc, j) ((pc)->n > (j) ? (pc)->n - (j) : 0)
+/* Piece i of c. */
+void loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc);
+/* Point, first and second derivatives at u (any may be NULL). */
+void loft__piece_eval(const struct loft__piece *pc, double u, double *p,
+    double *d1, double *d2);
+/* The diagonal of the box around all control points of c: its size. */
+double loft__curve_extent(const struct loft_curve *c);
+
+/*
+ * arclen.c: adaptive Gauss-Kronrod (7, 15) quadrature of the m <= 4
+ * integrands f writes at u, over [a, b] of piece pc.  An interval is
+ * accepted when every component's |K15 - G7| is at most rel times the
+ * K15 of its absolute value plus floor[k] (b - a) (floor may be NULL),
+ * else it is halved, the tolerance with it.  Adds the integrals to
+ * sum[0..m) and, if depth is not NULL, stores the deepest halving.
+ * Returns 0, or LOFT_ENOCONV when an interval was accepted
+ * at the depth limit without meeting its tolerance.
+ */
+typedef void (*loft__integrand)(const struct loft__piece *pc, double u,
+    double *f, void *ctx);
+int loft__quad(const struct loft__piece *pc, double a, double b, int m,
+    loft__integrand f, void *ctx, double rel, const double *floor,
+    double *sum, int *depth);
+/* The speed |P'(u)|: the integrand of arc length. */
+void loft__speed(const struct loft__piece *pc, double u, double *f, void *ctx);
+
 #endif

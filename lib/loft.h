@@ -377,6 +377,7 @@ struct loft_curve {
 	size_t npts;            /* control-point types: the record's rows */
 	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
 	    double *p, double *d1, double *d2);
+	int (*bezier)(const double *piece, int dim, double *ctl);
 };
 
 /*
@@ -396,11 +397,166 @@ void loft_curve_eval(const struct loft_curve *c, size_t i, double u,
     double *p, double *d1, double *d2);
 
 /*
+ * The control points of piece i in the Bernstein basis (the piece as a
+ * Bezier curve over its own [0, 1]), written to ctl, dim numbers a
+ * point: exact conversions of the record's rows (a cubic's inner points
+ * a third of its end tangents in, a quartic's from its ends, end
+ * derivatives and (h)).  ctl must hold LOFT_BEZIER_MAXPTS * dim numbers.
+ * Returns the degree, 1 to LOFT_BEZIER_MAXPTS - 1.
+ */
+int loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl);
+
+/*
  * The curvature of a curve with derivatives d1, d2: signed in the plane
  * (positive where the curve turns counter-clockwise), |eq. 2| in space.
  * Returns 0, or LOFT_EGEOM where d1 = 0.
  */
 int loft_curvature(const double *d1, const double *d2, int dim, double *k);
+
+/* ------------------------------------------------------------------ */
+/* Measuring curves of any record type (arclen.c, measure.c, flatten.c) */
+
+/*
+ * Every function here takes a curve from loft_curve_from_record, of any
+ * type, and works on its pieces in the Bernstein basis
+ * (loft_curve_bezier); u is the curve's parameter over [0, npieces].
+ * Results scale with the curve: lengths and coordinates as it does,
+ * curvatures inversely, counts not at all.
+ */
+
+/*
+ * Relative accuracy of arc lengths: the adaptive quadrature halves an
+ * interval until Kronrod's and Gauss's rules agree to this fraction of
+ * the integral of |P'|; doubles give about 1e-15, so this leaves room
+ * for the sum over many pieces.
+ */
+#define LOFT_ARC_REL 1e-12
+
+/*
+ * The length of c over parameters u0 to u1 (either order; a negative
+ * result when u1 < u0), clamped to [0, npieces]: adaptive Gauss-Kronrod
+ * (7, 15) quadrature of |P'(u)| to LOFT_ARC_REL, piece by piece.
+ * loft_curve_length is the whole curve's.  The result is not finite
+ * only when the coefficients are near overflow.
+ */
+double loft_curve_arc(const struct loft_curve *c, double u0, double u1);
+double loft_curve_length(const struct loft_curve *c);
+
+/*
+ * The parameter u where the length of c from u = 0 is s: 0 for s <= 0,
+ * npieces for s at least the length.  Newton's method on the length
+ * (its derivative is the speed), bisection where a step would leave the
+ * bracket or the speed vanishes; accurate to 1e-13 of the curve's
+ * length.
+ */
+double loft_curve_at_length(const struct loft_curve *c, double s);
+
+/*
+ * Equal spacing: points at lengths 0, step, 2 step, ... along a curve of
+ * length len, and its end (the last interval the short one); an
+ * interior point within LOFT_SPACING_TIE of len of the end is dropped,
+ * so a length that is a multiple of step ends exactly once.
+ * loft_spaced_count is how many points that is (2 at least; (size_t)-1
+ * when more than 1e15), and loft_curve_spaced writes their n parameters
+ * to u, u[0] = 0 and u[n - 1] = npieces, in one sweep along the curve.
+ * len must be loft_curve_length(c) and step > 0.
+ */
+#define LOFT_SPACING_TIE 1e-9
+size_t loft_spaced_count(double len, double step);
+void loft_curve_spaced(const struct loft_curve *c, double step, double *u,
+    size_t n);
+
+/*
+ * Flattening: the parameters of as few points as this simple rule finds
+ * whose polyline is within tol of c: each piece is halved in its
+ * parameter until the chord of every part is within tol of the part,
+ * proved by the part's Bezier control points (the part lies in their
+ * convex hull; the bound uses the control points of its two halves,
+ * which hug the curve closer), so the distance both ways, curve to
+ * polyline and polyline to curve, is at most tol.  The knots are kept.
+ * Writes at most max parameters to u, increasing from 0 to npieces, and
+ * returns how many there are (more than max: call again with room for
+ * them).  tol > 0, in the curve's units.  Parts are never halved below
+ * 2^-30 of a piece.
+ */
+size_t loft_curve_flatten(const struct loft_curve *c, double tol, double *u,
+    size_t max);
+
+/*
+ * The box [lo, hi] (dim numbers each) around c, exact: each piece's
+ * coordinate extremes are at its ends or at the roots of that
+ * coordinate's derivative, found by subdivision in the Bernstein basis.
+ */
+void loft_curve_bbox(const struct loft_curve *c, double *lo, double *hi);
+
+/*
+ * The area a plane curve bounds, by Green's theorem, exact per piece:
+ * positive when it runs counter-clockwise.  An open curve is closed by
+ * the chord from its end back to its start.  Returns 0, or LOFT_EINPUT
+ * for a space curve.
+ */
+int loft_curve_area(const struct loft_curve *c, double *area,
+    struct loft_error *err);
+
+/*
+ * The centroid (dim numbers): of the region a closed plane curve bounds
+ * (Green's theorem); of the curve's length (the mean of its points by
+ * arc length) for an open or a space curve.  Returns 0, or LOFT_EGEOM
+ * when a closed plane curve bounds no area (less than 1e-12 of the
+ * square of its size: a figure of eight with equal lobes, a curve that
+ * runs back along itself).
+ */
+int loft_curve_centroid(const struct loft_curve *c, double *cen,
+    struct loft_error *err);
+
+/*
+ * The smallest radius of curvature of c, 1 / max |k|, and the parameter
+ * u where it is (the first such); the candidates are the pieces' ends
+ * and the roots of dk/du.  A curve that does not bend (max |k| times its
+ * size below 1e-10, a straight line) has *radius = 0 and *u = 0: no
+ * finite radius.  Returns 0, or LOFT_EGEOM where the tangent vanishes
+ * at a candidate (a cusp, row: the piece).
+ */
+int loft_curve_min_radius(const struct loft_curve *c, double *radius,
+    double *u, struct loft_error *err);
+
+/*
+ * The number of inflexions of a plane curve: the sign changes of its
+ * curvature along it, cyclically on a closed curve (so an even number
+ * there), a straight stretch between curvatures of opposite sign
+ * counting as one.  Curvature within 1e-10 of zero (relative to a
+ * piece's derivatives) has no sign.  Returns 0, or LOFT_EINPUT for a
+ * space curve.
+ */
+int loft_curve_inflexions(const struct loft_curve *c, long *count,
+    struct loft_error *err);
+
+/*
+ * The number of curvature extrema of c: the sign changes of dk/ds (of
+ * the signed curvature in the plane, of |k| in space) along it,
+ * cyclically on a closed curve, at knots too; the ends of an open curve
+ * do not count, and changes of curvature below 1e-10 relative (a
+ * circle's) are none.  Returns 0 (err is not used).
+ */
+int loft_curve_extrema(const struct loft_curve *c, long *count,
+    struct loft_error *err);
+
+/*
+ * The bending energy of c, the integral of k^2 ds, by adaptive
+ * quadrature to 1e-10 relative.  Returns 0, or LOFT_EGEOM where it is
+ * not finite (a vanishing tangent; row: the piece).
+ */
+int loft_curve_energy(const struct loft_curve *c, double *energy,
+    struct loft_error *err);
+
+/*
+ * The largest jump |k_after - k_before| of the curvature vector across
+ * a knot of c, interior knots of an open curve and every knot of a
+ * closed one (the closing knot is u = 0), in 1 / the curve's units;
+ * *u the knot, 0 when there is none.  Knots where a tangent vanishes are
+ * skipped.  loft_curvature_jump is the scale-free form for fits.
+ */
+void loft_curve_jump(const struct loft_curve *c, double *jump, double *u);
 
 /* ------------------------------------------------------------------ */
 /* Expressions with exact derivatives (expr.c)                         */

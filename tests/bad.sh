@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS="splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin plot"
+    patchjoin plot measure"
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -964,6 +964,28 @@ sample_cases() {
 	printf 'cubic\n0 0 1e300 0 1e300 0 1e300 0\n' >"$T/case"
 	sane "a huge segment, -d -k"
 
+	# -s and -t: any curve type, the same manners
+	for o in "-s 0.3" "-t 0.01" "-s 0.3 -u -d -k" "-t 0.01 -u -d -k"; do
+		opts $o
+		printf 'bezier\n0 0\n1 1\n2 -1\n3 0\n' >"$T/case"
+		good "a bezier, $o"
+		printf 'quartic\n0 0 2 4 2 0 2 8 1 1\n' >"$T/case"
+		good "a quartic, $o"
+		printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
+		case $o in
+		-t*) m="is below 1e-09 of the curve's size 1e+308" ;;
+		*) m=overflows ;;
+		esac
+		bad "coefficients near the largest double, $o" 1 "$m"
+		printf 'cubic\n1e-320 0 2e-320 0 0 1e-320 0 -1e-320\n' >"$T/case"
+		sane "subnormal coefficients, $o"
+	done
+	opts -s 1
+	printf 'cubic\n0 0 1e8 0 1e8 0 1e8 0\n' >"$T/case"
+	bad "-s giving too many points" 1 "more than 10000000 points"
+	opts -t 0.01
+	bad "-t below 1e-9 of the size" 1 "is below 1e-09 of the curve's size"
+
 	# a record of BIG segments along the x axis, one point each
 	opts -n 1 -p 9
 	tc="$BIG segments"
@@ -1543,6 +1565,59 @@ plot_cases() {
 	run -K "$T/g1" "$T/g2"
 	status 1
 	says "cubic record: -K reads knots"
+}
+
+# ---- measure --------------------------------------------------------------
+
+measure_run() { "$B/measure" "$@"; }
+measure_good() {
+	case $1 in
+	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
+	2) printf 'cubic closed=1\n0 0 0 1 0 0 1 1 0 -1 1 0\n1 0 0 0 0 0 1 -1 0 -1 -1 0\n' ;;
+	esac
+}
+
+measure_cases() {
+	opts
+	printf 'points\n0 0\n1 1\n' >"$T/case"
+	bad "a point record" 1 "a point record is no curve"
+	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 0 0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 0 0\n' \
+	    >"$T/case"
+	bad "a patch" 1 "a patch record is a surface"
+	printf 'cubic\n0 0 1 0 0 2 0\n' >"$T/case"
+	bad "a truncated cubic row" 2 "cubic rows need 8 or 12 numbers, not 7"
+	printf 'cubic\n0 0 1 0 0 0 1 1\n' >"$T/case"
+	bad "a cusp: a zero end tangent" 2 "tangent vanishes in piece 1"
+	printf 'cubic\n0 0 0 0 0 0 0 0\n' >"$T/case"
+	bad "a segment that is a point" 2 "tangent vanishes in piece 1"
+	printf 'cubic closed=1\n0 0 1 0 1 0 1 0\n1 0 0 0 -1 0 -1 0\n' >"$T/case"
+	bad "a closed curve of no area" 1 "encloses no area"
+	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
+	bad "coefficients near the largest double" 1 "overflows"
+	printf 'cubic\n0 0 3 4 3 4 3 4\n' >"$T/case"
+	good "a straight segment"
+	printf 'bezier\n0 0\n1 1\n2 -1\n3 0\n' >"$T/case"
+	good "a bezier"
+	printf 'quartic\n0 0 2 4 2 0 2 8 1 1\n' >"$T/case"
+	good "a quartic"
+	printf 'cubic\n1e-320 0 2e-320 0 0 1e-320 0 -1e-320\n' >"$T/case"
+	sane "subnormal coefficients"
+	printf 'cubic\n0 0 1e-300 0 1e-300 1e-300 1e-300 0\n' >"$T/case"
+	sane "a tiny segment"
+	printf 'cubic\n0 0 1e300 0 1e300 1e300 1e300 0\n' >"$T/case"
+	sane "a huge segment"
+	# -f area, inflexions, cz: tests/measure.sh (good record 2 is a
+	# space curve)
+
+	# a record of BIG segments along the x axis: length BIG, no bend
+	opts -f length,xmax,minradius,extrema,energy,jump
+	tc="$BIG segments"
+	awk -v n="$BIG" 'BEGIN { print "cubic closed=0"; for (i = 0; i < n; i++)
+	    printf "%d 0 %d 0 1 0 1 0\n", i, i + 1 }' >"$T/case"
+	run "$T/case"
+	status 0
+	[ "$(awk NF "$T/out")" = "$BIG $BIG 0 0 0 0" ] && ok ||
+	    no "$what: $(head -c 200 "$T/out")"
 }
 
 # ---- run them -----------------------------------------------------------------

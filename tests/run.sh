@@ -34,5 +34,7 @@ suite bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
 suite sh tests/plot.sh
 suite sh tests/bad.sh
+suite bin/test/arclen
+suite sh tests/measure.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -57,6 +57,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ splinefit "$B/splinefit $W/insoles.knots"
 	case_ sample "$B/sample -n 20 $W/insoles.cubic"
 	case_ floor-sample "$W/floor -n 20 $W/insoles.cubic"
+	case_ measure "$B/measure $W/insoles.cubic"
+	case_ sample-s "$B/sample -s 1.4 $W/insoles.cubic"
 	case_ pipeline "$B/splinefit $W/insoles.knots | $B/sample -n 20"
 	case_ pipeline-p6 "$B/splinefit $W/insoles.knots | $B/sample -n 20 -p 6"
 	[ $have_spline = 1 ] &&
@@ -71,8 +73,8 @@ while [ "$rep" -le "$REPS" ]; do
 done
 echo
 echo "bench: insoles: $N outlines of 22 knots, 441 points each (sample" \
-    "-n 20; GNU spline -n 440)"
+    "-n 20; GNU spline -n 440; sample -s 1.4 about as many)"
 $W/timeit -r $OUT pipeline/gnu-spline pipeline-p6/gnu-spline \
     pipeline/floor pipeline-p6/floor-p6 splinefit/floor sample/floor-sample \
     floor-printf/floor floor/gnu-spline scipy/gnu-spline \
-    space/space-gnu
+    space/space-gnu measure/sample sample-s/sample
