@@ -191,6 +191,31 @@ merge_notes(struct loft_run *run, const struct loft_record *rec, size_t m,
 	}
 }
 
+/* -v: the curve's bending energy, smallest radius of curvature and
+ * where, and its inflexions (of a plane curve). */
+static void
+measures(FILE *msg, const double *seg, size_t nseg, int dim, int closed)
+{
+	struct loft_curve c;
+	struct loft_error err;
+	double energy, radius, u;
+	long count;
+
+	loft_curve_cubic(seg, nseg, dim, closed, &c);
+	if (loft_curve_energy(&c, &energy, &err) == 0)
+		fprintf(msg, ", bending energy %.6g", energy);
+	else
+		fprintf(msg, ", bending energy: %s", err.msg);
+	if (loft_curve_min_radius(&c, &radius, &u, &err) != 0)
+		fprintf(msg, ", smallest radius: %s", err.msg);
+	else if (radius == 0)
+		fprintf(msg, ", no curvature");
+	else
+		fprintf(msg, ", smallest radius %.6g at u = %.6g", radius, u);
+	if (dim == 2 && loft_curve_inflexions(&c, &count, &err) == 0)
+		fprintf(msg, ", %ld inflexion%s", count, count == 1 ? "" : "s");
+}
+
 /* -v: how the fit went, and whether the other sign rule agrees. */
 static void
 report(struct loft_run *run, const struct loft_record *rec, size_t n,
@@ -209,6 +234,7 @@ report(struct loft_run *run, const struct loft_record *rec, size_t n,
 	    rec->file, rec->line, n, info->iterations,
 	    info->iterations == 1 ? "" : "s", info->change,
 	    loft_curvature_jump(o->seg, nseg, dim, fit->closed));
+	measures(run->msg, o->seg, nseg, dim, fit->closed);
 	if (fit->method == LOFT_MANNING) {
 		alt.sign = fit->sign == LOFT_SIGN_POSITIVE ?
 		    LOFT_SIGN_TURN : LOFT_SIGN_POSITIVE;

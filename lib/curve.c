@@ -123,6 +123,22 @@ loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
 }
 
 void
+loft_curve_cubic(const double *seg, size_t nseg, int dim, int closed,
+    struct loft_curve *c)
+{
+	c->type = types[0].name;
+	c->coef = seg;
+	c->npieces = nseg;
+	c->npts = 0;
+	c->dim = dim;
+	c->rowlen = 4 * dim;
+	c->eval = types[0].eval;
+	c->eval_ctl = NULL;
+	c->bezier = types[0].bezier;
+	c->closed = closed != 0;
+}
+
+void
 loft_curve_eval(const struct loft_curve *c, size_t i, double u,
     double *p, double *d1, double *d2)
 {

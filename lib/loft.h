@@ -390,6 +390,14 @@ int loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
     struct loft_error *err);
 
 /*
+ * Fill c as the cubic curve of the nseg segments seg (rows of 4 dim
+ * numbers, as loft_fit writes them; dim 2 or 3), closed or not; c points
+ * into seg.
+ */
+void loft_curve_cubic(const double *seg, size_t nseg, int dim, int closed,
+    struct loft_curve *c);
+
+/*
  * Evaluate piece i at local parameter u in [0, 1]: point, first and
  * second derivatives with respect to u (any may be NULL).
  */

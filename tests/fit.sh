@@ -177,4 +177,27 @@ for k in insole dropped blob uneven; do
 	done
 done
 
+# ---- -v: the measures -----------------------------------------------------
+# The circle of radius 50: energy 2 pi / 50 = 0.125664 (to 1e-3, as
+# above), smallest radius 50 (to 1%), no inflexions.
+run "$B/splinefit -v $T/circle.knots"
+sed 's/.*bending energy \([^,]*\), smallest radius \([^ ]*\) at u = [^,]*, \([0-9]*\) inflexions$/\1 \2 \3/' \
+    "$T/err" | awk '{ exit !($1 > 0.125664 * (1 - 1e-3) && $1 < 0.125664 * (1 + 1e-3) &&
+    $2 > 49.5 && $2 < 50.5 && $3 == 0 && NF == 3) }' && ok ||
+    no "$what: $(cat "$T/err")"
+# the rectangle with corners: no energy, no curvature, no inflexions
+run "$B/splinefit -v $T/rect.knots"
+says "bending energy 0, no curvature, 0 inflexions"
+# the insole's energy is energy.awk's (Simpson, 400 a segment), to 1e-5
+run "$B/splinefit -v man/figures/insole.knots"
+$B/splinefit man/figures/insole.knots | $E >"$T/insole.e"
+sed 's/.*bending energy \([^,]*\),.*/\1/' "$T/err" | paste - "$T/insole.e" |
+    awk '{ d = $1 - $2; exit !(d < 1e-5 * $2 && -d < 1e-5 * $2) }' && ok ||
+    no "$what: $(cat "$T/err") against $(cat "$T/insole.e")"
+# a dart, four knots with a reflex one at (2,1): a simple closed curve
+# that bends the other way once has two inflexions
+printf '0 0\n2 1\n4 0\n2 3\n' >"$T/dart.knots"
+run "$B/splinefit -v $T/dart.knots"
+says ", 2 inflexions"
+
 finish fit
