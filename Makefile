@@ -60,6 +60,11 @@ check: all $(TESTS)
 bench: all $(BENCH)
 	@sh tests/bench/run.sh
 
+# make compare: splinefit's curves beside Manning's, the chord spline's,
+# Hobby's and (with libspiro) Spiro's on uneven closed knots (issue 13)
+compare: all
+	@sh tests/bench/compare.sh
+
 demo: all
 	bin/grade -s -3:4 man/figures/insole.knots | bin/splinefit | \
 	    bin/plot -l size > bin/insoles.svg
@@ -84,7 +89,7 @@ install: all
 clean:
 	rm -rf bin
 
-.PHONY: all check bench demo figures install clean
+.PHONY: all check bench compare demo figures install clean
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------

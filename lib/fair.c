@@ -25,13 +25,10 @@
 
 #include "internal.h"
 
-/* Steps: L-BFGS takes the insole within 1e-5 of its settled energy in 6
- * to 8; each costs a few O(n) passes, and the bench's 10^4 insoles must
- * stay within half GNU spline's time.  Always this many, unless no step
- * lowers E at all: a test of "settled" would stop one step sooner or
- * later for knots that differ only by rounding (the same knots in other
- * units), and the curves would differ by a step. */
-#define FAIR_STEPS 12
+/* Steps at most: L-BFGS takes the insole within 1e-4 of its settled
+ * energy in 6; each costs a few O(n) passes, and the bench's 10^4
+ * insoles must stay within half GNU spline's time. */
+#define FAIR_STEPS 6
 
 /* No step changes a log interval by more than this: a factor e, so a
  * step cannot jump across a fold of the energy into a worse valley. */
@@ -46,15 +43,34 @@
  * descent left free would swell loops out of the knots' reach. */
 #define FAIR_MAXMAG 3.0
 
+/* Nowhere slower than this fraction of the chord, or than the chord
+ * spline where it is slower: a cubic that nearly stops bends sharply
+ * there, in a spike the quadrature can miss. */
+#define FAIR_SLOW 0.25
+
 /* The pairs of steps L-BFGS remembers. */
 #define FAIR_MEMORY 4
+
+/* Records of more knots keep the chord-length spline, the descent's
+ * start: each step costs about a microsecond a knot, and on knots that
+ * dense the chord spline is within rounding of fair wherever they are
+ * even; a 10^6-knot outline must fit in under 2 s. */
+#define FAIR_MAXKNOTS 100000
+
+/* A step is quartered at most this many times before the descent
+ * settles: each try costs a whole spline. */
+#define FAIR_HALVINGS 4
 
 /* Armijo's fraction of the first-order decrease a step must achieve. */
 #define FAIR_ARMIJO 1e-4
 
-/* 4-point Gauss-Legendre on [0, 1]: exact to degree 7, and within 1e-5
- * relative of the energy of the segments of a fair curve; the descent
- * compares curves by this one rule, so it need not be closer. */
+/* 4-point Gauss-Legendre on [0, 1], on each of FAIR_PIECES equal parts
+ * of a segment: within 1e-5 relative of the energy of the segments of a
+ * fair curve.  A segment that turns sharply in a small part of it needs
+ * more: the descent's result is checked against the start with
+ * FAIR_CHECK parts (see loft__fit_fair). */
+#define FAIR_PIECES 2
+#define FAIR_CHECK 4
 #define GAUSS 4
 static const double gauss_u[GAUSS] = {
 	0.069431844202973712, 0.33000947820757187, 0.66999052179242813,
@@ -71,7 +87,7 @@ static const double gauss_w[GAUSS] = {
  * V^-5/2.  HUGE_VAL where the tangent vanishes.
  */
 static double
-segment_energy(const double *s, int dim, double *g, double *kmax)
+segment_energy(const double *s, int dim, int pieces, double *g, double *kmax)
 {
 	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
 	double c[LOFT_MAXDIM], e = 0;
@@ -79,8 +95,9 @@ segment_energy(const double *s, int dim, double *g, double *kmax)
 	vsub(c, b, a, dim);
 	if (g != NULL)
 		memset(g, 0, 2 * dim * sizeof *g);
-	for (int q = 0; q < GAUSS; q++) {
-		double u = gauss_u[q], a0 = 1 - 4 * u + 3 * u * u;
+	for (int q = 0; q < GAUSS * pieces; q++) {
+		double u = (q / GAUSS + gauss_u[q % GAUSS]) / pieces;
+		double wq = gauss_w[q % GAUSS] / pieces, a0 = 1 - 4 * u + 3 * u * u;
 		double a1 = -2 * u + 3 * u * u, gc = 6 * u - 6 * u * u;
 		double b0 = -4 + 6 * u, b1 = -2 + 6 * u, dc = 6 - 12 * u;
 		double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v, w, x, num, r;
@@ -96,7 +113,7 @@ segment_energy(const double *s, int dim, double *g, double *kmax)
 		if (!(v > 0))
 			return HUGE_VAL;
 		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
-		e += gauss_w[q] * num * r;
+		e += wq * num * r;
 		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
 		if (g == NULL)
 			continue;
@@ -105,8 +122,8 @@ segment_energy(const double *s, int dim, double *g, double *kmax)
 			    5 * num * r / v * p1[k];
 			double f2 = (2 * v * p2[k] - 2 * x * p1[k]) * r;
 
-			g[k] += gauss_w[q] * (f1 * a0 + f2 * b0);
-			g[dim + k] += gauss_w[q] * (f1 * a1 + f2 * b1);
+			g[k] += wq * (f1 * a0 + f2 * b0);
+			g[dim + k] += wq * (f1 * a1 + f2 * b1);
 		}
 	}
 	return e;
@@ -127,16 +144,52 @@ tame(const double *seg, size_t nseg, int dim)
 	return 1;
 }
 
+/*
+ * The largest curvature of the segments at FAIR_KSAMPLES + 1 even
+ * points of each, ends included: the cap is checked here too, not only
+ * at the quadrature points, or a descent could hide a sharp bend
+ * between them, where the quadrature does not see its energy.
+ */
+#define FAIR_KSAMPLES 8
+static double
+max_curvature(const double *seg, size_t nseg, int dim, double *slow)
+{
+	double big = 0;
+
+	*slow = HUGE_VAL;
+	for (size_t s = 0; s < nseg; s++) {
+		const double *q = seg + s * 4 * dim;
+		double c[LOFT_MAXDIM], w2;
+
+		vsub(c, q + dim, q, dim);
+		w2 = vdot(c, c, dim);
+		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
+			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], v, x, w;
+
+			loft_cubic_eval(q, dim, (double)j / FAIR_KSAMPLES,
+			    NULL, d1, d2);
+			v = vdot(d1, d1, dim);
+			w = vdot(d2, d2, dim);
+			x = vdot(d1, d2, dim);
+			if (!(v > 0))
+				return HUGE_VAL;
+			big = fmax(big, sqrt(fmax(v * w - x * x, 0) / (v * v * v)));
+			*slow = fmin(*slow, sqrt(v / w2));
+		}
+	}
+	return big;
+}
+
 /* The energy of all nseg segments, gradients into g unless NULL. */
 static double
-curve_energy(const double *seg, size_t nseg, int dim, double *g,
+curve_energy(const double *seg, size_t nseg, int dim, int pieces, double *g,
     double *kmax)
 {
 	double e = 0;
 
 	*kmax = 0;
 	for (size_t s = 0; s < nseg; s++)
-		e += segment_energy(seg + s * 4 * dim, dim,
+		e += segment_energy(seg + s * 4 * dim, dim, pieces,
 		    g ? g + s * 2 * dim : NULL, kmax);
 	return e;
 }
@@ -148,6 +201,7 @@ struct fair {
 	int dim;
 	double *seg, *work, *gseg;
 	double kcap;
+	double slow;            /* the least speed |P'| / chord allowed */
 	double e0;              /* the start's energy: E / e0 is descended,
 	                         * so steps do not depend on the units */
 };
@@ -157,7 +211,7 @@ struct fair {
 static double
 try_intervals(struct fair *f, const double *x, double *h)
 {
-	double e, kmax;
+	double e, kmax, slow;
 	struct loft_error err;
 
 	for (size_t s = 0; s < f->nseg; s++)
@@ -167,8 +221,12 @@ try_intervals(struct fair *f, const double *x, double *h)
 		return HUGE_VAL;
 	if (!tame(f->seg, f->nseg, f->dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, NULL, &kmax) / f->e0;
-	return kmax <= f->kcap && isfinite(e) ? e : HUGE_VAL;
+	e = curve_energy(f->seg, f->nseg, f->dim, FAIR_PIECES, NULL, &kmax) /
+	    f->e0;
+	if (!(kmax <= f->kcap) || !(max_curvature(f->seg, f->nseg, f->dim,
+	    &slow) <= f->kcap) || !(slow >= f->slow))
+		return HUGE_VAL;
+	return isfinite(e) ? e : HUGE_VAL;
 }
 
 /* dE/dx at the x last solved (h = exp(x)), into g. */
@@ -177,7 +235,7 @@ gradient(struct fair *f, const double *x, const double *h, double *g)
 {
 	double kmax;
 
-	curve_energy(f->seg, f->nseg, f->dim, f->gseg, &kmax);
+	curve_energy(f->seg, f->nseg, f->dim, FAIR_PIECES, f->gseg, &kmax);
 	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
@@ -265,7 +323,7 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		t = fmin(1, FAIR_MAXSTEP / big);
 		memcpy(xp, x, m * sizeof *x);
-		for (int half = 0; half < 10; half++, t *= 0.25) {
+		for (int half = 0; half < FAIR_HALVINGS; half++, t *= 0.25) {
 			for (size_t i = 0; i < m; i++)
 				x[i] = xp[i] + t * d[i];
 			en = try_intervals(f, x, h);
@@ -318,8 +376,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	size_t nseg = o->closed ? n : n - 1;
-	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 1 };
-	double *mem, *x, *h, e, kmax;
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, 1 };
+	double *mem, *x, *h, e, kmax, slow, fine;
 	int rc;
 
 	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3),
@@ -335,13 +393,25 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	for (size_t s = 0; s < nseg; s++)
 		h[s] = exp(x[s]);
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
-	if (rc == 0) {
-		e = curve_energy(seg, nseg, dim, NULL, &kmax);
+	if (rc == 0 && n <= FAIR_MAXKNOTS) {
+		e = curve_energy(seg, nseg, dim, FAIR_PIECES, NULL, &kmax);
 		/* the chord spline's largest curvature, less rounding */
-		f.kcap = kmax * (1 + 1e-9);
+		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim, &slow)) *
+		    (1 + 1e-9);
+		f.slow = fmin(FAIR_SLOW, slow);
 		f.e0 = e;
+		fine = curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, &kmax);
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
+		/* not fairer by the finer rule: the chord spline after all */
+		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, &kmax) <
+		    fine)) {
+			for (size_t s = 0; s < nseg; s++)
+				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
+				    dim);
+			rc = loft__cspline_h(o, p, n, dim, h, NULL, seg, f.work,
+			    err);
+		}
 		info->converged = 1;
 	}
 	free(mem);
