@@ -67,10 +67,12 @@
 /* 4-point Gauss-Legendre on [0, 1], on each of FAIR_PIECES equal parts
  * of a segment: within 1e-5 relative of the energy of the segments of a
  * fair curve.  A segment that turns sharply in a small part of it needs
- * more: the descent's result is checked against the start with
- * FAIR_CHECK parts (see loft__fit_fair). */
+ * more: FAIR_CHECK parts where the two differ on the start, and the
+ * descent's result is checked against the start with FAIR_FINE parts
+ * (see loft__fit_fair). */
 #define FAIR_PIECES 2
-#define FAIR_CHECK 4
+#define FAIR_CHECK 8
+#define FAIR_FINE 8
 #define GAUSS 4
 static const double gauss_u[GAUSS] = {
 	0.069431844202973712, 0.33000947820757187, 0.66999052179242813,
@@ -180,18 +182,33 @@ max_curvature(const double *seg, size_t nseg, int dim, double *slow)
 	return big;
 }
 
-/* The energy of all nseg segments, gradients into g unless NULL. */
+/* The energy of all nseg segments, gradients into g unless NULL; each
+ * segment in parts[s] parts, or pieces where parts is NULL. */
 static double
-curve_energy(const double *seg, size_t nseg, int dim, int pieces, double *g,
-    double *kmax)
+curve_energy(const double *seg, size_t nseg, int dim, int pieces,
+    const unsigned char *parts, double *g, double *kmax)
 {
 	double e = 0;
 
 	*kmax = 0;
 	for (size_t s = 0; s < nseg; s++)
-		e += segment_energy(seg + s * 4 * dim, dim, pieces,
-		    g ? g + s * 2 * dim : NULL, kmax);
+		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
+		    pieces, g ? g + s * 2 * dim : NULL, kmax);
 	return e;
+}
+
+/* The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
+ * where the two rules differ by more than 1e-4 of its energy. */
+static void
+choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts)
+{
+	for (size_t s = 0; s < nseg; s++) {
+		double k, a = segment_energy(seg + s * 4 * dim, dim,
+		    FAIR_PIECES, NULL, &k), b = segment_energy(seg + s * 4 * dim,
+		    dim, FAIR_CHECK, NULL, &k);
+
+		parts[s] = fabs(a - b) <= 1e-4 * b ? FAIR_PIECES : FAIR_CHECK;
+	}
 }
 
 struct fair {
@@ -202,6 +219,7 @@ struct fair {
 	double *seg, *work, *gseg;
 	double kcap;
 	double slow;            /* the least speed |P'| / chord allowed */
+	unsigned char *parts;   /* the quadrature's parts of each segment */
 	double e0;              /* the start's energy: E / e0 is descended,
 	                         * so steps do not depend on the units */
 };
@@ -221,7 +239,7 @@ try_intervals(struct fair *f, const double *x, double *h)
 		return HUGE_VAL;
 	if (!tame(f->seg, f->nseg, f->dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, FAIR_PIECES, NULL, &kmax) /
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax) /
 	    f->e0;
 	if (!(kmax <= f->kcap) || !(max_curvature(f->seg, f->nseg, f->dim,
 	    &slow) <= f->kcap) || !(slow >= f->slow))
@@ -235,7 +253,7 @@ gradient(struct fair *f, const double *x, const double *h, double *g)
 {
 	double kmax;
 
-	curve_energy(f->seg, f->nseg, f->dim, FAIR_PIECES, f->gseg, &kmax);
+	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax);
 	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
@@ -376,12 +394,12 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	size_t nseg = o->closed ? n : n - 1;
-	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, 1 };
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
 	double *mem, *x, *h, e, kmax, slow, fine;
 	int rc;
 
-	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3),
-	    sizeof *mem);
+	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
+	    n / sizeof *mem + 1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	f.work = mem;
@@ -394,17 +412,19 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		h[s] = exp(x[s]);
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0 && n <= FAIR_MAXKNOTS) {
-		e = curve_energy(seg, nseg, dim, FAIR_PIECES, NULL, &kmax);
+		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
+		choose_parts(seg, nseg, dim, f.parts);
+		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax);
 		/* the chord spline's largest curvature, less rounding */
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim, &slow)) *
 		    (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW, slow);
 		f.e0 = e;
-		fine = curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, &kmax);
+		fine = curve_energy(seg, nseg, dim, FAIR_FINE, NULL, NULL, &kmax);
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
 		/* not fairer by the finer rule: the chord spline after all */
-		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, &kmax) <
+		if (!(curve_energy(seg, nseg, dim, FAIR_FINE, NULL, NULL, &kmax) <
 		    fine)) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
