@@ -34,18 +34,18 @@
  * step cannot jump across a fold of the energy into a worse valley. */
 #define FAIR_MAXSTEP 1.0
 
-/* Stop once a step lowers E by less than this fraction of it: below
- * what the eye or any fairness measure can tell. */
-#define FAIR_SETTLED 1e-6
+/* Stop once a step lowers E by less than this fraction of it: the
+ * steps after gain less than the eye can tell, and cost as much. */
+#define FAIR_SETTLED 1e-4
 
 /* No tangent vector longer than this many times its segment's chord: a
  * curve's energy falls as it grows (a circle's is 2 pi / R), so a
  * descent left free would swell loops out of the knots' reach. */
 #define FAIR_MAXMAG 3.0
 
-/* Nowhere slower than this fraction of the chord, or than the chord
- * spline where it is slower: a cubic that nearly stops bends sharply
- * there, in a spike the quadrature can miss. */
+/* Nowhere slower than this fraction of the chord (at the quadrature
+ * points), or than the chord spline where it is slower: a cubic that
+ * nearly stops bends sharply there, in a spike the quadrature can miss. */
 #define FAIR_SLOW 0.25
 
 /* The pairs of steps L-BFGS remembers. */
@@ -68,11 +68,10 @@
  * of a segment: within 1e-5 relative of the energy of the segments of a
  * fair curve.  A segment that turns sharply in a small part of it needs
  * more: FAIR_CHECK parts where the two differ on the start, and the
- * descent's result is checked against the start with FAIR_FINE parts
+ * descent's result is checked against the start with FAIR_CHECK parts
  * (see loft__fit_fair). */
 #define FAIR_PIECES 2
 #define FAIR_CHECK 8
-#define FAIR_FINE 8
 #define GAUSS 4
 static const double gauss_u[GAUSS] = {
 	0.069431844202973712, 0.33000947820757187, 0.66999052179242813,
@@ -89,12 +88,14 @@ static const double gauss_w[GAUSS] = {
  * V^-5/2.  HUGE_VAL where the tangent vanishes.
  */
 static double
-segment_energy(const double *s, int dim, int pieces, double *g, double *kmax)
+segment_energy(const double *s, int dim, int pieces, double *g, double *kmax,
+    double *slow)
 {
 	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
-	double c[LOFT_MAXDIM], e = 0;
+	double c[LOFT_MAXDIM], e = 0, cc;
 
 	vsub(c, b, a, dim);
+	cc = vdot(c, c, dim);
 	if (g != NULL)
 		memset(g, 0, 2 * dim * sizeof *g);
 	for (int q = 0; q < GAUSS * pieces; q++) {
@@ -117,6 +118,8 @@ segment_energy(const double *s, int dim, int pieces, double *g, double *kmax)
 		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
 		e += wq * num * r;
 		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
+		if (slow != NULL)
+			*slow = fmin(*slow, v / cc);
 		if (g == NULL)
 			continue;
 		for (int k = 0; k < dim; k++) {
@@ -148,35 +151,27 @@ tame(const double *seg, size_t nseg, int dim)
 
 /*
  * The largest curvature of the segments at FAIR_KSAMPLES + 1 even
- * points of each, ends included: the cap is checked here too, not only
- * at the quadrature points, or a descent could hide a sharp bend
- * between them, where the quadrature does not see its energy.
+ * points of each, ends included: the cap of the descent (which checks
+ * it at the quadrature points) and the final check of its result.
  */
 #define FAIR_KSAMPLES 8
 static double
-max_curvature(const double *seg, size_t nseg, int dim, double *slow)
+max_curvature(const double *seg, size_t nseg, int dim)
 {
 	double big = 0;
 
-	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
-		const double *q = seg + s * 4 * dim;
-		double c[LOFT_MAXDIM], w2;
-
-		vsub(c, q + dim, q, dim);
-		w2 = vdot(c, c, dim);
 		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
 			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], v, x, w;
 
-			loft_cubic_eval(q, dim, (double)j / FAIR_KSAMPLES,
-			    NULL, d1, d2);
+			loft_cubic_eval(seg + s * 4 * dim, dim,
+			    (double)j / FAIR_KSAMPLES, NULL, d1, d2);
 			v = vdot(d1, d1, dim);
 			w = vdot(d2, d2, dim);
 			x = vdot(d1, d2, dim);
 			if (!(v > 0))
 				return HUGE_VAL;
 			big = fmax(big, sqrt(fmax(v * w - x * x, 0) / (v * v * v)));
-			*slow = fmin(*slow, sqrt(v / w2));
 		}
 	}
 	return big;
@@ -186,29 +181,36 @@ max_curvature(const double *seg, size_t nseg, int dim, double *slow)
  * segment in parts[s] parts, or pieces where parts is NULL. */
 static double
 curve_energy(const double *seg, size_t nseg, int dim, int pieces,
-    const unsigned char *parts, double *g, double *kmax)
+    const unsigned char *parts, double *g, double *kmax, double *slow)
 {
 	double e = 0;
 
 	*kmax = 0;
+	if (slow != NULL)
+		*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++)
 		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
-		    pieces, g ? g + s * 2 * dim : NULL, kmax);
+		    pieces, g ? g + s * 2 * dim : NULL, kmax, slow);
 	return e;
 }
 
 /* The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
- * where the two rules differ by more than 1e-4 of its energy. */
-static void
+ * where the two rules differ by more than 1e-4 of its energy.  Returns
+ * the start's energy by FAIR_CHECK parts. */
+static double
 choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts)
 {
+	double fine = 0;
+
 	for (size_t s = 0; s < nseg; s++) {
 		double k, a = segment_energy(seg + s * 4 * dim, dim,
-		    FAIR_PIECES, NULL, &k), b = segment_energy(seg + s * 4 * dim,
-		    dim, FAIR_CHECK, NULL, &k);
+		    FAIR_PIECES, NULL, &k, NULL), b = segment_energy(seg + s *
+		    4 * dim, dim, FAIR_CHECK, NULL, &k, NULL);
 
 		parts[s] = fabs(a - b) <= 1e-4 * b ? FAIR_PIECES : FAIR_CHECK;
+		fine += b;
 	}
+	return fine;
 }
 
 struct fair {
@@ -218,7 +220,7 @@ struct fair {
 	int dim;
 	double *seg, *work, *gseg;
 	double kcap;
-	double slow;            /* the least speed |P'| / chord allowed */
+	double slow;            /* the least (|P'| / chord)^2 allowed */
 	unsigned char *parts;   /* the quadrature's parts of each segment */
 	double e0;              /* the start's energy: E / e0 is descended,
 	                         * so steps do not depend on the units */
@@ -239,10 +241,9 @@ try_intervals(struct fair *f, const double *x, double *h)
 		return HUGE_VAL;
 	if (!tame(f->seg, f->nseg, f->dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax) /
-	    f->e0;
-	if (!(kmax <= f->kcap) || !(max_curvature(f->seg, f->nseg, f->dim,
-	    &slow) <= f->kcap) || !(slow >= f->slow))
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax,
+	    &slow) / f->e0;
+	if (!(kmax <= f->kcap) || !(slow >= f->slow))
 		return HUGE_VAL;
 	return isfinite(e) ? e : HUGE_VAL;
 }
@@ -253,7 +254,8 @@ gradient(struct fair *f, const double *x, const double *h, double *g)
 {
 	double kmax;
 
-	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax);
+	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
+	    NULL);
 	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
@@ -413,19 +415,17 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0 && n <= FAIR_MAXKNOTS) {
 		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
-		choose_parts(seg, nseg, dim, f.parts);
-		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax);
+		fine = choose_parts(seg, nseg, dim, f.parts);
+		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax, &slow);
 		/* the chord spline's largest curvature, less rounding */
-		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim, &slow)) *
-		    (1 + 1e-9);
-		f.slow = fmin(FAIR_SLOW, slow);
+		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
+		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
-		fine = curve_energy(seg, nseg, dim, FAIR_FINE, NULL, NULL, &kmax);
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
 		/* not fairer by the finer rule: the chord spline after all */
-		if (!(curve_energy(seg, nseg, dim, FAIR_FINE, NULL, NULL, &kmax) <
-		    fine)) {
+		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
+		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap)) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);
