@@ -9,7 +9,7 @@ N=${N:-200}
 CC=${CC:-cc}
 mkdir -p $W || exit 1
 if [ -f /usr/include/spiroentrypoints.h ] &&
-    $CC -std=c99 -O2 -DHAVE_SPIRO -o $W/compare tests/bench/compare.c \
+    $CC -std=c99 -O2 -Wall -Wextra -DHAVE_SPIRO -o $W/compare tests/bench/compare.c \
     bin/libloft.a -lspiro -lm 2>/dev/null; then
 	:
 else
