@@ -12,8 +12,9 @@
  * dE/dP' in closed form, dE/dh by the adjoint of the system (cspline.c).
  * The descent takes L-BFGS steps, each kept only when it lowers E enough
  * (Armijo) and keeps every curvature within the chord spline's largest;
- * so the curve is never worse than the chord-length spline, and never
- * more sharply bent.
+ * the result must be fairer than the chord-length spline by a finer
+ * quadrature, no more sharply bent, and (in the plane) cross itself only
+ * where the chord spline does, or the chord spline is written instead.
  *
  * The free second-derivative jumps make the family every G2 cubic curve
  * through the knots with those end tangents: the tangent magnitudes at a
@@ -391,6 +392,117 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 	return it;
 }
 
+/* Points a segment of the polyline the crossing test follows. */
+#define FAIR_POLY 6
+
+/* Whether the edges ab and cd cross at a point inside both. */
+static int
+edges_cross(const double *a, const double *b, const double *c, const double *d)
+{
+	double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+	double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+	double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+	double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+
+	return ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0)) &&
+	    ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0));
+}
+
+/* The cells of a grid of g x g over [lo, lo + g w) that edge e covers. */
+static void
+edge_cells(const double *pt, size_t np, size_t e, const double *lo, double w,
+    size_t g, size_t *c0, size_t *c1)
+{
+	const double *a = pt + 2 * e, *b = pt + 2 * ((e + 1) % np);
+
+	for (int k = 0; k < 2; k++) {
+		double x0 = (fmin(a[k], b[k]) - lo[k]) / w;
+		double x1 = (fmax(a[k], b[k]) - lo[k]) / w;
+
+		c0[k] = x0 < 0 ? 0 : x0 >= g ? g - 1 : (size_t)x0;
+		c1[k] = x1 < 0 ? 0 : x1 >= g ? g - 1 : (size_t)x1;
+	}
+}
+
+/*
+ * Whether the plane curve of the segments crosses itself, as the
+ * polyline of FAIR_POLY points a segment does: edges sorted into a grid
+ * of about one cell an edge, pairs tested within cells.  -1: out of
+ * memory (not known).
+ */
+static int
+crosses(const double *seg, size_t nseg, int closed)
+{
+	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
+	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, total = 0;
+	double *pt = calloc(2 * np, sizeof *pt), lo[2], hi[2], w;
+	int found = 0;
+
+	if (pt == NULL)
+		return -1;
+	for (size_t i = 0; i < np; i++) {
+		size_t s = i / FAIR_POLY < nseg ? i / FAIR_POLY : nseg - 1;
+
+		loft_cubic_eval(seg + 8 * s, 2, (double)(i - s * FAIR_POLY) /
+		    FAIR_POLY, pt + 2 * i, NULL, NULL);
+	}
+	lo[0] = hi[0] = pt[0];
+	lo[1] = hi[1] = pt[1];
+	for (size_t i = 1; i < np; i++)
+		for (int k = 0; k < 2; k++) {
+			lo[k] = fmin(lo[k], pt[2 * i + k]);
+			hi[k] = fmax(hi[k], pt[2 * i + k]);
+		}
+	w = fmax(hi[0] - lo[0], hi[1] - lo[1]) / g * (1 + 1e-9);
+	cnt = calloc(g * g + 1, sizeof *cnt);
+	for (size_t e = 0; cnt != NULL && e < ne; e++) {
+		size_t c0[2], c1[2];
+
+		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		for (size_t y = c0[1]; y <= c1[1]; y++)
+			for (size_t x = c0[0]; x <= c1[0]; x++)
+				cnt[y * g + x + 1]++, total++;
+	}
+	list = cnt != NULL && w > 0 ? malloc((total + 1) * sizeof *list) : NULL;
+	if (list == NULL) {
+		free(pt);
+		free(cnt);
+		return w > 0 ? -1 : 0;
+	}
+	for (size_t c = 1; c <= g * g; c++)
+		cnt[c] += cnt[c - 1];
+	for (size_t e = 0; e < ne; e++) {
+		size_t c0[2], c1[2];
+
+		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		for (size_t y = c0[1]; y <= c1[1]; y++)
+			for (size_t x = c0[0]; x <= c1[0]; x++)
+				list[cnt[y * g + x]++] = e;
+	}
+	/* cnt[c] is now the end of cell c's edges, cnt[c - 1] its start */
+	for (size_t c = 0; !found && c < g * g; c++) {
+		size_t from = c > 0 ? cnt[c - 1] : 0;
+
+		for (size_t i = from; !found && i < cnt[c]; i++)
+			for (size_t j = i + 1; !found && j < cnt[c]; j++) {
+				size_t a = list[i], b = list[j];
+
+				if (a > b)
+					a = list[j], b = list[i];
+				if (b == a + 1 || a == b ||
+				    (closed && a == 0 && b == ne - 1))
+					continue;
+				found = edges_cross(pt + 2 * a,
+				    pt + 2 * ((a + 1) % np), pt + 2 * b,
+				    pt + 2 * ((b + 1) % np));
+			}
+	}
+	free(pt);
+	free(cnt);
+	free(list);
+	return found;
+}
+
 int
 loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -398,7 +510,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	size_t nseg = o->closed ? n : n - 1;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
 	double *mem, *x, *h, e, kmax, slow, fine;
-	int rc;
+	int rc, loops;
 
 	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
 	    n / sizeof *mem + 1, sizeof *mem);
@@ -421,11 +533,14 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
+		loops = dim == 2 ? crosses(seg, nseg, o->closed) : 0;
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
-		/* not fairer by the finer rule: the chord spline after all */
+		/* not fairer by the finer rule, more bent, or crossing itself
+		 * where the start does not: the chord spline after all */
 		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
-		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap)) {
+		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
+		    (loops == 0 && crosses(seg, nseg, o->closed) == 1)) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);

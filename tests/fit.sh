@@ -177,6 +177,26 @@ for k in insole dropped blob uneven; do
 	done
 done
 
+# Nor does it cross itself where the chord spline does not: the polyline
+# of 16 points a segment, every pair of edges but neighbours, in awk.
+crossings() {
+	$B/sample -n 16 | awk 'NF == 2 { x[n] = $1; y[n] = $2; n++ }
+	function o(a, b, c) { return (x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a]) }
+	END { n--   # the last point repeats the first
+		for (i = 0; i < n; i++) for (j = i + 2; j < n; j++) {
+			if (i == 0 && j == n - 1) continue
+			a = o(i, i + 1, j); b = o(i, i + 1, (j + 1) % n)
+			c = o(j, (j + 1) % n, i); d = o(j, (j + 1) % n, i + 1)
+			if (a * b < 0 && c * d < 0) k++ }
+		print k + 0 }'
+}
+for k in insole dropped blob uneven; do
+	f=$($B/splinefit "$T/$k.knots" | crossings)
+	c=$($B/splinefit -m chord "$T/$k.knots" | crossings)
+	[ "$f" -eq 0 ] || [ "$c" -gt 0 ] && ok ||
+	    no "fair $k: $f crossings where the chord spline has $c"
+done
+
 # ---- -v: the measures -----------------------------------------------------
 # The circle of radius 50: energy 2 pi / 50 = 0.125664 (to 1e-3, as
 # above), smallest radius 50 (to 3%: cubics through 12 knots of a circle
