@@ -424,14 +424,10 @@ edge_cells(const double *pt, size_t np, size_t e, const double *lo, double w,
 	}
 }
 
-/*
- * Whether the plane curve of the segments crosses itself, as the
- * polyline of FAIR_POLY points a segment does: edges sorted into a grid
- * of about one cell an edge, pairs tested within cells.  -1: out of
- * memory (not known).
- */
-static int
-crosses(const double *seg, size_t nseg, int closed)
+/* Edges sorted into a grid of about one cell an edge, pairs tested
+ * within cells: O(n) for a curve of even speed. */
+int
+loft_fit_crosses(const double *seg, size_t nseg, int closed)
 {
 	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
 	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, total = 0;
@@ -533,14 +529,14 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
-		loops = dim == 2 ? crosses(seg, nseg, o->closed) : 0;
+		loops = dim == 2 ? loft_fit_crosses(seg, nseg, o->closed) : 0;
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
 		/* not fairer by the finer rule, more bent, or crossing itself
 		 * where the start does not: the chord spline after all */
 		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
 		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
-		    (loops == 0 && crosses(seg, nseg, o->closed) == 1)) {
+		    (loops == 0 && loft_fit_crosses(seg, nseg, o->closed) == 1)) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);

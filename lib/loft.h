@@ -358,6 +358,14 @@ double loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed);
 double loft_tangent_distance(const double *a, const double *b, size_t nseg,
     int dim);
 
+/*
+ * Whether the plane curve of the nseg segments seg (rows of 8 numbers,
+ * as loft_fit writes them; nseg > 0) crosses itself, closed or not: 1
+ * where the polyline of 6 points a segment has two edges, not
+ * neighbours, that cross; 0 where it has none; -1 when out of memory.
+ */
+int loft_fit_crosses(const double *seg, size_t nseg, int closed);
+
 /* ------------------------------------------------------------------ */
 /* Curves of any record type, for programs that evaluate them (curve.c) */
 

@@ -12,7 +12,7 @@
  *
  * For each method and set: the bending energy (loft_curve_energy of the
  * method's cubic pieces) over that of the fairest of the peers (Spiro,
- * Hobby, chord), a self-crossing (of 24 points a piece) where the chord
+ * Hobby, chord), a self-crossing (loft_fit_crosses) where the chord
  * spline has none, a failure.  Hobby's curves are made here from his
  * equations (Hobby 1986, as in Knuth's METAFONT: tension 1, the cyclic
  * system for the angles, his velocity function); Spiro's by libspiro.
@@ -34,7 +34,6 @@
 
 #define MAXK 64                 /* knots a set */
 #define MAXSEG 4096             /* pieces a curve (Spiro subdivides) */
-#define SAMPLES 24
 enum { FAIR, MANNING, CHORD, HOBBY, SPIRO, NMETHOD };
 static const char *const names[NMETHOD] = { "loft default", "-m manning",
     "-m chord", "Hobby", "Spiro G2" };
@@ -274,40 +273,6 @@ spiro(const double (*k)[2], int n, double *seg, int max)
 /* ---- measures --------------------------------------------------------- */
 
 static int
-cross(const double *a, const double *b, const double *c, const double *d)
-{
-	double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-	double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-	double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
-	double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
-
-	return d1 * d2 < 0 && d3 * d4 < 0;
-}
-
-/* Whether the closed curve of nseg pieces crosses itself. */
-static int
-self_crossing(const double *seg, int nseg)
-{
-	static double pt[MAXSEG * SAMPLES][2];
-	int np = 0;
-	struct loft_curve c;
-
-	loft_curve_cubic(seg, nseg, 2, 1, &c);
-	for (int i = 0; i < nseg && np < MAXSEG * SAMPLES; i++)
-		for (int j = 0; j < SAMPLES; j++)
-			loft_curve_eval(&c, i, (double)j / SAMPLES, pt[np++],
-			    NULL, NULL);
-	for (int i = 0; i < np; i++)
-		for (int j = i + 2; j < np; j++) {
-			if (i == 0 && j == np - 1)
-				continue;
-			if (cross(pt[i], pt[i + 1], pt[j], pt[(j + 1) % np]))
-				return 1;
-		}
-	return 0;
-}
-
-static int
 cmp(const void *a, const void *b)
 {
 	double x = *(const double *)a, y = *(const double *)b;
@@ -375,7 +340,7 @@ run(const char *file)
 				e[m] = HUGE_VAL;
 				continue;
 			}
-			looped[m] = self_crossing(seg, ns);
+			looped[m] = loft_fit_crosses(seg, ns, 1) == 1;
 			if (m == CHORD)
 				chordloop = looped[m];
 		}
