@@ -508,6 +508,13 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	double *mem, *x, *h, e, kmax, slow, fine;
 	int rc, loops;
 
+	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
+		struct loft_fit_opts co = *o;
+
+		co.method = LOFT_CHORD;
+		info->converged = 1;
+		return loft__fit_cspline(&co, p, n, dim, seg, err);
+	}
 	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
 	    n / sizeof *mem + 1, sizeof *mem);
 	if (mem == NULL)
@@ -521,7 +528,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	for (size_t s = 0; s < nseg; s++)
 		h[s] = exp(x[s]);
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
-	if (rc == 0 && n <= FAIR_MAXKNOTS) {
+	if (rc == 0) {
 		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
 		fine = choose_parts(seg, nseg, dim, f.parts);
 		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax, &slow);
