@@ -19,7 +19,7 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/grade.o bin/obj/outfiles.o \
           bin/obj/offset.o \
           bin/obj/bernstein.o bin/obj/arclen.o bin/obj/measure.o \
-          bin/obj/flatten.o
+          bin/obj/flatten.o bin/obj/merge.o bin/obj/fair.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)
@@ -64,6 +64,11 @@ check: all $(TESTS)
 bench: all $(BENCH)
 	@sh tests/bench/run.sh
 
+# make compare: splinefit's curves beside Manning's, the chord spline's,
+# Hobby's and (with libspiro) Spiro's on uneven closed knots (issue 13)
+compare: all
+	@sh tests/bench/compare.sh
+
 demo: all
 	bin/grade -r -3:4 man/figures/insole.knots | bin/splinefit | \
 	    bin/plot -l size > bin/insoles.svg
@@ -95,7 +100,7 @@ ifneq ($(filter clean,$(MAKECMDGOALS)),)
 .NOTPARALLEL:
 endif
 
-.PHONY: all check bench demo figures install clean
+.PHONY: all check bench compare demo figures install clean
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------

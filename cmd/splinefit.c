@@ -2,6 +2,7 @@
  * splinefit: fit a fair spline through each record of knots (Manning 1973)
  * and write it as a cubic record.
  */
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -16,16 +17,20 @@ struct opts {
 	struct loft_fit_opts fit;
 	int start_dim, end_dim;         /* coordinates given with -S, -E */
 	int verbose;
+	double merge;                   /* -d, or -1: the default distance */
 	double *seg, *other;            /* scratch, grown as records need */
+	double *knots;                  /* the knots kept after merging */
+	size_t *keep, *into, *corner;   /* their rows, where each row went,
+	                                 * the corners */
 	size_t segcap;
 };
 
 static const char usage_text[] =
     "usage: splinefit [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-a alpha] "
     "[-k positive|turn]\n"
-    "                 [-m manning|ferguson|chord] [-t tol] [-i maxiter] "
-    "[-p digits] [-v]\n"
-    "                 [file ...]\n";
+    "                 [-m fair|manning|ferguson|chord] [-t tol] [-i maxiter] "
+    "[-p digits]\n"
+    "                 [-v] [-d dist] [file ...]\n";
 
 static void
 usage(int status)
@@ -65,27 +70,155 @@ record_tangent(const struct loft_record *rec, const char *key, int dim,
 	return 0;
 }
 
+/* Room for the segments of n knots of dim coordinates, twice, and for
+ * the knots, their rows and corners. */
 static int
-grow_scratch(struct opts *o, size_t need, struct loft_error *err)
+grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 {
-	double *a, *b;
+	size_t need = 4 * (size_t)dim * n;
+	void *v;
 
 	if (need <= o->segcap)
 		return 0;
-	a = realloc(o->seg, need * sizeof *a);
-	if (a != NULL)
-		o->seg = a;
-	b = a ? realloc(o->other, need * sizeof *b) : NULL;
-	if (b == NULL)
+	if ((v = realloc(o->seg, need * sizeof *o->seg)) != NULL)
+		o->seg = v;
+	if (v && (v = realloc(o->other, need * sizeof *o->other)) != NULL)
+		o->other = v;
+	if (v && (v = realloc(o->knots, need / 4 * sizeof *o->knots)) != NULL)
+		o->knots = v;
+	if (v && (v = realloc(o->keep, n * sizeof *o->keep)) != NULL)
+		o->keep = v;
+	if (v && (v = realloc(o->into, n * sizeof *o->into)) != NULL)
+		o->into = v;
+	if (v && (v = realloc(o->corner, n * sizeof *o->corner)) != NULL)
+		o->corner = v;
+	if (v == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	o->other = b;
 	o->segcap = need;
 	return 0;
 }
 
+/*
+ * The corners=i,j,... attribute: 1-based knot numbers of the record, in
+ * increasing order, into o->corner as 0-based rows; their count in *nc.
+ */
+static int
+record_corners(struct opts *o, const struct loft_record *rec, size_t *nc,
+    struct loft_error *err)
+{
+	const char *v = loft_attr(rec, "corners"), *s = v;
+	char word[32];
+
+	*nc = 0;
+	while (v != NULL) {
+		size_t len = strcspn(s, ",");
+		long k;
+
+		if (len == 0 || len >= sizeof word)
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "corners=%s: want knot numbers separated by "
+			    "commas", v);
+		memcpy(word, s, len);
+		word[len] = '\0';
+		if (loft_parse_int(word, 1, (long)rec->nrows, &k, err) != 0)
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "corners=%s: '%s' is not a knot number from 1 to %zu",
+			    v, word, rec->nrows);
+		if (*nc > 0 && (size_t)k - 1 <= o->corner[*nc - 1])
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "corners=%s: corner %ld %s", v, k,
+			    (size_t)k - 1 == o->corner[*nc - 1] ? "is repeated" :
+			    "comes after a later one: list corners in order");
+		o->corner[(*nc)++] = (size_t)k - 1;
+		if (s[len] == '\0')
+			break;
+		s += len + 1;
+	}
+	return 0;
+}
+
+/*
+ * Merge the knots nearer than dist into o->knots, the rows kept in
+ * o->keep, the kept knot each row is in o->into; the corners follow
+ * their knots.  Returns the count kept.
+ */
+static size_t
+merge(struct opts *o, const struct loft_record *rec, int closed, double dist,
+    size_t *nc)
+{
+	int dim = rec->ncols;
+	size_t m = loft_merge_knots(rec->num, rec->nrows, dim, closed, dist,
+	    o->merge < 0, o->keep, o->into), c = 0;
+
+	for (size_t i = 0; i < m; i++)
+		memcpy(o->knots + i * dim, rec->num + o->keep[i] * dim,
+		    dim * sizeof *o->knots);
+	/* in order but for the knots that close the curve, now knot 1 */
+	for (size_t j = 0; j < *nc; j++) {
+		size_t to = o->into[o->corner[j]];
+
+		if (c == 0 || to > o->corner[c - 1]) {
+			o->corner[c++] = to;
+		} else if (to == 0 && o->corner[0] != 0) {
+			memmove(o->corner + 1, o->corner, c * sizeof *o->corner);
+			o->corner[0] = 0;
+			c++;
+		}
+	}
+	*nc = c;
+	return m;
+}
+
+/* The notes on the knots merged, once the record is fitted. */
+static void
+merge_notes(struct loft_run *run, const struct loft_record *rec, size_t m,
+    double dist)
+{
+	struct opts *o = run->ctx;
+
+	for (size_t i = 0, k = 0; i < rec->nrows; i++) {
+		size_t to = o->into[i];
+
+		if (k < m && o->keep[k] == i) {
+			k++;
+			continue;
+		}
+		fprintf(run->msg, "splinefit: %s:%ld: knot %zu is nearer than "
+		    "%.3g to knot %zu (line %ld)%s: merged into it\n", rec->file,
+		    loft_row_line(rec, (long)i), i + 1, dist, o->keep[to] + 1,
+		    loft_row_line(rec, (long)o->keep[to]), to == 0 && i > 0 &&
+		    (k == m) ? ", closing the curve" : "");
+	}
+}
+
+/* -v: the curve's bending energy, smallest radius of curvature and
+ * where, and its inflexions (of a plane curve). */
+static void
+measures(FILE *msg, const double *seg, size_t nseg, int dim, int closed)
+{
+	struct loft_curve c;
+	struct loft_error err;
+	double energy, radius, u;
+	long count;
+
+	loft_curve_cubic(&c, seg, nseg, dim, closed);
+	if (loft_curve_energy(&c, &energy, &err) == 0)
+		fprintf(msg, ", bending energy %.6g", energy);
+	else
+		fprintf(msg, ", bending energy: %s", err.msg);
+	if (loft_curve_min_radius(&c, &radius, &u, &err) != 0)
+		fprintf(msg, ", smallest radius: %s", err.msg);
+	else if (radius == 0)
+		fprintf(msg, ", no curvature");
+	else
+		fprintf(msg, ", smallest radius %.6g at u = %.6g", radius, u);
+	if (dim == 2 && loft_curve_inflexions(&c, &count, &err) == 0)
+		fprintf(msg, ", %ld inflexion%s", count, count == 1 ? "" : "s");
+}
+
 /* -v: how the fit went, and whether the other sign rule agrees. */
 static void
-report(struct loft_run *run, const struct loft_record *rec,
+report(struct loft_run *run, const struct loft_record *rec, size_t n,
     const struct loft_fit_opts *fit, const struct loft_fit_info *info,
     size_t nseg)
 {
@@ -98,13 +231,14 @@ report(struct loft_run *run, const struct loft_record *rec,
 
 	fprintf(run->msg, "splinefit: %s:%ld: %zu knots, %d iteration%s, "
 	    "converged (tangent change %.2g), curvature jump %.2g",
-	    rec->file, rec->line, rec->nrows, info->iterations,
+	    rec->file, rec->line, n, info->iterations,
 	    info->iterations == 1 ? "" : "s", info->change,
 	    loft_curvature_jump(o->seg, nseg, dim, fit->closed));
+	measures(run->msg, o->seg, nseg, dim, fit->closed);
 	if (fit->method == LOFT_MANNING) {
 		alt.sign = fit->sign == LOFT_SIGN_POSITIVE ?
 		    LOFT_SIGN_TURN : LOFT_SIGN_POSITIVE;
-		if (loft_fit(&alt, rec->num, rec->nrows, dim, o->other,
+		if (loft_fit(&alt, o->knots, n, dim, o->other,
 		    &ainfo, &aerr) != 0)
 			snprintf(other, sizeof other, "fails (%s)", aerr.msg);
 		else if (loft_tangent_distance(o->seg, o->other, nseg, dim) >
@@ -124,12 +258,13 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
 {
 	static const char *const consumed[] = { "start", "end", "closed",
-	    NULL };
+	    "corners", NULL };
 	struct opts *o = run->ctx;
 	struct loft_fit_opts fit = o->fit;
 	struct loft_fit_info info;
 	int dim = rec->ncols, rc;
-	size_t n = rec->nrows, nseg;
+	size_t n = rec->nrows, nseg, m, nc;
+	double dist;
 
 	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: splinefit "
@@ -145,13 +280,28 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	    record_tangent(rec, "end", dim, o->end_dim, &fit.have_end,
 	    fit.end, err) != 0))
 		return LOFT_EINPUT;
-	if (grow_scratch(o, 4 * (size_t)dim * n, err) != 0)
+	if (grow_scratch(o, n, dim, err) != 0)
 		return LOFT_ENOMEM;
-	if ((rc = loft_fit(&fit, rec->num, n, dim, o->seg, &info, err)) != 0)
+	if (record_corners(o, rec, &nc, err) != 0)
+		return LOFT_EINPUT;
+	dist = o->merge >= 0 ? o->merge : loft_merge_distance(rec->num, n, dim);
+	m = merge(o, rec, fit.closed, dist, &nc);
+	if (m < n && m < (fit.closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN))
+		return loft_fail(err, LOFT_EGEOM, -1, "%zu knot%s left after "
+		    "merging knots nearer than %.3g: a%s curve needs at least "
+		    "%d", m, m == 1 ? "" : "s", dist, fit.closed ? " closed" :
+		    "n open", fit.closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN);
+	fit.corner = o->corner;
+	fit.ncorner = nc;
+	if ((rc = loft_fit(&fit, o->knots, m, dim, o->seg, &info, err)) != 0) {
+		if (err->row >= 0 && (size_t)err->row < m)
+			err->row = (long)o->keep[err->row];
 		return rc;
-	nseg = fit.closed ? n : n - 1;
+	}
+	nseg = fit.closed ? m : m - 1;
+	merge_notes(run, rec, m, dist);
 	if (o->verbose)
-		report(run, rec, &fit, &info, nseg);
+		report(run, rec, m, &fit, &info, nseg);
 	loft_put_type(&run->w, "cubic");
 	loft_put_attr(&run->w, "closed", fit.closed ? "1" : "0");
 	loft_put_attrs_except(&run->w, rec, consumed);
@@ -187,9 +337,9 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const methods[] = { "manning", "ferguson", "chord",
-	    NULL };
+	    "fair", NULL };
 	static const char *const signs[] = { "positive", "turn", NULL };
-	struct opts o = { 0 };
+	struct opts o = { .merge = -1 };
 	struct loft_run run = { .prog = "splinefit", .out = stdout,
 	    .msg = stderr, .handle = fit_record, .ctx = &o };
 	struct loft_error err;
@@ -197,7 +347,7 @@ main(int argc, char *argv[])
 	long whole;
 
 	loft_fit_defaults(&o.fit);
-	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:vh")) != -1) {
+	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:vh")) != -1) {
 		switch (c) {
 		case 'o': o.fit.closed = 0; break;
 		case 'S': parse_vector(c, optarg, o.fit.start,
@@ -216,6 +366,8 @@ main(int argc, char *argv[])
 		    o.fit.maxiter = whole; break;
 		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
 		    run.w.digits = whole; break;
+		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
+		    &err); break;
 		case 'v': o.verbose = 1; break;
 		case 'h': usage(0); break;
 		default: usage(2);
@@ -231,6 +383,10 @@ main(int argc, char *argv[])
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);
 	free(o.other);
+	free(o.knots);
+	free(o.keep);
+	free(o.into);
+	free(o.corner);
 	return status;
 }
 #endif

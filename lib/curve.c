@@ -147,7 +147,7 @@ loft_curve_cubic(struct loft_curve *c, const double *seg, size_t nseg, int dim,
 	c->eval = t->eval;
 	c->eval_ctl = NULL;
 	c->bezier = t->bezier;
-	c->closed = closed;
+	c->closed = closed != 0;
 }
 
 int

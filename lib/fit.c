@@ -24,7 +24,7 @@ void
 loft_fit_defaults(struct loft_fit_opts *o)
 {
 	memset(o, 0, sizeof *o);
-	o->method = LOFT_MANNING;
+	o->method = LOFT_FAIR;
 	o->sign = LOFT_SIGN_POSITIVE;
 	o->alpha = 2.0 / 3;
 	o->tol = 1e-12;
@@ -89,7 +89,7 @@ loft__check_knots(const struct loft_fit_opts *o, const double *p, size_t n,
 			return loft_fail(err, LOFT_EGEOM, (long)j,
 			    "knot %zu coincides with knot %zu%s", j + 1, i + 1,
 			    j == 0 ? " (closing the curve: drop the repeated "
-			    "first knot, or fit with -o)" : "");
+			    "first knot)" : "");
 	}
 	if (o->closed && collinear(p, n, dim, size, far))
 		return loft_fail(err, LOFT_EGEOM, -1,
@@ -402,6 +402,71 @@ unit_box(const double *p, size_t n, int dim, double *q)
 	return e;
 }
 
+/* One curve without corners, by o->method, of knots already scaled. */
+static int
+fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
+    double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	if (o->method == LOFT_MANNING)
+		return fit_manning(o, q, n, dim, seg, info, err);
+	if (o->method == LOFT_FAIR)
+		return loft__fit_fair(o, q, n, dim, seg, info, err);
+	info->converged = 1;
+	return loft__fit_cspline(o, q, n, dim, seg, err);
+}
+
+/*
+ * A curve with corners: each piece between corners, and on an open curve
+ * from an end to its corner, an open curve of its own.  The piece from
+ * corner a to the next, b, covers segments a .. b-1 (mod n on a closed
+ * curve, where one corner makes one piece all the way round).
+ */
+static int
+fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
+    double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	size_t nc = o->ncorner, npiece = o->closed ? nc : nc + 1;
+	double *pk = malloc((n + 1) * (size_t)dim * 5 * sizeof *pk), *ps;
+	int rc = 0;
+
+	if (pk == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	ps = pk + (n + 1) * dim;
+	for (size_t k = 0; rc == 0 && k < npiece; k++) {
+		struct loft_fit_opts po = *o;
+		struct loft_fit_info pi = { 0 };
+		size_t a, b, len;
+
+		if (o->closed) {
+			a = o->corner[k];
+			b = k + 1 < nc ? o->corner[k + 1] : o->corner[0] + n;
+		} else {
+			a = k == 0 ? 0 : o->corner[k - 1];
+			b = k < nc ? o->corner[k] : n - 1;
+		}
+		if (b == a)             /* a corner at an end of an open curve */
+			continue;
+		len = b - a + 1;
+		for (size_t i = 0; i < len; i++)
+			vcopy(pk + i * dim, q + ((a + i) % n) * dim, dim);
+		po.closed = 0;
+		po.ncorner = 0;
+		po.have_start = !o->closed && k == 0 && o->have_start;
+		po.have_end = !o->closed && k + 1 == npiece && o->have_end;
+		rc = fit_method(&po, pk, len, dim, ps, &pi, err);
+		if (rc != 0 && err->row >= 0)
+			err->row = (long)((a + (size_t)err->row) % n);
+		info->iterations += pi.iterations;
+		info->change = fmax(info->change, pi.change);
+		for (size_t i = 0; rc == 0 && i + 1 < len; i++)
+			memcpy(seg + ((a + i) % n) * 4 * dim, ps + i * 4 * dim,
+			    4 * dim * sizeof *seg);
+	}
+	info->converged = rc == 0;
+	free(pk);
+	return rc;
+}
+
 int
 loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -420,12 +485,10 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	e = unit_box(p, n, dim, q);
 	rc = loft__check_knots(o, q, n, dim, err);
-	if (rc == 0 && o->method == LOFT_MANNING) {
-		rc = fit_manning(o, q, n, dim, seg, info, err);
-	} else if (rc == 0) {
-		info->converged = 1;
-		rc = loft__fit_cspline(o, q, n, dim, seg, err);
-	}
+	if (rc == 0 && o->ncorner > 0)
+		rc = fit_pieces(o, q, n, dim, seg, info, err);
+	else if (rc == 0)
+		rc = fit_method(o, q, n, dim, seg, info, err);
 	free(q);
 	/* back to the knots' own units, exactly */
 	for (size_t i = 0; rc == 0 && i < nseg * 4 * dim; i++)

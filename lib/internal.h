@@ -148,9 +148,39 @@ int loft__check_knots(const struct loft_fit_opts *o, const double *p,
 int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *t0, double *tn, struct loft_error *err);
 
+/* fair.c: the fair default of loft_fit, from the chord-length spline. */
+int loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err);
+
 /* cspline.c: the Ferguson and chord-length baselines of loft_fit. */
 int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, double *seg, struct loft_error *err);
+
+/*
+ * cspline.c: the spline of continuous first derivatives with parameter
+ * intervals h (one per segment, positive) whose second derivative at
+ * knot i jumps along the tangent so that the system's diagonal is
+ * (h0 + h1)(1 + e^y_i) (y NULL: continuous second derivatives; on an
+ * open curve e^y_0 and e^y_{n-1} scale the end derivatives), into seg
+ * as loft_fit writes it; the curvature is continuous whatever h and y.
+ * work: 7n + 2n dim numbers, which keep the system for
+ * loft__cspline_adjoint.  Returns 0 or an error of the end tangents.
+ */
+int loft__cspline_h(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, const double *h, const double *y, double *seg, double *work,
+    struct loft_error *err);
+
+/*
+ * cspline.c: the gradient gh (one per segment) with respect to the
+ * intervals h of a function of the segments, given its gradient gseg
+ * with respect to each segment's P'_A and P'_B (2 dim numbers per
+ * segment), by the adjoint of the system, and with respect to y into gy
+ * (n numbers) unless NULL; work as loft__cspline_h left it for the same
+ * h and y.
+ */
+void loft__cspline_adjoint(const struct loft_fit_opts *o, const double *p,
+    size_t n, int dim, const double *h, const double *y, const double *gseg,
+    double *gh, double *gy, double *work);
 
 /*
  * dtoa.c: exact decimal conversion.  Each returns 0, or -1 in a rare

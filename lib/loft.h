@@ -271,7 +271,7 @@ int loft_normalise(const double *chord, const double *ta, const double *tb,
 /* ------------------------------------------------------------------ */
 /* Fitting a spline through knots (fit.c, cspline.c)                   */
 
-enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD };
+enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD, LOFT_FAIR };
 enum loft_sign { LOFT_SIGN_POSITIVE, LOFT_SIGN_TURN };
 
 struct loft_fit_opts {
@@ -283,9 +283,12 @@ struct loft_fit_opts {
 	int closed;
 	int have_start, have_end;       /* open curves: given end tangents */
 	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
+	const size_t *corner;   /* corner knots (0-based, increasing), or NULL */
+	size_t ncorner;
 };
 
-/* The paper's and the programs' defaults. */
+/* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
+ * paper's alpha and sign rule. */
 void loft_fit_defaults(struct loft_fit_opts *o);
 
 struct loft_fit_info {
@@ -307,6 +310,36 @@ struct loft_fit_info {
  */
 int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err);
+
+/*
+ * With o->ncorner > 0, loft_fit breaks the curve at the knots corner[0..
+ * ncorner), each < n and each greater than the one before: the curve
+ * between two corners (and, on an open curve, from an end to its nearest
+ * corner) is fitted by o->method as an open curve whose end tangents at
+ * the corners are estimated as loft_end_tangent does (the given ones at
+ * the ends of an open curve), so the tangent direction breaks at a
+ * corner, and a segment between corners at neighbouring knots is the
+ * straight line between them.  A corner at an end of an open curve
+ * changes nothing.  Errors name rows of p as without corners.
+ */
+
+/*
+ * Merging knots that are one knot (merge.c).  loft_merge_distance: the
+ * default merge distance of the n knots p, a fixed fraction of their
+ * size.  loft_merge_knots: the knots to keep, their indices written in
+ * increasing order to keep (n entries), their count returned: a knot
+ * nearer than dist to the last kept one is dropped, and on a closed
+ * curve (closed nonzero) so is a last kept knot nearer than dist to the
+ * first.  With local nonzero (the default distance), two knots are one
+ * only where they are also nearer than a tenth of the longer of the
+ * chords on either side of them, so an even dense spacing is kept.  into, unless NULL, gets for each of the n knots the index (in
+ * keep) of the kept knot it is, or merged into: the one kept before it,
+ * or the first for the knots that close the curve.  dist 0 keeps every
+ * knot.  n may be 0.
+ */
+double loft_merge_distance(const double *p, size_t n, int dim);
+size_t loft_merge_knots(const double *p, size_t n, int dim, int closed,
+    double dist, int local, size_t *keep, size_t *into);
 
 /* Minimum count of knots for a closed and an open curve. */
 #define LOFT_MIN_CLOSED 3
@@ -337,6 +370,14 @@ double loft_curvature_jump(const double *seg, size_t nseg, int dim, int closed);
  */
 double loft_tangent_distance(const double *a, const double *b, size_t nseg,
     int dim);
+
+/*
+ * Whether the plane curve of the nseg segments seg (rows of 8 numbers,
+ * as loft_fit writes them; nseg > 0) crosses itself, closed or not: 1
+ * where the polyline of 6 points a segment has two edges, not
+ * neighbours, that cross; 0 where it has none; -1 when out of memory.
+ */
+int loft_fit_crosses(const double *seg, size_t nseg, int closed);
 
 /* ------------------------------------------------------------------ */
 /* Curves of any record type, for programs that evaluate them (curve.c) */

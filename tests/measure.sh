@@ -159,7 +159,7 @@ near "sine: inflexions" "$1" 3 0
 # is within 2 pi e of 20 pi and its area between pi (10 -+ e)^2.
 awk 'BEGIN { for (k = 0; k < 16; k++) { a = 2 * 3.141592653589793 * k / 16
 	printf "%.17g %.17g\n", 10 * cos(a), 10 * sin(a) } }' |
-    "$B/splinefit" >"$T/circle.cubic"
+    "$B/splinefit" -m manning >"$T/circle.cubic"
 K=$(kmax "$T/circle.cubic" 3)
 set -- $(dense "$T/circle.cubic" 2000 | poly)
 plen=$1 parea=$2 c3=$3

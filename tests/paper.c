@@ -284,6 +284,7 @@ test_fig7(void)
 	struct loft_fit_opts o;
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	fit_ok(&o, square, 4, 2, seg, NULL, "square");
 	CHECK(radial_error(seg, 4, 2, sqrt(2)) < 5e-4,
 	    "square: radius off by %g of the circumradius",
@@ -299,6 +300,7 @@ test_tennis(void)
 	double p[24], r = hypot(24, 55);
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	tennis(p, 1);
 	fit_ok(&o, p, 8, 3, seg, NULL, "tennis 8");
 	CHECK(radial_error(seg, 8, 3, r) < 0.003, "tennis 8: %g r from the "
@@ -316,6 +318,7 @@ test_continuity(const double *insole)
 	double p[24];
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	for (int sign = LOFT_SIGN_POSITIVE; sign <= LOFT_SIGN_TURN; sign++) {
 		o.sign = sign;
 		check_fair(&o, square, 4, 2, "square");
@@ -352,6 +355,7 @@ test_fig15(void)
 	struct loft_fit_info a, b;
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	fit_ok(&o, ambiguous, 8, 2, seg, &a, "positive rule");
 	o.sign = LOFT_SIGN_TURN;
 	fit_ok(&o, ambiguous, 8, 2, seg2, &b, "turn rule");
@@ -378,6 +382,7 @@ test_open_ends(void)
 	const double *last = seg + 8 * 2;
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	o.closed = 0;
 	o.have_start = o.have_end = 1;
 	o.start[0] = 3, o.start[1] = 0;         /* only the direction counts */
@@ -412,6 +417,7 @@ outline_iterations(size_t n, double *p)
 		p[2 * i + 1] = 45 * r * sin(t);
 	}
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	fit_ok(&o, p, n, 2, seg, &info, "outline");
 	return info.iterations;
 }
@@ -445,6 +451,7 @@ test_units(const double *insole)
 	double p[44];
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	fit_ok(&o, insole, 22, 2, seg, NULL, "insole");
 	for (int c = 0; c < 4; c++) {
 		double worst = 0;
@@ -471,6 +478,7 @@ test_noconv(void)
 	struct loft_error err;
 
 	loft_fit_defaults(&o);
+	o.method = LOFT_MANNING;
 	o.maxiter = 3;
 	CHECK(loft_fit(&o, ambiguous, 8, 2, seg, &info, &err) == LOFT_ENOCONV,
 	    "3 iterations are not enough");

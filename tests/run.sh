@@ -25,6 +25,7 @@ suite() {
 suite bin/test/unit
 suite bin/test/paper man/figures/insole.knots
 suite sh tests/cmd.sh
+suite sh tests/fit.sh
 suite bin/test/patch
 suite sh tests/patch.sh
 suite bin/test/bezier

@@ -2,6 +2,7 @@
  * splinefit.c: libFuzzer harness of splinefit's record handler.  Byte 0
  * chooses the options, byte 1 the -p digits; the rest is the stream.
  *   bit 0  -o          bit 1  -m chord      bit 2  -m ferguson
+ *   (bits 1 and 2 both: -m manning; neither: the fair default)
  *   bit 3  -k turn     bit 4  -i 3          bit 5  -v
  *   bit 6  -S 1,0[,0]  bit 7  -E 0,1[,1]    (with -o)
  */
@@ -13,7 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	struct opts o = { 0 };
+	struct opts o = { .merge = -1 };
 	struct loft_run run = { .prog = "splinefit", .msg = fuzz_null(),
 	    .handle = fit_record, .ctx = &o };
 	int bits;
@@ -23,7 +24,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	bits = data[0];
 	loft_fit_defaults(&o.fit);
 	o.fit.closed = !(bits & 1);
-	if (bits & 2)
+	if ((bits & 6) == 6)
+		o.fit.method = LOFT_MANNING;
+	else if (bits & 2)
 		o.fit.method = LOFT_CHORD;
 	else if (bits & 4)
 		o.fit.method = LOFT_FERGUSON;
@@ -47,5 +50,9 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fuzz_records(&run, data + 2, size - 2);
 	free(o.seg);
 	free(o.other);
+	free(o.knots);
+	free(o.keep);
+	free(o.into);
+	free(o.corner);
 	return 0;
 }

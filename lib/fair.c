@@ -1,0 +1,557 @@
+/*
+ * fair.c: the fair default of loft_fit.  Of the cubic splines with
+ * continuous first and second derivatives (so continuous tangent and
+ * curvature: G2) through the knots, with any positive parameter
+ * intervals h_i, the one of least bending energy E, the integral of
+ * curvature squared along the curve, that descent from the chord-length
+ * intervals reaches.
+ *
+ * Every h gives a G2 curve through the knots from one tridiagonal
+ * system, so no step can break continuity or fail.  E and its gradient
+ * with respect to log h cost O(n): E by Gauss quadrature per segment,
+ * dE/dP' in closed form, dE/dh by the adjoint of the system (cspline.c).
+ * The descent takes L-BFGS steps, each kept only when it lowers E enough
+ * (Armijo) and keeps every curvature within the chord spline's largest;
+ * the result must be fairer than the chord-length spline by a finer
+ * quadrature, no more sharply bent, and (in the plane) cross itself only
+ * where the chord spline does, or the chord spline is written instead.
+ *
+ * The free second-derivative jumps make the family every G2 cubic curve
+ * through the knots with those end tangents: the tangent magnitudes at a
+ * knot may differ (h) and the curvature is matched without matching
+ * P'' (y), the two freedoms Manning's normalisation fixes one way.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Steps at most: L-BFGS takes the insole within 1e-4 of its settled
+ * energy in 6; each costs a few O(n) passes, and the bench's 10^4
+ * insoles must stay within half GNU spline's time. */
+#define FAIR_STEPS 6
+
+/* No step changes a log interval by more than this: a factor e, so a
+ * step cannot jump across a fold of the energy into a worse valley. */
+#define FAIR_MAXSTEP 1.0
+
+/* Stop once a step lowers E by less than this fraction of it: the
+ * steps after gain less than the eye can tell, and cost as much. */
+#define FAIR_SETTLED 1e-4
+
+/* No tangent vector longer than this many times its segment's chord: a
+ * curve's energy falls as it grows (a circle's is 2 pi / R), so a
+ * descent left free would swell loops out of the knots' reach. */
+#define FAIR_MAXMAG 3.0
+
+/* Nowhere slower than this fraction of the chord (at the quadrature
+ * points), or than the chord spline where it is slower: a cubic that
+ * nearly stops bends sharply there, in a spike the quadrature can miss. */
+#define FAIR_SLOW 0.25
+
+/* The pairs of steps L-BFGS remembers. */
+#define FAIR_MEMORY 4
+
+/* Records of more knots keep the chord-length spline, the descent's
+ * start: each step costs about a microsecond a knot, and on knots that
+ * dense the chord spline is within rounding of fair wherever they are
+ * even; a 10^6-knot outline must fit in under 2 s. */
+#define FAIR_MAXKNOTS 100000
+
+/* A step is quartered at most this many times before the descent
+ * settles: each try costs a whole spline. */
+#define FAIR_HALVINGS 4
+
+/* Armijo's fraction of the first-order decrease a step must achieve. */
+#define FAIR_ARMIJO 1e-4
+
+/* 4-point Gauss-Legendre on [0, 1], on each of FAIR_PIECES equal parts
+ * of a segment: within 1e-5 relative of the energy of the segments of a
+ * fair curve.  A segment that turns sharply in a small part of it needs
+ * more: FAIR_CHECK parts where the two differ on the start, and the
+ * descent's result is checked against the start with FAIR_CHECK parts
+ * (see loft__fit_fair). */
+#define FAIR_PIECES 2
+#define FAIR_CHECK 8
+#define GAUSS 4
+static const double gauss_u[GAUSS] = {
+	0.069431844202973712, 0.33000947820757187, 0.66999052179242813,
+	0.93056815579702629 };
+static const double gauss_w[GAUSS] = {
+	0.17392742256872693, 0.32607257743127307, 0.32607257743127307,
+	0.17392742256872693 };
+
+/*
+ * The bending energy of segment s (a row P_A P_B P'_A P'_B) and, unless g
+ * is NULL, its gradient with respect to P'_A and P'_B into g (2 dim); the
+ * largest curvature at the quadrature points raises *kmax.  With V =
+ * |P'|^2, W = |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2)
+ * V^-5/2.  HUGE_VAL where the tangent vanishes.
+ */
+static double
+segment_energy(const double *s, int dim, int pieces, double *g, double *kmax,
+    double *slow)
+{
+	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
+	double c[LOFT_MAXDIM], e = 0, cc;
+
+	vsub(c, b, a, dim);
+	cc = vdot(c, c, dim);
+	if (g != NULL)
+		memset(g, 0, 2 * dim * sizeof *g);
+	for (int q = 0; q < GAUSS * pieces; q++) {
+		double u = (q / GAUSS + gauss_u[q % GAUSS]) / pieces;
+		double wq = gauss_w[q % GAUSS] / pieces, a0 = 1 - 4 * u + 3 * u * u;
+		double a1 = -2 * u + 3 * u * u, gc = 6 * u - 6 * u * u;
+		double b0 = -4 + 6 * u, b1 = -2 + 6 * u, dc = 6 - 12 * u;
+		double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v, w, x, num, r;
+
+		for (int k = 0; k < dim; k++) {
+			p1[k] = a0 * d0[k] + a1 * d1[k] + gc * c[k];
+			p2[k] = b0 * d0[k] + b1 * d1[k] + dc * c[k];
+		}
+		v = vdot(p1, p1, dim);
+		w = vdot(p2, p2, dim);
+		x = vdot(p1, p2, dim);
+		num = fmax(v * w - x * x, 0);
+		if (!(v > 0))
+			return HUGE_VAL;
+		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
+		e += wq * num * r;
+		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
+		if (slow != NULL)
+			*slow = fmin(*slow, v / cc);
+		if (g == NULL)
+			continue;
+		for (int k = 0; k < dim; k++) {
+			double f1 = (2 * w * p1[k] - 2 * x * p2[k]) * r -
+			    5 * num * r / v * p1[k];
+			double f2 = (2 * v * p2[k] - 2 * x * p1[k]) * r;
+
+			g[k] += wq * (f1 * a0 + f2 * b0);
+			g[dim + k] += wq * (f1 * a1 + f2 * b1);
+		}
+	}
+	return e;
+}
+
+/* Whether every tangent vector of the segments is within FAIR_MAXMAG
+ * chords. */
+static int
+tame(const double *seg, size_t nseg, int dim)
+{
+	for (size_t s = 0; s < nseg; s++) {
+		const double *q = seg + s * 4 * dim;
+		double w = FAIR_MAXMAG * vdist(q + dim, q, dim);
+
+		if (!(vnorm(q + 2 * dim, dim) <= w && vnorm(q + 3 * dim, dim) <= w))
+			return 0;
+	}
+	return 1;
+}
+
+/*
+ * The largest curvature of the segments at FAIR_KSAMPLES + 1 even
+ * points of each, ends included: the cap of the descent (which checks
+ * it at the quadrature points) and the final check of its result.
+ */
+#define FAIR_KSAMPLES 8
+static double
+max_curvature(const double *seg, size_t nseg, int dim)
+{
+	double big = 0;
+
+	for (size_t s = 0; s < nseg; s++) {
+		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
+			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], v, x, w;
+
+			loft_cubic_eval(seg + s * 4 * dim, dim,
+			    (double)j / FAIR_KSAMPLES, NULL, d1, d2);
+			v = vdot(d1, d1, dim);
+			w = vdot(d2, d2, dim);
+			x = vdot(d1, d2, dim);
+			if (!(v > 0))
+				return HUGE_VAL;
+			big = fmax(big, sqrt(fmax(v * w - x * x, 0) / (v * v * v)));
+		}
+	}
+	return big;
+}
+
+/* The energy of all nseg segments, gradients into g unless NULL; each
+ * segment in parts[s] parts, or pieces where parts is NULL. */
+static double
+curve_energy(const double *seg, size_t nseg, int dim, int pieces,
+    const unsigned char *parts, double *g, double *kmax, double *slow)
+{
+	double e = 0;
+
+	*kmax = 0;
+	if (slow != NULL)
+		*slow = HUGE_VAL;
+	for (size_t s = 0; s < nseg; s++)
+		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
+		    pieces, g ? g + s * 2 * dim : NULL, kmax, slow);
+	return e;
+}
+
+/* The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
+ * where the two rules differ by more than 1e-4 of its energy.  Returns
+ * the start's energy by FAIR_CHECK parts. */
+static double
+choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts)
+{
+	double fine = 0;
+
+	for (size_t s = 0; s < nseg; s++) {
+		double k, a = segment_energy(seg + s * 4 * dim, dim,
+		    FAIR_PIECES, NULL, &k, NULL), b = segment_energy(seg + s *
+		    4 * dim, dim, FAIR_CHECK, NULL, &k, NULL);
+
+		parts[s] = fabs(a - b) <= 1e-4 * b ? FAIR_PIECES : FAIR_CHECK;
+		fine += b;
+	}
+	return fine;
+}
+
+struct fair {
+	const struct loft_fit_opts *o;
+	const double *p;
+	size_t n, nseg;
+	int dim;
+	double *seg, *work, *gseg;
+	double kcap;
+	double slow;            /* the least (|P'| / chord)^2 allowed */
+	unsigned char *parts;   /* the quadrature's parts of each segment */
+	double e0;              /* the start's energy: E / e0 is descended,
+	                         * so steps do not depend on the units */
+};
+
+/* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
+ * into f->seg, its energy (HUGE_VAL where a curvature passes the cap). */
+static double
+try_intervals(struct fair *f, const double *x, double *h)
+{
+	double e, kmax, slow;
+	struct loft_error err;
+
+	for (size_t s = 0; s < f->nseg; s++)
+		h[s] = exp(x[s]);
+	if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg, f->seg,
+	    f->work, &err) != 0)
+		return HUGE_VAL;
+	if (!tame(f->seg, f->nseg, f->dim))
+		return HUGE_VAL;
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax,
+	    &slow) / f->e0;
+	if (!(kmax <= f->kcap) || !(slow >= f->slow))
+		return HUGE_VAL;
+	return isfinite(e) ? e : HUGE_VAL;
+}
+
+/* dE/dx at the x last solved (h = exp(x)), into g. */
+static void
+gradient(struct fair *f, const double *x, const double *h, double *g)
+{
+	double kmax;
+
+	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
+	    NULL);
+	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
+	    f->gseg, g, g + f->nseg, f->work);
+	for (size_t s = 0; s < f->nseg; s++)
+		g[s] *= h[s] / f->e0;
+	for (size_t i = 0; i < f->n; i++)
+		g[f->nseg + i] /= f->e0;
+}
+
+/*
+ * The L-BFGS direction -H g into d from the last k of FAIR_MEMORY pairs
+ * (s, y) of steps and gradient changes, stored round from slot k0.
+ */
+static void
+direction(size_t m, const double *g, double *d, double *const *sv,
+    double *const *yv, const double *rho, int k, int k0)
+{
+	double al[FAIR_MEMORY], gamma = 1;
+
+	memcpy(d, g, m * sizeof *d);
+	for (int j = k - 1; j >= 0; j--) {
+		int q = (k0 + j) % FAIR_MEMORY;
+		double a = 0;
+
+		for (size_t i = 0; i < m; i++)
+			a += sv[q][i] * d[i];
+		al[j] = a *= rho[q];
+		for (size_t i = 0; i < m; i++)
+			d[i] -= a * yv[q][i];
+	}
+	if (k > 0) {
+		int q = (k0 + k - 1) % FAIR_MEMORY;
+		double yy = 0;
+
+		for (size_t i = 0; i < m; i++)
+			yy += yv[q][i] * yv[q][i];
+		gamma = 1 / (rho[q] * yy);
+	}
+	for (size_t i = 0; i < m; i++)
+		d[i] *= gamma;
+	for (int j = 0; j < k; j++) {
+		int q = (k0 + j) % FAIR_MEMORY;
+		double b = 0;
+
+		for (size_t i = 0; i < m; i++)
+			b += yv[q][i] * d[i];
+		b *= rho[q];
+		for (size_t i = 0; i < m; i++)
+			d[i] += (al[j] - b) * sv[q][i];
+	}
+	for (size_t i = 0; i < m; i++)
+		d[i] = -d[i];
+}
+
+/* The descent; returns the steps taken.  x: log h and y, the best on
+ * return, whose spline f->seg holds.  v: room for 2 FAIR_MEMORY + 3
+ * vectors of nseg + n. */
+static int
+descend(struct fair *f, double *x, double *h, double *v, double e)
+{
+	size_t m = f->nseg + f->n;
+	double *g = v, *d = g + m, *xp = d + m, *sv[FAIR_MEMORY],
+	    *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
+	int it, k = 0, k0 = 0;
+
+	for (int j = 0; j < FAIR_MEMORY; j++) {
+		sv[j] = xp + m + 2 * j * m;
+		yv[j] = sv[j] + m;
+	}
+	gradient(f, x, h, g);
+	for (it = 0; it < FAIR_STEPS; it++) {
+		double gd = 0, big = 0, t = 1, en = HUGE_VAL;
+		int q;
+
+		direction(m, g, d, sv, yv, rho, k, k0);
+		for (size_t i = 0; i < m; i++) {
+			gd += g[i] * d[i];
+			big = fmax(big, fabs(d[i]));
+		}
+		if (!(gd < 0) || !isfinite(gd)) {       /* start afresh */
+			if (k == 0)
+				break;
+			k = 0;
+			it--;
+			continue;
+		}
+		t = fmin(1, FAIR_MAXSTEP / big);
+		memcpy(xp, x, m * sizeof *x);
+		for (int half = 0; half < FAIR_HALVINGS; half++, t *= 0.25) {
+			for (size_t i = 0; i < m; i++)
+				x[i] = xp[i] + t * d[i];
+			en = try_intervals(f, x, h);
+			if (en <= e + FAIR_ARMIJO * t * gd)
+				break;
+		}
+		if (!(en <= e + FAIR_ARMIJO * t * gd)) {
+			memcpy(x, xp, m * sizeof *x);
+			break;
+		}
+		if (e - en < FAIR_SETTLED * e) {
+			e = en;
+			it++;
+			break;
+		}
+		/* the new pair: s = x - xp, y = g(x) - g(xp) */
+		q = k < FAIR_MEMORY ? (k0 + k) % FAIR_MEMORY : k0;
+		if (k == FAIR_MEMORY)
+			k0 = (k0 + 1) % FAIR_MEMORY;
+		else
+			k++;
+		for (size_t i = 0; i < m; i++) {
+			sv[q][i] = x[i] - xp[i];
+			yv[q][i] = -g[i];
+		}
+		gradient(f, x, h, g);
+		{
+			double sy = 0;
+
+			for (size_t i = 0; i < m; i++) {
+				yv[q][i] += g[i];
+				sy += yv[q][i] * sv[q][i];
+			}
+			if (sy > 0) {
+				rho[q] = 1 / sy;
+			} else {                /* no curvature: forget all */
+				k = 0;
+				k0 = 0;
+			}
+		}
+		e = en;
+	}
+	/* the spline of the best x, in f->seg */
+	try_intervals(f, x, h);
+	return it;
+}
+
+/* Points a segment of the polyline the crossing test follows. */
+#define FAIR_POLY 6
+
+/* Whether the edges ab and cd cross at a point inside both. */
+static int
+edges_cross(const double *a, const double *b, const double *c, const double *d)
+{
+	double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+	double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+	double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+	double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+
+	return ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0)) &&
+	    ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0));
+}
+
+/* The cells of a grid of g x g over [lo, lo + g w) that edge e covers. */
+static void
+edge_cells(const double *pt, size_t np, size_t e, const double *lo, double w,
+    size_t g, size_t *c0, size_t *c1)
+{
+	const double *a = pt + 2 * e, *b = pt + 2 * ((e + 1) % np);
+
+	for (int k = 0; k < 2; k++) {
+		double x0 = (fmin(a[k], b[k]) - lo[k]) / w;
+		double x1 = (fmax(a[k], b[k]) - lo[k]) / w;
+
+		c0[k] = x0 < 0 ? 0 : x0 >= g ? g - 1 : (size_t)x0;
+		c1[k] = x1 < 0 ? 0 : x1 >= g ? g - 1 : (size_t)x1;
+	}
+}
+
+/* Edges sorted into a grid of about one cell an edge, pairs tested
+ * within cells: O(n) for a curve of even speed. */
+int
+loft_fit_crosses(const double *seg, size_t nseg, int closed)
+{
+	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
+	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, total = 0;
+	double *pt = calloc(2 * np, sizeof *pt), lo[2], hi[2], w;
+	int found = 0;
+
+	if (pt == NULL)
+		return -1;
+	for (size_t i = 0; i < np; i++) {
+		size_t s = i / FAIR_POLY < nseg ? i / FAIR_POLY : nseg - 1;
+
+		loft_cubic_eval(seg + 8 * s, 2, (double)(i - s * FAIR_POLY) /
+		    FAIR_POLY, pt + 2 * i, NULL, NULL);
+	}
+	lo[0] = hi[0] = pt[0];
+	lo[1] = hi[1] = pt[1];
+	for (size_t i = 1; i < np; i++)
+		for (int k = 0; k < 2; k++) {
+			lo[k] = fmin(lo[k], pt[2 * i + k]);
+			hi[k] = fmax(hi[k], pt[2 * i + k]);
+		}
+	w = fmax(hi[0] - lo[0], hi[1] - lo[1]) / g * (1 + 1e-9);
+	cnt = calloc(g * g + 1, sizeof *cnt);
+	for (size_t e = 0; cnt != NULL && e < ne; e++) {
+		size_t c0[2], c1[2];
+
+		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		for (size_t y = c0[1]; y <= c1[1]; y++)
+			for (size_t x = c0[0]; x <= c1[0]; x++)
+				cnt[y * g + x + 1]++, total++;
+	}
+	list = cnt != NULL && w > 0 ? malloc((total + 1) * sizeof *list) : NULL;
+	if (list == NULL) {
+		free(pt);
+		free(cnt);
+		return w > 0 ? -1 : 0;
+	}
+	for (size_t c = 1; c <= g * g; c++)
+		cnt[c] += cnt[c - 1];
+	for (size_t e = 0; e < ne; e++) {
+		size_t c0[2], c1[2];
+
+		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		for (size_t y = c0[1]; y <= c1[1]; y++)
+			for (size_t x = c0[0]; x <= c1[0]; x++)
+				list[cnt[y * g + x]++] = e;
+	}
+	/* cnt[c] is now the end of cell c's edges, cnt[c - 1] its start */
+	for (size_t c = 0; !found && c < g * g; c++) {
+		size_t from = c > 0 ? cnt[c - 1] : 0;
+
+		for (size_t i = from; !found && i < cnt[c]; i++)
+			for (size_t j = i + 1; !found && j < cnt[c]; j++) {
+				size_t a = list[i], b = list[j];
+
+				if (a > b)
+					a = list[j], b = list[i];
+				if (b == a + 1 || a == b ||
+				    (closed && a == 0 && b == ne - 1))
+					continue;
+				found = edges_cross(pt + 2 * a,
+				    pt + 2 * ((a + 1) % np), pt + 2 * b,
+				    pt + 2 * ((b + 1) % np));
+			}
+	}
+	free(pt);
+	free(cnt);
+	free(list);
+	return found;
+}
+
+int
+loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	size_t nseg = o->closed ? n : n - 1;
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
+	double *mem, *x, *h, e, kmax, slow, fine;
+	int rc, loops;
+
+	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
+		struct loft_fit_opts co = *o;
+
+		co.method = LOFT_CHORD;
+		info->converged = 1;
+		return loft__fit_cspline(&co, p, n, dim, seg, err);
+	}
+	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
+	    n / sizeof *mem + 1, sizeof *mem);
+	if (mem == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	f.work = mem;
+	f.gseg = f.work + (7 + 2 * dim) * n;
+	x = f.gseg + 2 * dim * n;
+	h = x + 2 * n;
+	for (size_t s = 0; s < nseg; s++)
+		x[s] = log(vdist(p + ((s + 1) % n) * dim, p + s * dim, dim));
+	for (size_t s = 0; s < nseg; s++)
+		h[s] = exp(x[s]);
+	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
+	if (rc == 0) {
+		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
+		fine = choose_parts(seg, nseg, dim, f.parts);
+		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax, &slow);
+		/* the chord spline's largest curvature, less rounding */
+		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
+		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
+		f.e0 = e;
+		loops = dim == 2 ? loft_fit_crosses(seg, nseg, o->closed) : 0;
+		if (isfinite(e) && e > 0)
+			info->iterations = descend(&f, x, h, h + n, 1);
+		/* not fairer by the finer rule, more bent, or crossing itself
+		 * where the start does not: the chord spline after all */
+		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
+		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
+		    (loops == 0 && loft_fit_crosses(seg, nseg, o->closed) == 1)) {
+			for (size_t s = 0; s < nseg; s++)
+				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
+				    dim);
+			rc = loft__cspline_h(o, p, n, dim, h, NULL, seg, f.work,
+			    err);
+		}
+		info->converged = 1;
+	}
+	free(mem);
+	return rc;
+}
