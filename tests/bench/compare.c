@@ -284,7 +284,9 @@ static int
 run(const char *file)
 {
 	static double seg[MAXSEG * 8], ratio[NMETHOD][1024];
-	double k[MAXK][2], e[NMETHOD];
+	static double fam[2][NMETHOD][512];     /* by family: insole, blob */
+	double k[MAXK][2], e[NMETHOD], kmax[NMETHOD];
+	int nfam[2] = { 0, 0 }, sharper[NMETHOD] = { 0 };
 	int nset = 0, loops[NMETHOD] = { 0 }, fails[NMETHOD] = { 0 };
 	int best[NMETHOD] = { 0 }, nk = 0, have[NMETHOD];
 	char line[256];
@@ -341,11 +343,24 @@ run(const char *file)
 				continue;
 			}
 			looped[m] = loft_fit_crosses(seg, ns, 1) == 1;
+			kmax[m] = 0;
+			{
+				double r, u;
+
+				if (loft_curve_min_radius(&c, &r, &u, &err) == 0 &&
+				    r > 0)
+					kmax[m] = 1 / r;
+			}
 			if (m == CHORD)
 				chordloop = looped[m];
 		}
-		for (int m = 0; m < NMETHOD; m++)
+		for (int m = 0; m < NMETHOD; m++) {
 			loops[m] += looped[m] && !chordloop;
+			/* the issue: never a curvature above the chord spline's
+			 * largest (to rounding of the root finder) */
+			sharper[m] += e[m] < HUGE_VAL && e[CHORD] < HUGE_VAL &&
+			    kmax[m] > kmax[CHORD] * (1 + 1e-9);
+		}
 		for (int m = CHORD; m < NMETHOD; m++)
 			if (have[m] && e[m] < peer)
 				peer = e[m];
@@ -353,7 +368,11 @@ run(const char *file)
 			if (have[m] && (ib < 0 || e[m] < e[ib]))
 				ib = m;
 			ratio[m][nset] = e[m] / peer;
+			if (nfam[nset % 2] < 512)
+				fam[nset % 2][m][nfam[nset % 2]] = e[m] / peer;
 		}
+		if (nfam[nset % 2] < 512)
+			nfam[nset % 2]++;
 		best[ib]++;
 		nset++;
 		nk = 0;
@@ -361,8 +380,9 @@ run(const char *file)
 	fclose(fp);
 	printf("%d uneven closed knot sets; energy over the fairest peer's "
 	    "(Spiro, Hobby, chord)\n", nset);
-	printf("%-14s %8s %8s %8s %8s %8s %8s\n", "method", "median", "90%",
-	    "worst", "fairest", "loops", "fails");
+	printf("%-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n", "method",
+	    "median", "90%", "worst", "fairest", "loops", "sharper", "fails",
+	    "insoles", "blobs");
 	for (int m = 0; m < NMETHOD; m++) {
 		if (!have[m]) {
 			printf("%-14s skipped: built without libspiro\n",
@@ -370,12 +390,17 @@ run(const char *file)
 			continue;
 		}
 		qsort(ratio[m], nset, sizeof ratio[m][0], cmp);
-		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d\n", names[m],
-		    ratio[m][nset / 2], ratio[m][(int)(0.9 * (nset - 1))],
-		    ratio[m][nset - 1], best[m], loops[m], fails[m]);
+		for (int f = 0; f < 2; f++)
+			qsort(fam[f][m], nfam[f], sizeof fam[f][m][0], cmp);
+		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d %8d %8.4f %8.4f\n",
+		    names[m], ratio[m][nset / 2],
+		    ratio[m][(int)(0.9 * (nset - 1))], ratio[m][nset - 1],
+		    best[m], loops[m], sharper[m], fails[m],
+		    fam[0][m][nfam[0] / 2], fam[1][m][nfam[1] / 2]);
 	}
 	printf("(loops: curves that cross themselves where the chord spline "
-	    "does not)\n");
+	    "does not; sharper: sets where the largest curvature is above\n"
+	    " the chord spline's; insoles, blobs: the median of each family)\n");
 	return 0;
 }
 
