@@ -11,7 +11,8 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade tocad
+          plot grade
+PROGS  += tocad
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
@@ -25,6 +26,7 @@ BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
 BINS   += bin/tocad
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen
+TESTS  += bin/test/cad
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
@@ -43,7 +45,7 @@ bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 bin/obj/dtoa.o: lib/pow10.h
-$(CADOBJ) bin/tocad: lib/loftcad.h
+$(CADOBJ) bin/tocad bin/test/cad: lib/loftcad.h
 
 $(LIB): $(LIBOBJ)
 	rm -f $@

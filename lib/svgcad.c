@@ -145,7 +145,7 @@ cubics(struct loft_cad_doc *d, const double *q, int deg, int dim, int depth)
 static int
 svg_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 {
-	static const char cmd[] = " LQC";
+	static const char cmd[] = " L Q C";
 	int dim = c->dim, n = c->deg + 1;
 
 	loft_cad_puts(d, "M");
@@ -157,7 +157,7 @@ svg_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 			cubics(d, q, c->deg, dim, 0);
 			continue;
 		}
-		loft_cad_put(d, cmd + c->deg, 1);
+		loft_cad_put(d, cmd + 2 * (c->deg - 1), 2);
 		for (int j = 1; j < n; j++)
 			put_xy(d, q + j * dim);
 	}
