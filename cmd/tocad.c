@@ -58,6 +58,10 @@ finish(struct loft_run *run, struct loft_cad_doc *d)
 		run->status = 1;
 		status = loft_run_write(run, NULL, 0);
 	} else {
+		/* the head, then the body; a failed write of the head shows
+		 * in loft_run_write's check of the stream */
+		if (d->head.len > 0)
+			fwrite(d->head.buf, 1, d->head.len, run->out);
 		status = loft_run_write(run, d->out.buf, d->out.len);
 	}
 	loft_cad_free(d);

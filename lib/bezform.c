@@ -97,20 +97,24 @@ loft_bezier_split(const double *ctl, int deg, int dim, double t,
 	}
 }
 
-double
-loft_bezier_flatness(const double *ctl, int deg, int dim)
+long
+loft_bezier_steps(const double *ctl, int deg, int dim, double tol, long max)
 {
-	const double *a = ctl, *b = ctl + deg * dim;
-	double worst = 0;
+	double worst = 0, n;
 
-	for (int i = 1; i < deg; i++) {
-		double l[LOFT_MAXDIM], d;
+	/* |C''| <= deg (deg - 1) max |P_i+2 - 2 P_i+1 + P_i| */
+	for (int i = 0; i + 2 <= deg; i++) {
+		double a[LOFT_MAXDIM];
 
 		for (int k = 0; k < dim; k++)
-			l[k] = a[k] + (b[k] - a[k]) * i / deg;
-		d = vdist(ctl + i * dim, l, dim);
-		if (d > worst)
-			worst = d;
+			a[k] = ctl[(i + 2) * dim + k] - 2 * ctl[(i + 1) * dim + k] +
+			    ctl[i * dim + k];
+		worst = fmax(worst, vnorm(a, dim));
 	}
-	return worst;
+	if (worst == 0)         /* a straight piece (or a point) */
+		return 1;
+	n = ceil(sqrt(deg * (deg - 1) * worst / (8 * tol)));
+	if (!(n <= (double)max))        /* too many, or not a number */
+		return 0;
+	return n < 1 ? 1 : (long)n;
 }

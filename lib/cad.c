@@ -24,11 +24,11 @@ const struct loft_cad_entry loft_cad_formats[] = {
 };
 
 /*
- * Most halvings of a Bezier piece while flattening: 2^16 steps a piece.
- * A tolerance that needs more is far below the piece's rounding noise
- * (or absurd for its size) and is refused rather than met slowly.
+ * Most polyline steps a piece: a tolerance that needs more is far below
+ * the piece's rounding noise (or absurd for its size) and is refused
+ * rather than met slowly.
  */
-#define MAX_HALVINGS 16
+#define MAX_STEPS_PIECE 65536
 
 /* Most mesh steps along a patch side: 256^2 cells a patch. */
 #define MAX_STEPS 256
@@ -53,7 +53,7 @@ loft_cad_init(struct loft_cad_doc *d, const struct loft_cad_format *f,
 void
 loft_cad_put(struct loft_cad_doc *d, const void *s, size_t n)
 {
-	struct loft_writer *w = &d->out;
+	struct loft_writer *w = d->in_head ? &d->head : &d->out;
 
 	if (w->bad)
 		return;
@@ -66,11 +66,9 @@ loft_cad_put(struct loft_cad_doc *d, const void *s, size_t n)
 }
 
 void
-loft_cad_take(struct loft_cad_doc *d, struct loft_writer *body)
+loft_cad_to_head(struct loft_cad_doc *d, int on)
 {
-	*body = d->out;
-	memset(&d->out, 0, sizeof d->out);
-	d->out.bad = body->bad;
+	d->in_head = on;
 }
 
 void
@@ -82,13 +80,19 @@ loft_cad_puts(struct loft_cad_doc *d, const char *s)
 void
 loft_cad_putnum(struct loft_cad_doc *d, double x)
 {
-	char buf[LOFT_NUMBUF];
+	struct loft_writer *w = d->in_head ? &d->head : &d->out;
 
 	if (!isfinite(x)) {
-		d->out.bad = LOFT_EGEOM;
+		w->bad = LOFT_EGEOM;
 		return;
 	}
-	loft_cad_put(d, buf, (size_t)loft_format_num(buf, x, 0));
+	/* formatted in place, as loft_put_num does */
+	if (w->bad || loft__grow((void **)&w->buf, &w->cap, w->len +
+	    LOFT_NUMBUF, 1) != 0) {
+		w->bad = w->bad ? w->bad : LOFT_ENOMEM;
+		return;
+	}
+	w->len += (size_t)loft_format_num(w->buf + w->len, x, 0);
 }
 
 int
@@ -217,24 +221,6 @@ pts_add(struct pts *s, const double *p)
 	return 0;
 }
 
-/* The end points of piece ctl halved until each part is within tol. */
-static int
-flatten(struct pts *s, const double *ctl, int deg, double tol, int depth)
-{
-	double l[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
-	double r[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
-	int rc;
-
-	if (loft_bezier_flatness(ctl, deg, s->dim) <= tol)
-		return pts_add(s, ctl + deg * s->dim);
-	if (depth == MAX_HALVINGS)
-		return LOFT_EGEOM;
-	loft_bezier_split(ctl, deg, s->dim, 0.5, l, r);
-	if ((rc = flatten(s, l, deg, tol, depth + 1)) != 0)
-		return rc;
-	return flatten(s, r, deg, tol, depth + 1);
-}
-
 /*
  * The polyline of c into s (s->dim set, s->p NULL): within tol, or at
  * -n equal parameter steps a piece.
@@ -248,26 +234,24 @@ make_polyline(const struct loft_cad_doc *d, struct pts *s,
 
 	for (size_t i = 0; rc == 0 && i < c->npieces; i++) {
 		const double *q = c->ctl + i * (c->deg + 1) * c->dim;
+		long n = per > 0 ? per : loft_bezier_steps(q, c->deg, c->dim, tol,
+		    MAX_STEPS_PIECE);
 		double p[LOFT_MAXDIM];
 
-		if (per == 0) {
-			rc = flatten(s, q, c->deg, tol, 0);
-			continue;
-		}
-		for (long j = 1; rc == 0 && j <= per; j++) {
-			/* the piece's own end point exactly, as in flatten */
-			if (j == per)
+		if (n == 0)
+			return loft_fail(err, LOFT_EGEOM, -1, "the tolerance %g "
+			    "needs more than %d steps a piece: give a larger -t",
+			    tol, MAX_STEPS_PIECE);
+		for (long j = 1; rc == 0 && j <= n; j++) {
+			/* the piece's own end point exactly */
+			if (j == n)
 				vcopy(p, q + c->deg * c->dim, c->dim);
 			else
 				loft_bezier_eval(q, (size_t)c->deg + 1, c->dim,
-				    (double)j / per, p, NULL, NULL);
+				    (double)j / n, p, NULL, NULL);
 			rc = pts_add(s, p);
 		}
 	}
-	if (rc == LOFT_EGEOM)
-		return loft_fail(err, LOFT_EGEOM, -1, "the tolerance %g needs "
-		    "more than %d steps a piece: give a larger -t", tol,
-		    1 << MAX_HALVINGS);
 	return rc == 0 ? 0 : loft_fail(err, rc, -1, "out of memory");
 }
 
@@ -668,9 +652,9 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 		d->bad = LOFT_ENOMEM;
 	if (!d->bad && d->f->end != NULL && d->f->end(d) != 0)
 		d->bad = LOFT_ENOMEM;
-	if (d->bad || d->out.bad == LOFT_ENOMEM)
+	if (d->bad || d->out.bad == LOFT_ENOMEM || d->head.bad == LOFT_ENOMEM)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	if (d->out.bad)
+	if (d->out.bad || d->head.bad)
 		return loft_fail(err, LOFT_EGEOM, -1, "a number of the document "
 		    "is not finite (the input is too extreme)");
 	return 0;
@@ -682,6 +666,7 @@ loft_cad_free(struct loft_cad_doc *d)
 	if (d->f != NULL && d->f->free != NULL)
 		d->f->free(d);
 	loft_writer_free(&d->out);
+	loft_writer_free(&d->head);
 	free(d->tmp);
 	free(d->surf);
 	d->tmp = d->surf = NULL;

@@ -23,27 +23,37 @@ struct dxf {
 	const char *cur;        /* the current record's layer */
 };
 
+/* A group's code line, right-justified in 3 columns as AutoCAD writes it
+ * (by hand: snprintf here was most of the time of a large DXF). */
+static void
+code(struct loft_cad_doc *d, int c)
+{
+	char b[8];
+	int n = 0, k;
+
+	for (k = c; k > 0 || n == 0; k /= 10)
+		b[6 - n++] = (char)('0' + k % 10);
+	while (n < 3)
+		b[6 - n++] = ' ';
+	b[7] = '\n';
+	loft_cad_put(d, b + 7 - n, (size_t)n + 1);
+}
+
 /* One group: its code line and its value line. */
 static void
-group(struct loft_cad_doc *d, int code, const char *val)
+group(struct loft_cad_doc *d, int c, const char *val)
 {
-	char buf[16];
-
-	snprintf(buf, sizeof buf, "%3d\n", code);
-	loft_cad_puts(d, buf);
+	code(d, c);
 	loft_cad_puts(d, val);
-	loft_cad_puts(d, "\n");
+	loft_cad_put(d, "\n", 1);
 }
 
 static void
-group_num(struct loft_cad_doc *d, int code, double x)
+group_num(struct loft_cad_doc *d, int c, double x)
 {
-	char buf[16];
-
-	snprintf(buf, sizeof buf, "%3d\n", code);
-	loft_cad_puts(d, buf);
+	code(d, c);
 	loft_cad_putnum(d, x);
-	loft_cad_puts(d, "\n");
+	loft_cad_put(d, "\n", 1);
 }
 
 static void
@@ -78,13 +88,17 @@ entity(struct loft_cad_doc *d, const char *type, const char *subclass)
 		group(d, 100, subclass);
 }
 
+/* A point's groups 10, 20 (and 30), the bulk of a large DXF. */
 static void
 point(struct loft_cad_doc *d, const double *p, int dim)
 {
-	group_num(d, 10, p[0]);
-	group_num(d, 20, p[1]);
-	if (dim == 3)
-		group_num(d, 30, p[2]);
+	static const char *const codes[] = { " 10\n", " 20\n", " 30\n" };
+
+	for (int k = 0; k < dim; k++) {
+		loft_cad_put(d, codes[k], 4);
+		loft_cad_putnum(d, p[k]);
+		loft_cad_put(d, "\n", 1);
+	}
 }
 
 static size_t
@@ -242,12 +256,11 @@ dxf_end(struct loft_cad_doc *d)
 		{ "in", 1 }, { "mm", 4 }, { "cm", 5 }, { "m", 6 },
 	};
 	struct dxf *x = d->state;
-	struct loft_writer body;
 	int unit = 0;
 
 	group(d, 0, "ENDSEC");
 	group(d, 0, "EOF");
-	loft_cad_take(d, &body);
+	loft_cad_to_head(d, 1);
 	for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
 		if (strcmp(d->o.unit_name, units[i].word) == 0)
 			unit = units[i].code;
@@ -282,8 +295,7 @@ dxf_end(struct loft_cad_doc *d)
 	}
 	group(d, 0, "ENDTAB");
 	group(d, 0, "ENDSEC");
-	loft_cad_put(d, body.buf, body.len);
-	loft_writer_free(&body);
+	loft_cad_to_head(d, 0);
 	return 0;
 }
 

@@ -186,7 +186,6 @@ iges_end(struct loft_cad_doc *d)
 		{ "m", "M", 6 },
 	};
 	struct iges *g = d->state;
-	struct loft_writer body;
 	char tok[64], line[96];
 	const char *gl[25];
 	char hu[32], big[LOFT_NUMBUF + 2], res[LOFT_NUMBUF + 2], fl[8];
@@ -213,7 +212,7 @@ iges_end(struct loft_cad_doc *d)
 	gl[20] = "4Hloft"; gl[21] = "4Hloft"; gl[22] = "11"; gl[23] = "0";
 	gl[24] = "15H19700101.000000";
 
-	loft_cad_take(d, &body);
+	loft_cad_to_head(d, 1);
 	snprintf(line, sizeof line, "%-*sS%7d\n", GLOBAL_COLS,
 	    "loft tocad: exact B-spline curves (126) and surfaces (128)", 1);
 	loft_cad_puts(d, line);
@@ -240,8 +239,7 @@ iges_end(struct loft_cad_doc *d)
 		loft_cad_puts(d, " ");
 	loft_cad_puts(d, tok);
 	loft_cad_put(d, g->dir.buf, g->dir.len);
-	loft_cad_put(d, body.buf, body.len);
-	loft_writer_free(&body);
+	loft_cad_to_head(d, 0);
 	snprintf(line, sizeof line, "S%7dG%7ldD%7ldP%7ld%*sT%7d\n", 1, ng,
 	    g->nde, g->np, GLOBAL_COLS - 32, "", 1);
 	loft_cad_puts(d, line);

@@ -55,13 +55,16 @@ void loft_bezier_split(const double *ctl, int deg, int dim, double t,
     double *left, double *right);
 
 /*
- * A bound on the distance between the Bezier curve ctl of degree deg and
- * the straight segment from its first to its last control point, both
- * at the same parameter: the largest distance from control point i to
- * the point i / deg along the segment (the convex hull property of the
- * difference, which is a Bezier curve of those control points).
+ * The fewest equal parameter steps n that put the polyline through the
+ * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
+ * the same parameter, so every point of the curve is within tol of the
+ * polyline): linear interpolation over steps h errs by at most
+ * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
+ * difference of the control points.  tol > 0.  Returns 1 to max, or 0
+ * when more than max steps would be needed.
  */
-double loft_bezier_flatness(const double *ctl, int deg, int dim);
+long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
+    long max);
 
 /* ------------------------------------------------------------------ */
 /* Documents (cad.c)                                                   */
@@ -120,9 +123,8 @@ struct loft_cad_opts {
 struct loft_cad_doc;
 
 /*
- * A format: every callback gets the document and writes into
- * d->out through loft_cad_put, loft_cad_putnum and the loft_put_*
- * functions.  They return 0 or LOFT_ENOMEM.  begin is called once before
+ * A format: every callback gets the document and writes into it
+ * through loft_cad_put, loft_cad_puts and loft_cad_putnum.  They return 0 or LOFT_ENOMEM.  begin is called once before
  * the first record's geometry, end once after the last, begin_record
  * and end_record around each record's geometry.  NULL callbacks are
  * kinds the format cannot take.
@@ -164,7 +166,9 @@ extern const struct loft_cad_entry loft_cad_formats[];
 struct loft_cad_doc {
 	const struct loft_cad_format *f;
 	struct loft_cad_opts o;
-	struct loft_writer out;         /* the document's bytes */
+	struct loft_writer out;         /* the document's body */
+	struct loft_writer head;        /* and its head, written first */
+	int in_head;
 	void *state;                    /* the format's own */
 	size_t nrec;                    /* records written */
 	double box[6];                  /* lo x y z, hi x y z of all written */
@@ -194,7 +198,8 @@ int loft_cad_record(struct loft_cad_doc *d, const struct loft_record *rec,
 
 /*
  * End the document: the mesh of a mesh format, the format's end.  Returns
- * 0 with the document in d->out.buf[0..d->out.len), or LOFT_EINPUT when
+ * 0 with the document in d->head.buf[0..d->head.len) followed by
+ * d->out.buf[0..d->out.len), or LOFT_EINPUT when
  * no record was written ("nothing to draw"), LOFT_ENOMEM, LOFT_EGEOM when
  * a number was not finite.
  */
@@ -206,12 +211,12 @@ void loft_cad_free(struct loft_cad_doc *d);
 void loft_cad_put(struct loft_cad_doc *d, const void *s, size_t n);
 
 /*
- * Move what the document holds so far into *body, leaving the document
- * empty: for a format whose head can be made only after its body (a DXF
- * layer table, an SVG viewBox, IGES's directory).  The caller appends
- * body back with loft_cad_put and frees it with loft_writer_free.
+ * on = 1: what is appended from now on goes to the document's head,
+ * which is written before everything else (a DXF layer table, an SVG
+ * viewBox, IGES's directory: heads that can be made only after the
+ * body); on = 0: to the body again.
  */
-void loft_cad_take(struct loft_cad_doc *d, struct loft_writer *body);
+void loft_cad_to_head(struct loft_cad_doc *d, int on);
 
 /* Append the string s. */
 void loft_cad_puts(struct loft_cad_doc *d, const char *s);

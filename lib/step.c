@@ -171,13 +171,13 @@ step_end(struct loft_cad_doc *d)
 		{ "mm", ".MILLI.," }, { "cm", ".CENTI.," }, { "m", "$," },
 	};
 	struct step *s = d->state;
-	struct loft_writer body;
 	const char *prefix = NULL;
 
 	for (size_t i = 0; i < sizeof unit / sizeof unit[0]; i++)
 		if (strcmp(d->o.unit_name, unit[i][0]) == 0)
 			prefix = unit[i][1];
-	loft_cad_take(d, &body);
+	loft_cad_puts(d, "ENDSEC;\nEND-ISO-10303-21;\n");
+	loft_cad_to_head(d, 1);
 	loft_cad_puts(d, "ISO-10303-21;\nHEADER;\n"
 	    "FILE_DESCRIPTION(('loft tocad: exact B-spline curves and "
 	    "surfaces'),'2;1');\n"
@@ -215,9 +215,7 @@ step_end(struct loft_cad_doc *d)
 	for (size_t i = 0; i < s->nitem; i++)
 		put_long(d, i ? ",#%ld" : "#%ld", s->item[i]);
 	loft_cad_puts(d, "));\n");
-	loft_cad_put(d, body.buf, body.len);
-	loft_writer_free(&body);
-	loft_cad_puts(d, "ENDSEC;\nEND-ISO-10303-21;\n");
+	loft_cad_to_head(d, 0);
 	return 0;
 }
 

@@ -171,7 +171,6 @@ static int
 svg_end(struct loft_cad_doc *d)
 {
 	struct svg *s = d->state;
-	struct loft_writer body;
 	double w = s->hi[0] - s->lo[0], h = s->hi[1] - s->lo[1];
 	double sw;
 
@@ -182,7 +181,8 @@ svg_end(struct loft_cad_doc *d)
 	else if (!(h > 0))
 		h = w * 1e-3;
 	sw = (w > h ? w : h) * 1e-3;    /* a hairline of the page */
-	loft_cad_take(d, &body);
+	loft_cad_puts(d, "</g>\n</svg>\n");
+	loft_cad_to_head(d, 1);
 	loft_cad_puts(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"");
 	loft_cad_putnum(d, w * d->o.unit_mm);
@@ -200,9 +200,7 @@ svg_end(struct loft_cad_doc *d)
 	    "stroke=\"black\" stroke-width=\"");
 	loft_cad_putnum(d, sw);
 	loft_cad_puts(d, "\">\n");
-	loft_cad_put(d, body.buf, body.len);
-	loft_writer_free(&body);
-	loft_cad_puts(d, "</g>\n</svg>\n");
+	loft_cad_to_head(d, 0);
 	return 0;
 }
 

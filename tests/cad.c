@@ -118,14 +118,15 @@ test_curves(void)
 	}
 }
 
-/* Splitting and the flatness bound. */
+/* Splitting, and the steps of a polyline within a tolerance. */
 static void
 test_split(void)
 {
 	for (int trial = 0; trial < 10; trial++) {
 		int deg = 1 + trial, dim = 3;
 		double c[12 * 3], l[12 * 3], r[12 * 3], t = 0.3 + 0.04 * trial;
-		double worst = 0, bound, far = 0;
+		double worst = 0, tol, far = 0;
+		long steps;
 
 		for (int i = 0; i < (deg + 1) * dim; i++)
 			c[i] = rnd();
@@ -142,20 +143,43 @@ test_split(void)
 			worst = fmax(worst, dist(p, q, dim));
 		}
 		CHECK(worst <= 1e-14, "split of degree %d: off by %g", deg, worst);
-		/* the bound holds at every parameter and is not loose by more
-		 * than the degree (it is attained for a straight line's
-		 * control points off the chord) */
-		bound = loft_bezier_flatness(c, deg, dim);
-		for (int k = 0; k <= 200; k++) {
-			double s = k / 200.0, p[3], q[3];
+		/* the polyline of loft_bezier_steps' steps is within the
+		 * tolerance at every parameter, sampled 20 times a step */
+		tol = 1e-3 * (trial + 1);
+		steps = loft_bezier_steps(c, deg, dim, tol, 100000);
+		for (long j = 0; j < steps; j++) {
+			double a[3], b[3];
 
-			loft_bezier_eval(c, deg + 1, dim, s, p, NULL, NULL);
-			for (int j = 0; j < dim; j++)
-				q[j] = c[j] + s * (c[deg * dim + j] - c[j]);
-			far = fmax(far, dist(p, q, dim));
+			loft_bezier_eval(c, deg + 1, dim, (double)j / steps, a,
+			    NULL, NULL);
+			loft_bezier_eval(c, deg + 1, dim, (double)(j + 1) / steps,
+			    b, NULL, NULL);
+			for (int k = 0; k <= 20; k++) {
+				double s = k / 20.0, p[3], q[3];
+
+				loft_bezier_eval(c, deg + 1, dim, (j + s) / steps, p,
+				    NULL, NULL);
+				for (int i = 0; i < dim; i++)
+					q[i] = a[i] + s * (b[i] - a[i]);
+				far = fmax(far, dist(p, q, dim));
+			}
 		}
-		CHECK(far <= bound * (1 + 1e-12), "flatness of degree %d: %g "
-		    "exceeds the bound %g", deg, far, bound);
+		CHECK(steps >= 1 && far <= tol, "%ld steps of degree %d: %g "
+		    "from the curve, over the tolerance %g", steps, deg, far, tol);
+	}
+	/* by hand: the parabola of (0,0) (1,2) (2,0) has C'' = (0,-8), and
+	 * steps h err by h^2 (8/8) at their middles: h = 0.1 for 0.01, not
+	 * enough for 0.0099 */
+	{
+		double p[6] = { 0, 0, 1, 2, 2, 0 };
+
+		CHECK(loft_bezier_steps(p, 2, 2, 0.01, 1000) == 10 &&
+		    loft_bezier_steps(p, 2, 2, 0.0099, 1000) == 11 &&
+		    loft_bezier_steps(p, 2, 2, 1e-9, 1000) == 0,
+		    "steps of a parabola: %ld %ld %ld, want 10 11 0",
+		    loft_bezier_steps(p, 2, 2, 0.01, 1000),
+		    loft_bezier_steps(p, 2, 2, 0.0099, 1000),
+		    loft_bezier_steps(p, 2, 2, 1e-9, 1000));
 	}
 }
 
