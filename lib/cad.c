@@ -41,6 +41,11 @@ const struct loft_cad_entry loft_cad_formats[] = {
  */
 #define WELD_TOL 1e-9
 
+/* Edge parameters nearer than this are one place (loft.5's links). */
+#define EDGE_TOL 1e-9
+
+#define SURF_HEAD 3     /* numbers before a kept surface's control points */
+
 void
 loft_cad_init(struct loft_cad_doc *d, const struct loft_cad_format *f,
     const struct loft_cad_opts *o)
@@ -392,18 +397,23 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	return end_item(d, rc);
 }
 
-/* Keep a surface for the mesh: m, n, then its control points. */
+/*
+ * Keep a surface for the mesh: m, n, its patch's index in d->design (or
+ * -1), then its control points.
+ */
 static int
-keep_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
+keep_surface(struct loft_cad_doc *d, const struct loft_bsurf *s, long ip)
 {
-	size_t n = 2 + 3 * (size_t)(s->m + 1) * (s->n + 1);
+	size_t n = SURF_HEAD + 3 * (size_t)(s->m + 1) * (s->n + 1);
 
 	if (loft__grow((void **)&d->surf, &d->surfcap, d->nsurf + n,
 	    sizeof *d->surf) != 0)
 		return LOFT_ENOMEM;
 	d->surf[d->nsurf] = s->m;
 	d->surf[d->nsurf + 1] = s->n;
-	memcpy(d->surf + d->nsurf + 2, s->ctl, (n - 2) * sizeof *d->surf);
+	d->surf[d->nsurf + 2] = (double)ip;
+	memcpy(d->surf + d->nsurf + SURF_HEAD, s->ctl, (n - SURF_HEAD) *
+	    sizeof *d->surf);
 	d->nsurf += n;
 	return 0;
 }
@@ -418,6 +428,7 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 	char name[128];
 	double box[6];
 	size_t np;
+	long ip = -1;
 
 	if (loft_surface_from_record(rec, &s, err) != 0)
 		return LOFT_EINPUT;
@@ -442,8 +453,17 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 	bs.ctl = d->tmp;
 	if (item(d, rec, &it, name, sizeof name, bs.ctl, np, 3, box, err) != 0)
 		return LOFT_EGEOM;
-	return end_item(d, begin_item(d, &it, box) || (d->f->surface != NULL ?
-	    d->f->surface(d, &bs) : keep_surface(d, &bs)));
+	if (d->f->surface != NULL)
+		return end_item(d, begin_item(d, &it, box) ||
+		    d->f->surface(d, &bs));
+	/* for the mesh: a patch with an id, and its neighbours */
+	if (strcmp(s.type, "patch") == 0 && loft_attr(rec, "id") != NULL) {
+		if (loft_design_add(&d->design, rec, err) != 0)
+			return LOFT_EINPUT;
+		d->design.p[d->design.n - 1].rec = NULL;    /* rec is reused */
+		ip = (long)d->design.n - 1;
+	}
+	return end_item(d, begin_item(d, &it, box) || keep_surface(d, &bs, ip));
 }
 
 int
@@ -509,33 +529,174 @@ struct mesh {
 	size_t nt, tcap;
 };
 
-/* The vertices of patch (m, n, ctl) on an N x N grid and its triangles. */
+/* The points of an edge beyond its N steps: parameters, sorted. */
+struct extra {
+	double *t;
+	size_t n, cap;
+};
+
 static int
-mesh_patch(struct mesh *me, const double *ctl, int m, int n, long N)
+by_value(const void *a, const void *b)
 {
-	size_t base = me->nv, w = (size_t)N + 1;
-	struct loft_bsurf s = { ctl, m, n };
+	double x = *(const double *)a, y = *(const double *)b;
 
-	if (loft__grow((void **)&me->v, &me->vcap, 3 * (me->nv + w * w),
-	    sizeof *me->v) != 0 ||
-	    loft__grow((void **)&me->t, &me->tcap, 3 * (me->nt + 2 * (w - 1) *
-	    (w - 1)), sizeof *me->t) != 0)
-		return LOFT_ENOMEM;
-	for (size_t i = 0; i < w; i++)
-		for (size_t j = 0; j < w; j++)
-			loft_bezier_surface_eval(s.ctl, m, n, (double)i / N,
-			    (double)j / N, me->v + 3 * me->nv++, NULL, NULL);
-	/* two triangles a cell, counter-clockwise in (u, v) */
-	for (size_t i = 0; i + 1 < w; i++)
-		for (size_t j = 0; j + 1 < w; j++) {
-			size_t a = base + i * w + j, b = a + w;
-			size_t *t = me->t + 3 * me->nt;
+	return x < y ? -1 : x > y;
+}
 
-			t[0] = a; t[1] = b; t[2] = b + 1;
-			t[3] = a; t[4] = b + 1; t[5] = a + 1;
-			me->nt += 2;
+/*
+ * The extra points of edge e of design patch ip: the steps k/N of each
+ * neighbour across it that fall between this edge's own steps (a
+ * T-junction: the neighbour covers part of the edge), mapped into this
+ * edge's parameter by the two links; sorted, each once.
+ */
+static int
+edge_extras(const struct loft_design *dz, size_t ip, int e, long N,
+    struct extra *x)
+{
+	const struct loft_patch *p = &dz->p[ip];
+
+	x->n = 0;
+	for (size_t l = 0; l < p->nlink[e]; l++) {
+		const struct loft_link *L = &p->link[e][l];
+		long iq = loft_design_find(dz, L->id);
+		const struct loft_link *B = NULL;
+
+		if (iq < 0)
+			continue;
+		for (int f = 0; f < 4 && B == NULL; f++)
+			for (size_t k = 0; k < dz->p[iq].nlink[f]; k++)
+				if (dz->p[iq].link[f][k].id == p->id)
+					B = &dz->p[iq].link[f][k];
+		if (B == NULL || fabs(B->b - B->a) < EDGE_TOL)
+			continue;
+		for (long k = 0; k <= N; k++) {
+			double s = (double)k / N, lo = fmin(B->a, B->b);
+			double hi = fmax(B->a, B->b), t, r;
+
+			if (s < lo - EDGE_TOL || s > hi + EDGE_TOL)
+				continue;
+			t = L->a + (s - B->a) * (L->b - L->a) / (B->b - B->a);
+			r = t * N - floor(t * N + 0.5);
+			if (t <= EDGE_TOL || t >= 1 - EDGE_TOL ||
+			    fabs(r) <= EDGE_TOL * N)
+				continue;       /* one of this edge's own steps */
+			if (loft__grow((void **)&x->t, &x->cap, x->n + 1,
+			    sizeof *x->t) != 0)
+				return LOFT_ENOMEM;
+			x->t[x->n++] = t;
 		}
+	}
+	if (x->n > 1)
+		qsort(x->t, x->n, sizeof *x->t, by_value);
 	return 0;
+}
+
+static int
+add_vertex(struct mesh *me, const struct loft_bsurf *s, double u, double v,
+    size_t *at)
+{
+	if (loft__grow((void **)&me->v, &me->vcap, 3 * (me->nv + 1),
+	    sizeof *me->v) != 0)
+		return LOFT_ENOMEM;
+	loft_bezier_surface_eval(s->ctl, s->m, s->n, u, v, me->v + 3 * me->nv,
+	    NULL, NULL);
+	*at = me->nv++;
+	return 0;
+}
+
+static int
+add_triangle(struct mesh *me, size_t a, size_t b, size_t c)
+{
+	if (loft__grow((void **)&me->t, &me->tcap, 3 * (me->nt + 1),
+	    sizeof *me->t) != 0)
+		return LOFT_ENOMEM;
+	me->t[3 * me->nt] = a;
+	me->t[3 * me->nt + 1] = b;
+	me->t[3 * me->nt + 2] = c;
+	me->nt++;
+	return 0;
+}
+
+/* The extras of x strictly between lo and hi, from lo's end: "rev" from hi's. */
+static int
+side(struct mesh *me, const struct loft_bsurf *s, const struct extra *x,
+    double lo, double hi, int rev, int dir, double fixed, size_t *poly,
+    size_t *np)
+{
+	for (size_t k = 0; k < x->n; k++) {
+		double t = x->t[rev ? x->n - 1 - k : k];
+		int rc;
+
+		if (t <= lo || t >= hi)
+			continue;
+		rc = dir == 0 ? add_vertex(me, s, t, fixed, &poly[*np]) :
+		    add_vertex(me, s, fixed, t, &poly[*np]);
+		if (rc != 0)
+			return rc;
+		++*np;
+	}
+	return 0;
+}
+
+/*
+ * Patch s on an N x N grid: two triangles a cell, counter-clockwise in
+ * (u, v); a cell with extra points on its sides (x[edge], by enum
+ * loft_edge) a fan around its centre through all its points.
+ */
+static int
+mesh_patch(struct mesh *me, const struct loft_bsurf *s, long N,
+    const struct extra *x)
+{
+	size_t base = me->nv, w = (size_t)N + 1, at;
+	size_t *poly = NULL;
+	int rc = 0;
+
+	for (size_t i = 0; rc == 0 && i < w; i++)
+		for (size_t j = 0; rc == 0 && j < w; j++)
+			rc = add_vertex(me, s, (double)i / N, (double)j / N, &at);
+	for (size_t i = 0; rc == 0 && i + 1 < w; i++)
+		for (size_t j = 0; rc == 0 && j + 1 < w; j++) {
+			size_t a = base + i * w + j, b = a + w, np = 0, c;
+			double u0 = (double)i / N, u1 = (double)(i + 1) / N;
+			double v0 = (double)j / N, v1 = (double)(j + 1) / N;
+			size_t cap = 4 + (j == 0 ? x[LOFT_V0].n : 0) +
+			    (i + 2 == w ? x[LOFT_U1].n : 0) +
+			    (j + 2 == w ? x[LOFT_V1].n : 0) +
+			    (i == 0 ? x[LOFT_U0].n : 0);
+
+			if (cap == 4) {
+				rc = add_triangle(me, a, b, b + 1) ||
+				    add_triangle(me, a, b + 1, a + 1);
+				continue;
+			}
+			free(poly);
+			if ((poly = malloc(cap * sizeof *poly)) == NULL)
+				return LOFT_ENOMEM;
+			/* counter-clockwise: v = v0, u = u1, v = v1, u = u0 */
+			poly[np++] = a;
+			if (j == 0)
+				rc = side(me, s, &x[LOFT_V0], u0, u1, 0, 0, 0, poly,
+				    &np);
+			poly[np++] = b;
+			if (rc == 0 && i + 2 == w)
+				rc = side(me, s, &x[LOFT_U1], v0, v1, 0, 1, 1, poly,
+				    &np);
+			poly[np++] = b + 1;
+			if (rc == 0 && j + 2 == w)
+				rc = side(me, s, &x[LOFT_V1], u0, u1, 1, 0, 1, poly,
+				    &np);
+			poly[np++] = a + 1;
+			if (rc == 0 && i == 0)
+				rc = side(me, s, &x[LOFT_U0], v0, v1, 1, 1, 0, poly,
+				    &np);
+			if (rc == 0)
+				rc = add_vertex(me, s, (u0 + u1) / 2, (v0 + v1) / 2,
+				    &c);
+			for (size_t k = 0; rc == 0 && k < np; k++)
+				rc = add_triangle(me, c, poly[k], poly[(k + 1) % np]);
+		}
+	free(poly);
+	return rc ? LOFT_ENOMEM : 0;
 }
 
 static const double *weld_v;
@@ -611,6 +772,8 @@ static int
 make_mesh(struct loft_cad_doc *d)
 {
 	struct mesh me = { NULL, 0, 0, NULL, 0, 0 };
+	struct extra x[4] = { { NULL, 0, 0 }, { NULL, 0, 0 }, { NULL, 0, 0 },
+	    { NULL, 0, 0 } };
 	double size = 0, tol;
 	long N = d->o.per;
 	int rc = 0;
@@ -621,17 +784,28 @@ make_mesh(struct loft_cad_doc *d)
 	/* one step count for every patch, so shared edges match */
 	for (size_t i = 0; N == 0 && i < d->nsurf; ) {
 		int m = (int)d->surf[i], n = (int)d->surf[i + 1];
-		long s = steps_for(d->surf + i + 2, m, n, tol);
+		long s = steps_for(d->surf + i + SURF_HEAD, m, n, tol);
 
 		N = s > N ? s : N;
-		i += 2 + 3 * (size_t)(m + 1) * (n + 1);
+		i += SURF_HEAD + 3 * (size_t)(m + 1) * (n + 1);
 	}
+	N = N > 0 ? N : 1;
 	for (size_t i = 0; rc == 0 && i < d->nsurf; ) {
-		int m = (int)d->surf[i], n = (int)d->surf[i + 1];
+		struct loft_bsurf s = { d->surf + i + SURF_HEAD,
+		    (int)d->surf[i], (int)d->surf[i + 1] };
+		long ip = (long)d->surf[i + 2];
 
-		rc = mesh_patch(&me, d->surf + i + 2, m, n, N > 0 ? N : 1);
-		i += 2 + 3 * (size_t)(m + 1) * (n + 1);
+		for (int e = 0; e < 4; e++) {
+			x[e].n = 0;
+			if (rc == 0 && ip >= 0)
+				rc = edge_extras(&d->design, (size_t)ip, e, N, &x[e]);
+		}
+		if (rc == 0)
+			rc = mesh_patch(&me, &s, N, x);
+		i += SURF_HEAD + 3 * (size_t)(s.m + 1) * (s.n + 1);
 	}
+	for (int e = 0; e < 4; e++)
+		free(x[e].t);
 	if (rc == 0)
 		rc = weld(&me, WELD_TOL * size);
 	if (rc == 0)
@@ -670,4 +844,5 @@ loft_cad_free(struct loft_cad_doc *d)
 	free(d->tmp);
 	free(d->surf);
 	d->tmp = d->surf = NULL;
+	loft_design_free(&d->design);
 }

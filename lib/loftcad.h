@@ -178,6 +178,7 @@ struct loft_cad_doc {
 	size_t tmpcap;
 	double *surf;
 	size_t nsurf, surfcap;
+	struct loft_design design;      /* their patches' links */
 };
 
 /*

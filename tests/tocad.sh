@@ -542,6 +542,14 @@ head -n 1 "$T/hull.stl" | grep -q '^solid ' && tail -n 1 "$T/hull.stl" | grep -q
 # vertices' order says
 set -- $(stl_edges "$T/hull.stl")
 [ "$*" = "256 48 0 0" ] && ok || no "stl: facets, boundary, twice-directed, bad normals: $*, want 256 48 0 0"
+# a T-junction: patch 2's edge u = 1 against patches 4 (v 0 to 0.4) and 5
+# (0.4 to 1), 5 steps each: the points of each side are put into the
+# other's edge, so the only free edges are the outline's 7 sides of 5
+run "$B/tocad -f stl -n 5 $T/tee.patch"
+status 0
+cp "$T/out" "$T/tee.stl"
+set -- $(stl_edges "$T/tee.stl")
+[ "$2 $3 $4" = "35 0 0" ] && ok || no "stl T-junction: boundary, twice-directed, bad normals: $2 $3 $4, want 35 0 0"
 # vertices on the surface: each is one of sample's wireframe points
 awk 'FNR == 1 { f++ } f == 1 && NF { P[$1 " " $2 " " $3] = 1; X[n + 0] = $1; Y[n + 0] = $2; Z[n++] = $3; next }
     f == 2 && /vertex/ { m = 1e300; for (i = 0; i < n; i++) {
@@ -559,13 +567,14 @@ n1=$($B/tocad -f stl -t 0.1 "$T/hull.patch" | grep -c 'facet normal')
 n2=$($B/tocad -f stl -t 0.01 "$T/hull.patch" | grep -c 'facet normal')
 [ "$n2" -gt "$n1" ] && [ "$n1" -ge 2 ] && ok || no "stl -t: $n1 facets at 0.1, $n2 at 0.01"
 if [ -n "$ADMESH" ]; then
-	# admesh's exact check: disconnected edges only on the boundary (48),
+	# admesh's exact check: disconnected edges only on the boundary,
 	# and no facet it must reverse to orient the mesh
-	for f in hull.stl hullb.stl; do
+	for f in hull.stl hullb.stl tee.stl; do
 		admesh -e "$T/$f" >"$T/adm" 2>&1
 		b=$(awk -F: '/disconnected edge/ { n = $2 + 0; k = /1 disc/ ? 1 : /2 disc/ ? 2 : 3; s += k * n }
 		    END { print s + 0 }' "$T/adm")
-		[ "$b" = 48 ] && ok || no "admesh -e $f: $b disconnected edges, want 48: $(grep disconnected "$T/adm")"
+		want=$([ $f = tee.stl ] && echo 35 || echo 48)
+		[ "$b" = "$want" ] && ok || no "admesh -e $f: $b disconnected edges, want $want: $(grep disconnected "$T/adm")"
 		admesh -d "$T/$f" >"$T/adm" 2>&1
 		grep -q 'Facets reversed *: *0$' "$T/adm" && ok ||
 		    no "admesh -d $f: $(grep -i reversed "$T/adm")"
