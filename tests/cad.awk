@@ -40,3 +40,37 @@ function segdist(px, py, ax, ay, bx, by,    dx, dy, l, t) {
 	if (t > 1) t = 1
 	return sqrt((px - ax - t * dx)^2 + (py - ay - t * dy)^2)
 }
+
+# The B-spline entity step_eval and iges_eval parsed, in globals: surf,
+# and a curve's degree p, knots K[0..nk-1], control points X, Y, Z; or a
+# surface's degrees p, q, knots KU, KV, mu x mv control points SX, SY,
+# SZ[i, j].
+
+# ev2(u, v): the surface at (u, v) into R, by de Boor in v along each
+# row of control points, then in u through the results.
+function ev2(u, v,    i, j, TX, TY, TZ, CX, CY, CZ) {
+	for (i = 0; i < mu; i++) {
+		for (j = 0; j < mv; j++) { CX[j] = SX[i, j]; CY[j] = SY[i, j]; CZ[j] = SZ[i, j] }
+		deboor(q, KV, q + mv + 1, CX, CY, CZ, v, R)
+		TX[i] = R[1]; TY[i] = R[2]; TZ[i] = R[3]
+	}
+	deboor(p, KU, p + mu + 1, TX, TY, TZ, u, R)
+}
+
+# check_row(): the distance of the row of sample's output in $0 (x y [z]
+# u, or x y z u v) from the entity there, into the worst w and count cnt.
+function check_row(    e, k) {
+	if (surf) {
+		ev2($4, $5)
+		e = sqrt((R[1] - $1)^2 + (R[2] - $2)^2 + (R[3] - $3)^2)
+	} else {
+		deboor(p, K, nk, X, Y, Z, $NF, R)
+		e = 0
+		for (k = 1; k < NF; k++)
+			e += (R[k] - $k)^2
+		e = sqrt(e)
+	}
+	cnt++
+	if (e > w)
+		w = e
+}

@@ -39,14 +39,15 @@ bezier_sum(const double *b, int m, int n, int dim, double u, double v,
 	}
 }
 
+/* |a - b|, dim <= 3, by hypot (no overflow for large coordinates) */
 static double
 dist(const double *a, const double *b, int dim)
 {
-	double s = 0;
+	double d[3] = { 0, 0, 0 };
 
 	for (int k = 0; k < dim; k++)
-		s += (a[k] - b[k]) * (a[k] - b[k]);
-	return sqrt(s);
+		d[k] = a[k] - b[k];
+	return hypot(hypot(d[0], d[1]), d[2]);
 }
 
 /* A patch's Bezier net gives loft_patch_eval's points to 1e-12 of its size. */

@@ -310,11 +310,7 @@ step_eval() {
 	FNR == 1 || prevblank { rec++; k = int((rec - 1) / per) + 1
 		if (k != cur) parse(E[cur = k]) }
 	{ prevblank = (NF == 0) }
-	NF == 0 { next }
-	surf { ev2($4, $5); e = sqrt((R[1]-$1)^2 + (R[2]-$2)^2 + (R[3]-$3)^2) }
-	!surf { deboor(p, K, nk, X, Y, Z, $NF, R)
-		e = 0; for (k = 1; k < NF; k++) e += (R[k] - $k)^2; e = sqrt(e) }
-	{ cnt++ } e > w { w = e }
+	NF { check_row() }
 	END { print cnt ? w + 0 : "nothing" }
 	# lists: "(a,b,c)" items of the entity text, in order
 	function lists(s, L,    n, d, i, ch, cur) {
@@ -348,14 +344,7 @@ step_eval() {
 		nk = 0; n = split(ms, a, ","); split(ks, b, ",")
 		for (i = 1; i <= n; i++) for (r = 0; r < a[i]; r++) KK[nk++] = b[i] + 0
 	}
-	function ev2(u, v,    i, j, TX, TY, TZ, CX, CY, CZ) {
-		for (i = 0; i < mu; i++) {
-			for (j = 0; j < mv; j++) { CX[j] = SX[i, j]; CY[j] = SY[i, j]; CZ[j] = SZ[i, j] }
-			deboor(q, KV, q + mv + 1, CX, CY, CZ, v, R)
-			TX[i] = R[1]; TY[i] = R[2]; TZ[i] = R[3]
-		}
-		deboor(p, KU, p + mu + 1, TX, TY, TZ, u, R)
-	}' "$1" "$2"
+' "$1" "$2"
 }
 
 # the structure: header, schema, data, one entity an instance, ends
@@ -370,19 +359,6 @@ step_valid() {
 		for (r in ref) if (!(r in seen)) { print r " referenced, not defined"; exit 1 } }' "$1"
 }
 
-run "$B/tocad -f step $T/ins.cubic"
-status 0
-cp "$T/out" "$T/ins.step"
-v=$(step_valid "$T/ins.step") && ok || no "step: $v"
-step_eval "$T/ins.step" "$T/ins.pts" >"$T/val"; within "step: the insole against sample" 3e-12
-$B/tocad -f step "$T/hull.patch" >"$T/hull.step"
-v=$(step_valid "$T/hull.step") && ok || no "step hull: $v"
-step_eval "$T/hull.step" "$T/hull.pts" >"$T/val"; within "step: the hull against sample" 1e-13
-$B/sample -n 8 -u "$T/tee.patch" >"$T/tee.pts"
-$B/tocad -f step "$T/tee.patch" >"$T/tee.step"
-step_eval "$T/tee.step" "$T/tee.pts" >"$T/val"; within "step: three patches against sample" 1e-13
-$B/tocad -f step "$T/space.cubic" >"$T/space.step"
-step_eval "$T/space.step" "$T/space.pts" >"$T/val"; within "step: a space curve against sample" 1e-12
 
 # ---- IGES ----------------------------------------------------------------------
 
@@ -428,11 +404,7 @@ iges_eval() {
 	FNR == 1 || prevblank { rec++; k = int((rec - 1) / per) + 1
 		if (k != cur) parse(E[cur = k]) }
 	{ prevblank = (NF == 0) }
-	NF == 0 { next }
-	surf { ev2($4, $5); e = sqrt((R[1]-$1)^2 + (R[2]-$2)^2 + (R[3]-$3)^2) }
-	!surf { deboor(p, K, nk, X, Y, Z, $NF, R)
-		e = 0; for (k = 1; k < NF; k++) e += (R[k] - $k)^2; e = sqrt(e) }
-	{ cnt++ } e > w { w = e }
+	NF { check_row() }
 	END { print cnt ? w + 0 : "nothing" }
 	function parse(s,    a, i, j, o, kk, nc) {
 		split(s, a, ",")
@@ -451,27 +423,26 @@ iges_eval() {
 		o += mu * mv
 		for (j = 0; j < mv; j++) for (i = 0; i < mu; i++) {
 			SX[i, j] = a[o]; SY[i, j] = a[o + 1]; SZ[i, j] = a[o + 2]; o += 3 }
-	}
-	function ev2(u, v,    i, j, TX, TY, TZ, CX, CY, CZ) {
-		for (i = 0; i < mu; i++) {
-			for (j = 0; j < mv; j++) { CX[j] = SX[i, j]; CY[j] = SY[i, j]; CZ[j] = SZ[i, j] }
-			deboor(q, KV, q + mv + 1, CX, CY, CZ, v, R)
-			TX[i] = R[1]; TY[i] = R[2]; TZ[i] = R[3]
-		}
-		deboor(p, KU, p + mu + 1, TX, TY, TZ, u, R)
 	}' - "$2"
 }
 
-run "$B/tocad -f iges $T/ins.cubic"
-status 0
-cp "$T/out" "$T/ins.igs"
-v=$(iges_valid "$T/ins.igs") && ok || no "iges: $v"
-iges_eval "$T/ins.igs" "$T/ins.pts" >"$T/val"; within "iges: the insole against sample" 3e-12
-$B/tocad -f iges "$T/tee.patch" >"$T/tee.igs"
-v=$(iges_valid "$T/tee.igs") && ok || no "iges tee: $v"
-iges_eval "$T/tee.igs" "$T/tee.pts" >"$T/val"; within "iges: three patches against sample" 1e-13
-$B/tocad -f iges "$T/space.cubic" >"$T/space.igs"
-iges_eval "$T/space.igs" "$T/space.pts" >"$T/val"; within "iges: a space curve against sample" 1e-12
+# both formats, every kind of record: the structure, and the entities
+# evaluated at sample's parameters
+$B/sample -n 8 -u "$T/tee.patch" >"$T/tee.pts"
+for f in step:step iges:igs; do
+	fmt=${f%:*}
+	ext=${f#*:}
+	for c in ins.cubic:3e-12 hull.patch:1e-13 tee.patch:1e-13 space.cubic:1e-12; do
+		r=${c%:*}
+		name=${r%.*}
+		run "$B/tocad -f $fmt $T/$r"
+		status 0
+		cp "$T/out" "$T/$name.$ext"
+		v=$("${fmt}_valid" "$T/$name.$ext") && ok || no "$fmt $name: $v"
+		"${fmt}_eval" "$T/$name.$ext" "$T/$name.pts" >"$T/val"
+		within "$fmt: $name against sample" "${c#*:}"
+	done
+done
 
 if [ -n "$OCCPY" ]; then
 	# OpenCASCADE (through gmsh) reads the files; every point sample
