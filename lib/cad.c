@@ -768,6 +768,109 @@ weld(struct mesh *me, double tol)
 	return 0;
 }
 
+/* A triangle's side: its ends (lower first), the triangle, its sense. */
+struct side {
+	size_t a, b, t;
+	int up;                 /* the triangle runs from a to b */
+};
+
+static int
+by_ends(const void *x, const void *y)
+{
+	const struct side *p = x, *q = y;
+
+	if (p->a != q->a)
+		return p->a < q->a ? -1 : 1;
+	return p->b < q->b ? -1 : p->b > q->b;
+}
+
+/*
+ * Orient the welded mesh consistently: across each side two triangles
+ * share, they must run it opposite ways.  Each connected piece keeps the
+ * orientation of its first triangle (its first patch's f_u x f_v) and the
+ * rest follow by a breadth-first walk; a piece that cannot be oriented
+ * (a Moebius band) keeps what the walk gave it.
+ */
+static int
+orient(struct mesh *me)
+{
+	size_t ns = 3 * me->nt, head = 0, tail = 0;
+	struct side *s = malloc((ns + 1) * sizeof *s);
+	size_t *nb = malloc((ns + 1) * sizeof *nb);
+	size_t *queue = malloc((me->nt + 1) * sizeof *queue);
+	unsigned char *same = malloc(ns + 1), *flip = calloc(me->nt + 1, 1);
+	unsigned char *seen = calloc(me->nt + 1, 1);
+	int rc = LOFT_ENOMEM;
+
+	if (s == NULL || nb == NULL || queue == NULL || same == NULL ||
+	    flip == NULL || seen == NULL)
+		goto out;
+	for (size_t t = 0; t < me->nt; t++)
+		for (int k = 0; k < 3; k++) {
+			size_t a = me->t[3 * t + k], b = me->t[3 * t + (k + 1) % 3];
+			struct side *e = &s[3 * t + k];
+
+			e->a = a < b ? a : b;
+			e->b = a < b ? b : a;
+			e->t = t;
+			e->up = a < b;
+			nb[3 * t + k] = (size_t)-1;
+		}
+	qsort(s, ns, sizeof *s, by_ends);
+	/* a side of exactly two triangles links them, in a free slot */
+	for (size_t i = 0; i + 1 < ns; i++) {
+		size_t j = i + 1;
+
+		if (by_ends(&s[i], &s[j]) != 0 || (j + 1 < ns &&
+		    by_ends(&s[j], &s[j + 1]) == 0))
+			continue;
+		for (int r = 0; r < 2; r++) {
+			size_t t = s[r ? j : i].t, k = 3 * t;
+
+			while (k < 3 * t + 2 && nb[k] != (size_t)-1)
+				k++;
+			nb[k] = s[r ? i : j].t;
+			same[k] = s[i].up == s[j].up;
+		}
+		i = j;
+	}
+	for (size_t t0 = 0; t0 < me->nt; t0++) {
+		if (seen[t0])
+			continue;
+		seen[t0] = 1;
+		queue[tail++] = t0;
+		while (head < tail) {
+			size_t t = queue[head++];
+
+			for (size_t k = 3 * t; k < 3 * t + 3; k++) {
+				size_t n = nb[k];
+
+				if (n == (size_t)-1 || seen[n])
+					continue;
+				seen[n] = 1;
+				flip[n] = flip[t] ^ same[k];
+				queue[tail++] = n;
+			}
+		}
+	}
+	for (size_t t = 0; t < me->nt; t++)
+		if (flip[t]) {
+			size_t x = me->t[3 * t + 1];
+
+			me->t[3 * t + 1] = me->t[3 * t + 2];
+			me->t[3 * t + 2] = x;
+		}
+	rc = 0;
+out:
+	free(s);
+	free(nb);
+	free(queue);
+	free(same);
+	free(flip);
+	free(seen);
+	return rc;
+}
+
 static int
 make_mesh(struct loft_cad_doc *d)
 {
@@ -808,6 +911,8 @@ make_mesh(struct loft_cad_doc *d)
 		free(x[e].t);
 	if (rc == 0)
 		rc = weld(&me, WELD_TOL * size);
+	if (rc == 0)
+		rc = orient(&me);
 	if (rc == 0)
 		rc = d->f->mesh(d, me.v, me.nv, me.t, me.nt);
 	free(me.v);

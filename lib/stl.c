@@ -1,9 +1,9 @@
 /*
  * stl.c: STL, ASCII or binary (tocad -b): the surfaces of the input as
  * one triangle mesh that cad.c made (one step count for every patch and
- * vertices welded, so patches that share an edge leave no crack there),
- * each facet with its unit normal, counter-clockwise seen from where the
- * normal points.  Binary STL holds single-precision floats, little-endian.
+ * vertices welded, so patches that share an edge leave no crack there,
+ * and oriented consistently), each facet with its unit normal,
+ * counter-clockwise seen from where the normal points.  Binary STL holds single-precision floats, little-endian.
  */
 #include <stdint.h>
 #include <string.h>

@@ -521,6 +521,23 @@ status 0
 cp "$T/out" "$T/tee.stl"
 set -- $(stl_edges "$T/tee.stl")
 [ "$2 $3 $4" = "35 0 0" ] && ok || no "stl T-junction: boundary, twice-directed, bad normals: $2 $3 $4, want 35 0 0"
+# the hull's second patch with u reversed (rows (0) (1) (0)_u (1)_u (h)
+# become (1) (0) -(1)_u -(0)_u (h)): the same surface run the other
+# way, so its own triangles face the other side; the mesh is oriented
+# across the shared edge all the same
+awk 'BEGIN { RS = ""; FS = "\n"; ORS = "" }
+    NR == 2 { split($4, r2, " "); split($5, r3, " ")
+	print $1 "\n" $3 "\n" $2 "\n"
+	for (i = 1; i <= 15; i++) printf "%s%.17g", (i > 1 ? " " : ""), -r3[i]
+	print "\n"
+	for (i = 1; i <= 15; i++) printf "%s%.17g", (i > 1 ? " " : ""), -r2[i]
+	print "\n" $6 "\n\n"; next }
+    { print $0 "\n\n" }' "$T/hull.patch" >"$T/rev.patch"
+run "$B/tocad -f stl -n 8 $T/rev.patch"
+status 0
+cp "$T/out" "$T/rev.stl"
+set -- $(stl_edges "$T/rev.stl")
+[ "$*" = "256 48 0 0" ] && ok || no "stl of a reversed patch: $*, want 256 48 0 0"
 # vertices on the surface: each is one of sample's wireframe points
 awk 'FNR == 1 { f++ } f == 1 && NF { P[$1 " " $2 " " $3] = 1; X[n + 0] = $1; Y[n + 0] = $2; Z[n++] = $3; next }
     f == 2 && /vertex/ { m = 1e300; for (i = 0; i < n; i++) {
@@ -540,7 +557,7 @@ n2=$($B/tocad -f stl -t 0.01 "$T/hull.patch" | grep -c 'facet normal')
 if [ -n "$ADMESH" ]; then
 	# admesh's exact check: disconnected edges only on the boundary,
 	# and no facet it must reverse to orient the mesh
-	for f in hull.stl hullb.stl tee.stl; do
+	for f in hull.stl hullb.stl tee.stl rev.stl; do
 		admesh -e "$T/$f" >"$T/adm" 2>&1
 		b=$(awk -F: '/disconnected edge/ { n = $2 + 0; k = /1 disc/ ? 1 : /2 disc/ ? 2 : 3; s += k * n }
 		    END { print s + 0 }' "$T/adm")
