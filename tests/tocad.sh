@@ -180,6 +180,13 @@ run "$B/tocad -f dxf -s $T/space.cubic"
 dxf_spline_dev "$T/out" "$T/space.pts" | awk '{ print $4 }' >"$T/val"
     within "dxf -s: space curve against sample" 1e-12
 
+# $INSUNITS: 4 for millimetres (the default), 1 for inches
+for u in mm:4 in:1; do
+	$B/tocad -f dxf -u ${u%:*} "$T/ins.cubic" | dxf_pairs - |
+	    awk -F '\t' '$2 == "$INSUNITS" { getline; print $2 }' >"$T/val"
+	[ "$(cat "$T/val")" = "${u#*:}" ] && ok || no "dxf -u ${u%:*}: \$INSUNITS $(cat "$T/val")"
+done
+
 # layers: a graded set, one layer a size, in order; knots on layer 3
 $B/grade -r -2:2 man/figures/insole.knots >"$T/graded.knots"
 $B/splinefit "$T/graded.knots" >"$T/graded.cubic"
@@ -269,6 +276,16 @@ for u in mm in; do
 		print (e > f ? e : f) + 0 }' >"$T/val"; within "svg -u $u: width and height in mm" 1e-15
 done
 grep -q 'transform="scale(1,-1)"' "$T/ins.svg" && ok || no "svg: y not flipped"
+# well-formed XML to Python's own parser (any python3 has it)
+XMLPY=$(python_with xml.dom.minidom)
+if [ -n "$XMLPY" ]; then
+	$B/tocad -f svg "$T/graded.cubic" "$T/q.quartic" >"$T/graded.svg"
+	n=$("$XMLPY" -c 'import sys, xml.dom.minidom as m
+print(len(m.parse(sys.argv[1]).getElementsByTagName("path")))' "$T/graded.svg" 2>&1)
+	[ "$n" = 6 ] && ok || no "svg: python's XML parser: $n"
+else
+	echo "tocad: skipped: no python3 for the SVG's XML"
+fi
 # the viewBox holds the curve: its x from the box of the sampled points,
 # y flipped (top = -ymax)
 awk '/<svg/ { match($0, /viewBox="[^"]*"/); print substr($0, RSTART + 9, RLENGTH - 10) }' \
