@@ -82,7 +82,7 @@ install: all
 	    $(DESTDIR)$(PREFIX)/share/man/man7
 	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
 	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	cp lib/loft.h $(DESTDIR)$(PREFIX)/include/
+	cp lib/loft.h lib/loftcad.h $(DESTDIR)$(PREFIX)/include/
 	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
 	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/
