@@ -11,7 +11,7 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade offset measure
+          plot grade offset measure tocad
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
@@ -20,12 +20,16 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/offset.o \
           bin/obj/bernstein.o bin/obj/arclen.o bin/obj/measure.o \
           bin/obj/flatten.o bin/obj/merge.o bin/obj/fair.o
+LIBOBJ += $(CADOBJ)
+CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
+          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
-          bin/test/hostile bin/test/oom.so bin/test/arclen
+          bin/test/hostile bin/test/oom.so bin/test/arclen \
+          bin/test/cad
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
@@ -41,6 +45,7 @@ bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 bin/obj/dtoa.o: lib/pow10.h
+$(CADOBJ) bin/tocad bin/test/cad: lib/loftcad.h
 
 $(LIB): $(LIBOBJ)
 	rm -f $@
@@ -85,7 +90,7 @@ install: all
 	    $(DESTDIR)$(PREFIX)/share/man/man7
 	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
 	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	cp lib/loft.h $(DESTDIR)$(PREFIX)/include/
+	cp lib/loft.h lib/loftcad.h $(DESTDIR)$(PREFIX)/include/
 	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
 	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/

@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin plot offset measure"}
+    patchjoin plot offset measure tocad"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -1906,6 +1906,40 @@ measure_cases() {
 	status 0
 	[ "$(awk NF "$T/out")" = "$BIG $BIG 0 0 0 0" ] && ok ||
 	    no "$what: $(head -c 200 "$T/out")"
+}
+
+# ---- tocad -----------------------------------------------------------------------
+
+# tocad writes one document; as SVG it is checked as plot's is (tests/
+# tocad.sh reads every format back)
+tocad_kind=document
+tocad_empty="tocad: nothing to draw"
+tocad_run() { "$B/tocad" -f svg "$@"; }
+tocad_good() {
+	case $1 in
+	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
+	2) printf 'bezier size=4.5\n0 1\n1 3\n2 1\n' ;;
+	esac
+}
+
+tocad_cases() {
+	opts
+	printf 'cubic\n0 0 1e308 0 0 1e308 0 -1e308\n' >"$T/case"
+	sane "coefficients near the largest double"
+	printf 'cubic\n0 0 1.7e308 0 0 0 -1.7e308 0\n' >"$T/case"
+	bad "a Bezier form beyond the largest double" 1 "coefficients too large"
+	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n' \
+	    >"$T/case"
+	bad "a patch of 3 rows" 1 "a patch has 5"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	bad "a surface into SVG" 1 "a bezier-surface record is a surface: SVG takes curves"
+	knots '0 0\n1 1\n'
+	bad "knots into SVG" 1 "a point record is a set of knots"
+	printf 'quartic\n0 0 1 0 0 1 0 -1 0.5 0.4\n' >"$T/case"
+	good "a quartic, as cubics"
+	opts -t 1e-300
+	printf 'quartic\n0 0 1 0 0 1 0 -1 0.5 0.4\n' >"$T/case"
+	good "a quartic at a tolerance below its rounding"
 }
 
 # ---- run them -----------------------------------------------------------------

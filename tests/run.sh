@@ -35,6 +35,8 @@ suite bin/test/pow10gen -c lib/pow10.h
 suite sh tests/plot.sh
 suite sh tests/grade.sh
 suite sh tests/offset.sh
+suite bin/test/cad
+suite sh tests/tocad.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
 suite sh tests/oom.sh

@@ -80,6 +80,9 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"
 	[ $have_spline = 1 ] &&
 	    case_ space-gnu "$SPLINE -a -d 3 -p -n 400000 $W/space.spline"
+	case_ tocad-dxf "$B/tocad -f dxf -n 20 $W/insoles.cubic"
+	case_ tocad-dxf-tol "$B/tocad -f dxf $W/insoles.cubic"
+	case_ sample-n25 "$B/sample -n 25 $W/insoles.cubic"
 	rep=$((rep + 1))
 done
 echo
@@ -91,3 +94,8 @@ $W/timeit -r $OUT pipeline/gnu-spline pipeline-p6/gnu-spline \
     floor-printf/floor floor/gnu-spline scipy/gnu-spline \
     space/space-gnu offset/sample offset-lining/sample measure/sample \
     sample-s/sample
+echo
+echo "bench: tocad -f dxf of the insoles: -n 20, the points of sample -n 20" \
+    "(440 a closed outline, 441); and at its default tolerance, about 540," \
+    "against sample -n 25 (551)"
+$W/timeit -r $OUT tocad-dxf/sample tocad-dxf-tol/sample-n25

@@ -1,0 +1,247 @@
+/*
+ * loftcad.h: loft's curves and surfaces written into CAD documents (DXF,
+ * SVG at true scale, STEP, IGES, STL) for tocad(1).
+ *
+ * Every record is first put in exact Bezier form (bezform.c): a curve as
+ * polynomial pieces of one degree, a surface as tensor-product Bezier
+ * patches.  A format is one module behind struct loft_cad_format, a table
+ * of callbacks in the manner of libspiro's bezctx: the geometry knows no
+ * format, and a new format is one file and one line of loft_cad_formats.
+ * A format sets only the callbacks of what it can take; cad.c turns
+ * curves into polylines (within the tolerance) for a format that takes
+ * only polylines, and surfaces into one welded triangle mesh for a format
+ * that takes only meshes.  A record whose kind the format has no callback
+ * for is an error, and the document goes on without it.
+ *
+ * Conventions as in loft.h: caller-owned arrays, 0 or a LOFT_E* code,
+ * and the library never prints.  The document is made in memory and
+ * handed back whole (loft_cad_finish), so nothing reaches the output
+ * before the last record is in.
+ */
+#ifndef LOFTCAD_H
+#define LOFTCAD_H
+
+#include "loft.h"
+
+/* ------------------------------------------------------------------ */
+/* Exact Bezier forms of the record types (bezform.c)                  */
+
+/*
+ * The cubic segment seg (rows of a `cubic` record: P_A P_B P'_A P'_B,
+ * dim numbers each) as the 4 control points of the same polynomial:
+ * P_A, P_A + P'_A / 3, P_B - P'_B / 3, P_B, into ctl (4 * dim numbers).
+ */
+void loft_cubic_bezier(const double *seg, int dim, double *ctl);
+
+/*
+ * The quartic segment q ((0) (1) (0)_u (1)_u (h)) as the 5 control points
+ * of the same polynomial into ctl (5 * dim numbers).
+ */
+void loft_quartic_bezier(const double *q, int dim, double *ctl);
+
+/*
+ * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
+ * net of the same polynomial surface, u-major: P_ij, i the u index, at
+ * ctl[(5 * i + j) * dim] (25 * dim numbers).
+ */
+void loft_patch_bezier(const double *b, int dim, double *ctl);
+
+/*
+ * Split the Bezier curve ctl of degree deg at t (de Casteljau): the
+ * control points of the parts over [0, t] and [t, 1] into left and right
+ * (deg + 1 points each; either may be NULL).  deg < LOFT_BEZIER_MAXPTS.
+ */
+void loft_bezier_split(const double *ctl, int deg, int dim, double t,
+    double *left, double *right);
+
+/*
+ * The fewest equal parameter steps n that put the polyline through the
+ * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
+ * the same parameter, so every point of the curve is within tol of the
+ * polyline): linear interpolation over steps h errs by at most
+ * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
+ * difference of the control points.  tol > 0.  Returns 1 to max, or 0
+ * when more than max steps would be needed.
+ */
+long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
+    long max);
+
+/* ------------------------------------------------------------------ */
+/* Documents (cad.c)                                                   */
+
+/* A curve of npieces Bezier pieces of degree deg, each deg + 1 points of
+ * dim numbers, piece i from ctl[i * (deg + 1) * dim]; piece i + 1 starts
+ * where piece i ends.  The parameter of piece i runs over [i, i + 1]. */
+struct loft_bcurve {
+	const double *ctl;
+	size_t npieces;
+	int deg, dim;
+	int closed;             /* the record's closed=1 */
+};
+
+/* A tensor-product Bezier patch of degrees m in u and n in v, control
+ * points of 3 numbers u-major: P_ij at ctl[3 * (i * (n + 1) + j)]. */
+struct loft_bsurf {
+	const double *ctl;
+	int m, n;
+};
+
+/* What a format learns of a record before its geometry. */
+struct loft_cad_item {
+	const struct loft_record *rec;  /* its attributes */
+	const char *name;       /* from size= and id= ("size_4.5-id_2"), or "" */
+	double size;            /* diagonal of its control points' box */
+	double tol;             /* chordal tolerance for it, in its units */
+};
+
+struct loft_cad_opts {
+	double tol;             /* chordal tolerance in the stream's units, */
+	                        /* or 0: LOFT_CAD_RELTOL of each record's size */
+	int exact;              /* -s: exact curves where the format has a */
+	                        /* choice (DXF SPLINE, not polylines) */
+	int binary;             /* -b: binary STL */
+	long per;               /* -n: polyline steps a piece, mesh steps */
+	                        /* along a patch side; or 0: by tol */
+	double unit_mm;         /* millimetres in the stream's unit */
+	const char *unit_name;  /* "mm", "cm", "m", "in" */
+};
+
+/*
+ * The default chordal tolerance of a polyline: 1e-5 of the record's size,
+ * 3 micrometres on a 300 mm insole, well under the step of a cutting
+ * plotter, knife or laser (about 25 micrometres), and an SVG's cubic
+ * approximation of a quartic is held to the same.
+ */
+#define LOFT_CAD_RELTOL 1e-5
+
+/*
+ * The default chordal tolerance of a mesh: 1e-3 of the design's size,
+ * 0.1 mm on a 100 mm part, a 3-D printer's layer.
+ */
+#define LOFT_CAD_MESHTOL 1e-3
+
+struct loft_cad_doc;
+
+/*
+ * A format: every callback gets the document and writes into it
+ * through loft_cad_put, loft_cad_puts and loft_cad_putnum.  They return 0 or LOFT_ENOMEM.  begin is called once before
+ * the first record's geometry, end once after the last, begin_record
+ * and end_record around each record's geometry.  NULL callbacks are
+ * kinds the format cannot take.
+ */
+struct loft_cad_format {
+	const char *name;       /* the -f word */
+	const char *title;      /* for messages: "DXF" */
+	int (*begin)(struct loft_cad_doc *d);
+	int (*end)(struct loft_cad_doc *d);
+	int (*begin_record)(struct loft_cad_doc *d,
+	    const struct loft_cad_item *it);
+	int (*end_record)(struct loft_cad_doc *d);
+	/* exact curves: one call per record */
+	int (*curve)(struct loft_cad_doc *d, const struct loft_bcurve *c);
+	/* curves within it->tol, when curve is NULL or the user asked */
+	int (*polyline)(struct loft_cad_doc *d, const double *p, size_t n,
+	    int dim, int closed);
+	/* point records (knots) */
+	int (*points)(struct loft_cad_doc *d, const double *p, size_t n,
+	    int dim);
+	/* exact surfaces: one call per patch */
+	int (*surface)(struct loft_cad_doc *d, const struct loft_bsurf *s);
+	/* or all surfaces as one mesh at the end, before end: nv vertices
+	 * of 3 numbers, nt triangles of 3 vertex indices, counter-clockwise
+	 * seen from the side f_u x f_v points to */
+	int (*mesh)(struct loft_cad_doc *d, const double *v, size_t nv,
+	    const size_t *tri, size_t nt);
+	void (*free)(struct loft_cad_doc *d);   /* of state, may be NULL */
+};
+
+/* The formats, by name, ending with a NULL name. */
+struct loft_cad_entry {
+	const char *name;
+	const struct loft_cad_format *format;
+};
+extern const struct loft_cad_entry loft_cad_formats[];
+
+/* The document being made. */
+struct loft_cad_doc {
+	const struct loft_cad_format *f;
+	struct loft_cad_opts o;
+	struct loft_writer out;         /* the document's body */
+	struct loft_writer head;        /* and its head, written first */
+	int in_head;
+	void *state;                    /* the format's own */
+	size_t nrec;                    /* records written */
+	double box[6];                  /* lo x y z, hi x y z of all written */
+	int bad;                        /* a callback failed: no document */
+	/* internal: scratch and the surfaces kept for a mesh */
+	double *tmp;
+	size_t tmpcap;
+	double *surf;
+	size_t nsurf, surfcap;
+	struct loft_design design;      /* their patches' links */
+};
+
+/*
+ * Start a document in format f (an entry of loft_cad_formats) with
+ * options o.  d is the caller's and need not be zeroed.
+ */
+void loft_cad_init(struct loft_cad_doc *d, const struct loft_cad_format *f,
+    const struct loft_cad_opts *o);
+
+/*
+ * Add record rec to the document, whole or not at all.  Returns 0;
+ * LOFT_EINPUT when it is no curve, surface or point record, or one of a
+ * kind the format cannot take (err says which and what can); LOFT_EGEOM
+ * when its coefficients overflow; LOFT_ENOMEM.
+ */
+int loft_cad_record(struct loft_cad_doc *d, const struct loft_record *rec,
+    struct loft_error *err);
+
+/*
+ * End the document: the mesh of a mesh format, the format's end.  Returns
+ * 0 with the document in d->head.buf[0..d->head.len) followed by
+ * d->out.buf[0..d->out.len), or LOFT_EINPUT when
+ * no record was written ("nothing to draw"), LOFT_ENOMEM, LOFT_EGEOM when
+ * a number was not finite.
+ */
+int loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err);
+
+void loft_cad_free(struct loft_cad_doc *d);
+
+/* Append n raw bytes to the document. */
+void loft_cad_put(struct loft_cad_doc *d, const void *s, size_t n);
+
+/*
+ * on = 1: what is appended from now on goes to the document's head,
+ * which is written before everything else (a DXF layer table, an SVG
+ * viewBox, IGES's directory: heads that can be made only after the
+ * body); on = 0: to the body again.
+ */
+void loft_cad_to_head(struct loft_cad_doc *d, int on);
+
+/* Append the string s. */
+void loft_cad_puts(struct loft_cad_doc *d, const char *s);
+
+/*
+ * Format x losslessly (shortest text that reads back the same) into buf
+ * (LOFT_NUMBUF bytes) as a real of STEP and IGES: always a '.', an
+ * exponent as E.  Returns the length.  x must be finite.
+ */
+int loft_cad_real(char *buf, double x);
+
+/* Append x losslessly as loft_format_num writes it (no space before). */
+void loft_cad_putnum(struct loft_cad_doc *d, double x);
+
+/*
+ * The knots of a curve of npieces Bezier pieces of degree deg as a
+ * clamped B-spline: the distinct knots 0, 1, ..., npieces into knot and
+ * their multiplicities deg + 1, deg, ..., deg, deg + 1 into mult
+ * (npieces + 1 each).  Its control points are the pieces' points with
+ * each joint once: npieces * deg + 1.
+ */
+void loft_cad_knots(size_t npieces, int deg, double *knot, int *mult);
+
+/* Point k of the B-spline control points of c (k <= npieces * deg). */
+const double *loft_cad_ctl(const struct loft_bcurve *c, size_t k);
+
+#endif
