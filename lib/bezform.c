@@ -6,23 +6,10 @@
 #include "loftcad.h"
 #include "internal.h"
 
-void
-loft_cubic_bezier(const double *seg, int dim, double *ctl)
-{
-	const double *pa = seg, *pb = seg + dim, *ta = seg + 2 * dim,
-	    *tb = seg + 3 * dim;
-
-	/* a cubic Bezier's end derivatives are 3 (P1 - P0) and 3 (P3 - P2) */
-	for (int k = 0; k < dim; k++) {
-		ctl[k] = pa[k];
-		ctl[dim + k] = pa[k] + ta[k] / 3;
-		ctl[2 * dim + k] = pb[k] - tb[k] / 3;
-		ctl[3 * dim + k] = pb[k];
-	}
-}
-
 /*
- * A quartic's Bezier points from its five conditions: Q0 = (0), Q4 = (1);
+ * A quartic's Bezier points from its five conditions (the patch net
+ * below maps each row and column so; a quartic curve record's own form
+ * is loft_curve_bezier's, in curve.c): Q0 = (0), Q4 = (1);
  * the end derivatives are 4 (Q1 - Q0) and 4 (Q4 - Q3); and the point at
  * u = 1/2 is (Q0 + 4 Q1 + 6 Q2 + 4 Q3 + Q4) / 16, so
  * Q2 = (16 (h) - 5 (0) - 5 (1) - (0)_u + (1)_u) / 6.
@@ -36,14 +23,6 @@ quartic_row(const double *c0, const double *c1, const double *d0,
 	q[2 * stride] = (16 * *h - 5 * *c0 - 5 * *c1 - *d0 + *d1) / 6;
 	q[3 * stride] = *c1 - *d1 / 4;
 	q[4 * stride] = *c1;
-}
-
-void
-loft_quartic_bezier(const double *q, int dim, double *ctl)
-{
-	for (int k = 0; k < dim; k++)
-		quartic_row(q + k, q + dim + k, q + 2 * dim + k, q + 3 * dim + k,
-		    q + 4 * dim + k, (size_t)dim, ctl + k);
 }
 
 /*

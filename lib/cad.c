@@ -369,15 +369,8 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 		bc.deg = c.rowlen / c.dim - 1;
 		if (scratch(d, c.npieces * (size_t)c.rowlen) != 0)
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-		for (size_t i = 0; i < c.npieces; i++) {
-			const double *row = c.coef + i * c.rowlen;
-			double *q = d->tmp + i * c.rowlen;
-
-			if (bc.deg == 3)
-				loft_cubic_bezier(row, c.dim, q);
-			else
-				loft_quartic_bezier(row, c.dim, q);
-		}
+		for (size_t i = 0; i < c.npieces; i++)
+			(void)loft_curve_bezier(&c, i, d->tmp + i * c.rowlen);
 		bc.ctl = d->tmp;
 	}
 	np = bc.npieces * (size_t)(bc.deg + 1);

@@ -27,19 +27,6 @@
 /* Exact Bezier forms of the record types (bezform.c)                  */
 
 /*
- * The cubic segment seg (rows of a `cubic` record: P_A P_B P'_A P'_B,
- * dim numbers each) as the 4 control points of the same polynomial:
- * P_A, P_A + P'_A / 3, P_B - P'_B / 3, P_B, into ctl (4 * dim numbers).
- */
-void loft_cubic_bezier(const double *seg, int dim, double *ctl);
-
-/*
- * The quartic segment q ((0) (1) (0)_u (1)_u (h)) as the 5 control points
- * of the same polynomial into ctl (5 * dim numbers).
- */
-void loft_quartic_bezier(const double *q, int dim, double *ctl);
-
-/*
  * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
  * net of the same polynomial surface, u-major: P_ij, i the u index, at
  * ctl[(5 * i + j) * dim] (25 * dim numbers).

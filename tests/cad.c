@@ -80,6 +80,24 @@ test_patch(void)
 	}
 }
 
+/* The Bezier points of a one-segment record of type with ncols numbers. */
+static void
+bezier_form(const char *type, double *row, int ncols, double *ctl)
+{
+	struct loft_record rec;
+	struct loft_curve c;
+	struct loft_error err;
+
+	memset(&rec, 0, sizeof rec);
+	rec.type = (char *)type;
+	rec.num = row;
+	rec.nrows = 1;
+	rec.ncols = ncols;
+	CHECK(loft_curve_from_record(&rec, &c, &err) == 0, "%s: %s", type,
+	    err.msg);
+	(void)loft_curve_bezier(&c, 0, ctl);
+}
+
 /* Cubic and quartic segments: the Bezier points give the same curve. */
 static void
 test_curves(void)
@@ -92,8 +110,8 @@ test_curves(void)
 		for (int i = 0; i < 5 * dim; i++)
 			q[i] = 100 * rnd();
 		memcpy(c, q, 4 * dim * sizeof *c);
-		loft_cubic_bezier(c, dim, cb);
-		loft_quartic_bezier(q, dim, qb);
+		bezier_form("cubic", c, 4 * dim, cb);
+		bezier_form("quartic", q, 5 * dim, qb);
 		for (int k = 0; k <= 64; k++) {
 			double u = k / 64.0, p[3], r[3];
 
@@ -113,7 +131,7 @@ test_curves(void)
 		double seg[8] = { 0, 0, 1, 0, 0, 2, 0, -2 }, b[8];
 		double want[8] = { 0, 0, 0, 2.0 / 3, 1, 2.0 / 3, 1, 0 };
 
-		loft_cubic_bezier(seg, 2, b);
+		bezier_form("cubic", seg, 8, b);
 		for (int i = 0; i < 8; i++)
 			NEAR(b[i], want[i], 1e-15, "cubic 0 0 1 0 0 2 0 -2");
 	}
