@@ -11,15 +11,15 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade patchloft
+          plot grade patchloft patchcut
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o \
-          bin/obj/grade.o bin/obj/outfiles.o bin/obj/skin.o
+          bin/obj/grade.o bin/obj/outfiles.o bin/obj/skin.o bin/obj/cut.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade \
-          bin/patchloft
+          bin/patchloft bin/patchcut
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff

@@ -1011,4 +1011,57 @@ void loft_skin_free(struct loft_skin_result *r);
 int loft_skin_design(const struct loft_skin_result *r, struct loft_design *d,
     struct loft_error *err);
 
+/* ------------------------------------------------------------------ */
+/* Cutting surfaces by planes (cut.c)                                  */
+
+/* Surfaces to cut, each with the box of its Bezier net. */
+struct loft_cutter {
+	const struct loft_surface *s;
+	size_t ns;
+	int dim;
+	double *box;            /* ns * 2 * dim: lo, hi of each */
+	double size;            /* the diagonal of the box of them all */
+};
+
+/*
+ * Prepare the ns surfaces s (caller-owned, all of one dim, ns >= 0)
+ * for loft_cut_plane.  Returns 0 or LOFT_ENOMEM.  Free with
+ * loft_cutter_free.
+ */
+int loft_cutter_init(struct loft_cutter *k, const struct loft_surface *s,
+    size_t ns, struct loft_error *err);
+void loft_cutter_free(struct loft_cutter *k);
+
+/* A curve of a cut: n points, dim each; closed: the last joins the
+ * first (which it does not repeat). */
+struct loft_cut_curve {
+	double *p;
+	size_t n;
+	int closed;
+};
+
+/* Curves of cuts, appended; starts zeroed. */
+struct loft_cut {
+	int dim;
+	struct loft_cut_curve *c;
+	size_t n, cap;
+};
+
+/*
+ * Cut k's surfaces by the plane normal . x = d (normal: k->dim numbers,
+ * not all zero) and append to out one curve per connected piece:
+ * pieces of different surfaces are joined where their ends meet within
+ * 1e-9 of k->size (across shared edges); an edge lying in the plane is
+ * a piece too, once.  Every point is on a surface as evaluated and on
+ * the plane to rounding (solved in one parameter with the other fixed);
+ * every chord is within tol of the cut (tol > 0, in the surfaces'
+ * units).  Returns 0, or LOFT_EGEOM when the plane misses every
+ * surface (nothing appended), LOFT_EINPUT (a zero normal) or
+ * LOFT_ENOMEM.
+ */
+int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
+    double tol, struct loft_cut *out, struct loft_error *err);
+
+void loft_cut_free(struct loft_cut *c);
+
 #endif
