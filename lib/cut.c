@@ -32,6 +32,12 @@
  * meet: shared edges give the same roots to rounding. */
 #define JOIN_REL 1e-9
 
+/* A chord tolerance below this, relative to the set's size, is taken
+ * as this: the points themselves are only on the surface to about
+ * 1e-9 of its size (the promise of patchcut(1)), and below it halving
+ * chords would multiply points past any use. */
+#define TOL_MIN_REL 1e-9
+
 /* Depth of the halving of a chord against the tolerance: 2^24 points
  * between two roots is more than any tolerance above rounding needs. */
 #define DEPTH_MAX 24
@@ -660,7 +666,7 @@ loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
 		    "no part in the surfaces' %d coordinates", dim);
 	c.n = n;
 	c.d = d / len;
-	c.tol = tol;
+	c.tol = fmax(tol, TOL_MIN_REL * k->size);
 	c.dim = dim;
 	out->dim = dim;
 	for (size_t i = 0; i < k->ns && rc == 0; i++) {

@@ -1055,7 +1055,7 @@ struct loft_cut {
  * a piece too, once.  Every point is on a surface as evaluated and on
  * the plane to rounding (solved in one parameter with the other fixed);
  * every chord is within tol of the cut (tol > 0, in the surfaces'
- * units).  Returns 0, or LOFT_EGEOM when the plane misses every
+ * units; one below 1e-9 of k->size is taken as that).  Returns 0, or LOFT_EGEOM when the plane misses every
  * surface (nothing appended), LOFT_EINPUT (a zero normal) or
  * LOFT_ENOMEM.
  */

@@ -192,7 +192,8 @@ next(const struct skin *s, size_t k)
 
 /*
  * Sections that cross: in strip k the chord from section k to k + 1
- * at some breakpoint points against the strip's mean chord.
+ * at some breakpoint points against the strip's mean chord, or against
+ * the chord at the breakpoint before (the strip turns over between).
  */
 static int
 check_order(const struct skin *s, struct loft_error *err)
@@ -201,14 +202,19 @@ check_order(const struct skin *s, struct loft_error *err)
 
 	for (size_t k = 0; k < s->nstrip; k++) {
 		double mean[LOFT_MAXDIM] = { 0 }, d[LOFT_MAXDIM];
+		double prior[LOFT_MAXDIM] = { 0 };
 
 		for (size_t j = 0; j < s->nodes; j++) {
 			vsub(d, NODE(s, next(s, k), j), NODE(s, k, j), dim);
 			vaxpy(mean, 1, d, dim);
 		}
 		for (size_t j = 0; j < s->nodes; j++) {
+			double dot;
+
+			vcopy(prior, d, dim);
 			vsub(d, NODE(s, next(s, k), j), NODE(s, k, j), dim);
-			if (!(vdot(d, mean, dim) > 0))
+			dot = j > 0 ? vdot(d, prior, dim) : 1;
+			if (!(vdot(d, mean, dim) > 0) || !(dot > 0))
 				return loft_fail(err, LOFT_EGEOM, (long)next(s, k),
 				    "section %zu crosses section %zu (at its "
 				    "breakpoint %zu of %zu): the sections must "
