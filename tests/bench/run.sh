@@ -26,6 +26,17 @@ $W/gen outline 1000000 >$W/outline.knots || exit 1
 $W/gen space 20000 >$W/space.knots || exit 1
 $W/gen spline $W/space.knots >$W/space.spline || exit 1
 $B/splinefit $W/insoles.knots >$W/insoles.cubic || exit 1
+# issue 17: 100 sections of 100 segments (patchloft under 1 s); 101 of
+# them lofted, 10000 patches, cut by 50 planes (patchcut under 2 s)
+awk -v n=101 'BEGIN { for (k = 0; k < n; k++) { print "points"
+	for (i = 0; i <= 100; i++) { t = i / 100
+	    x = (1 + 0.3 * sin(k / 10)) * sin(1.5 * t) + 0.01 * k * t
+	    printf "%d %.17g %.17g\n", k, x, 0.5 * cos(2 * t) + 0.002 * k }
+	print "" } }' >$W/sections.knots || exit 1
+$B/splinefit -o $W/sections.knots >$W/sections101.cubic || exit 1
+awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
+    $B/splinefit -o >$W/sections.cubic || exit 1
+$B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
 
 have_spline=0
 if command -v "$SPLINE" >/dev/null 2>&1 &&
@@ -67,6 +78,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"
 	[ $have_spline = 1 ] &&
 	    case_ space-gnu "$SPLINE -a -d 3 -p -n 400000 $W/space.spline"
+	case_ patchloft "$B/patchloft $W/sections.cubic"
+	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
 	rep=$((rep + 1))
 done
 echo
