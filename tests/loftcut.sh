@@ -90,11 +90,11 @@ $B/splinefit -o $H >"$T/hull.cubic"
 run "$B/patchloft $T/hull.cubic"
 status 0
 cp "$T/out" "$T/hull.design"
-[ "$(grep -c '^patch' "$T/hull.design")" -eq 12 ] && ok ||
-    no "hull: not 4 strips of 3 patches"
+[ "$(grep -c '^patch' "$T/hull.design")" -eq 24 ] && ok ||
+    no "hull: not 4 strips of 6 patches"
 
 # sections on the patch edges: the edge u = 0 of patch (k, j) (id
-# 3k + j + 1) and u = 1 of the last strip are the segments of the
+# 6k + j + 1) and u = 1 of the last strip are the segments of the
 # sections, evaluated here by Hermite's cubic (Manning's eq. 7)
 edges() {
 	awk -v nseg="$2" "$EVAL"'
@@ -110,7 +110,7 @@ edges() {
 				d = d < 0 ? -d : d; if (d > w) w = d } }
 	    printf "%.3g\n", w }' "$1" "$3"
 }
-e=$(edges "$T/hull.cubic" 3 "$T/hull.design")
+e=$(edges "$T/hull.cubic" 6 "$T/hull.design")
 awk -v e="$e" 'BEGIN { exit !(e <= 1e-14) }' && ok ||
     no "hull: the sections are off the patch edges by $e"
 set -- $(g1 "$T/hull.design")
@@ -197,7 +197,7 @@ for c in "patchsplit -u 0.3" "patchsplit -v 0.5 -i 5" \
 done
 run "$B/patchsplit -u 0.5 $T/hull.design | $B/patchsplit -v 0.5"
 set -- $(g1 "$T/out")
-awk -v w="$1" -v n="$3" 'BEGIN { exit !(w <= 1e-12 && n == 48) }' && ok ||
+awk -v w="$1" -v n="$3" 'BEGIN { exit !(w <= 1e-12 && n == 96) }' && ok ||
     no "split twice: normals differ by $1, $3 patches"
 # patchjoin: a patch made beside the boundary station 0 joins patch 1
 awk 'NR == 2 { printf "-c -1,%s,%s -c %s,%s,%s -c -1,%s,%s -c %s,%s,%s\n",
@@ -266,11 +266,11 @@ awk '/^[a-z]/ { next } NF == 3 { e = $1 * $2 - 0.25; e = e < 0 ? -e : e; if (e >
     no "a bezier-surface z = xy: not the hyperbola"
 
 # ---- patchcut: stations and waterlines of the hull ---------------------
-# the cut at station 2 (x = 4) is station 2: every point on its cubic
+# the cut at station 2 (x = 3) is station 2: every point on its cubic
 # (nearest point found here by sampling and Newton's steps on eq. 7)
-run "$B/patchcut -x 4 $T/hull.design"
+run "$B/patchcut -x 3 $T/hull.design"
 status 0
-[ "$(grep -c '^points' "$T/out")" -eq 1 ] && ok || no "x = 4: not one curve"
+[ "$(grep -c '^points' "$T/out")" -eq 1 ] && ok || no "x = 3: not one curve"
 awk 'FILENAME == ARGV[1] && /name=station2/ { on = 1; next }
 	FILENAME == ARGV[1] && /^cubic/ { on = 0; next }
 	FILENAME == ARGV[1] { if (on && NF == 12) { ns++; for (k = 1; k <= 12; k++) C[ns, k] = $k } next }
@@ -289,26 +289,27 @@ awk 'FILENAME == ARGV[1] && /name=station2/ { on = 1; next }
 	pt(bi, u, q, d); e = sqrt(($1-q[1])^2 + ($2-q[2])^2 + ($3-q[3])^2); if (e > w) w = e
 	if (!n++) { f1 = $2; f2 = $3 } l1 = $2; l2 = $3 }
 	END { exit !(w <= 1e-12 && f1 == C[1, 2] && f2 == C[1, 3] && l1 == C[ns, 5] && l2 == C[ns, 6]) }' \
-    "$T/hull.cubic" "$T/out" && ok || no "x = 4: not station 2"
-# a waterline through all four strips: one curve, every point at z = 0.5
-# to rounding (1e-15 of the hull's size, 8)
+    "$T/hull.cubic" "$T/out" && ok || no "x = 3: not station 2"
+# a waterline around the hull, through three strips and across the
+# keel: one closed curve, every point at z = 0.5 to rounding (1e-15 of
+# the hull's size, 7)
 run "$B/patchcut -z 0.5 $T/hull.design"
 status 0
-awk '/^points/ { n++; next } NF == 3 { e = $3 - 0.5; e = e < 0 ? -e : e; if (e > w) w = e }
-    END { exit !(n == 1 && w <= 8e-15) }' "$T/out" && ok ||
-    no "z = 0.5: not one curve on the plane"
+awk '/^points/ { n++; c = $4 == "closed=1"; next } NF == 3 { e = $3 - 0.5; e = e < 0 ? -e : e
+    if (e > w) w = e } END { exit !(n == 1 && c && w <= 7e-15) }' "$T/out" && ok ||
+    no "z = 0.5: not one closed curve on the plane"
 # stations between: each on its plane (x to rounding, a few units in
-# the last place of 7)
-run "$B/patchcut -x 1:7:2 -t 0.001 $T/hull.design"
+# the last place of 5)
+run "$B/patchcut -x 0.75:5.25:1.5 -t 0.001 $T/hull.design"
 status 0
 awk '/^points/ { split($3, v, "="); x = v[2]; n++; next } NF == 3 { e = $1 - x
 	e = e < 0 ? -e : e; if (e > w) w = e } END { exit !(n == 4 && w <= 1e-14) }' \
-    "$T/out" && ok || no "x = 1:7:2: not 4 stations on their planes"
+    "$T/out" && ok || no "x = 0.75:5.25:1.5: not 4 stations on their planes"
 # a plane that misses: said, naming the record; the other planes cut
-run "$B/patchcut -x 9 -x 4 $T/hull.design"
+run "$B/patchcut -x 9 -x 3 $T/hull.design"
 status 1
 says "patchcut: $T/hull.design:1: plane x = 9 misses the design"
-[ "$(grep -c '^points' "$T/out")" -eq 1 ] && ok || no "x = 9, 4: x = 4 not cut"
+[ "$(grep -c '^points' "$T/out")" -eq 1 ] && ok || no "x = 9, 3: x = 3 not cut"
 
 # ---- bad input -----------------------------------------------------------
 printf 'cubic\n0 0 1 0 1 0 1 0\n\ncubic\n0 0 1 1 0 1 1 0 1 1 0 1\n' >"$T/dims"
