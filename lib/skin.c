@@ -235,7 +235,7 @@ static int
 cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
 {
 	struct loft_fit_opts fo;
-	size_t ns = s->ns, nfs = s->cl ? ns : ns - 1;
+	size_t ns = s->ns;
 	int dim = s->dim, rc = 0;
 	double *p, *cs, wsum = 0;
 
@@ -297,7 +297,6 @@ cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
 			vunit(dir, dim);
 			vscale(TAN(s, k, j), mag / (hr + hl), dir, dim);
 		}
-		(void)nfs;
 	}
 	free(p);
 	free(cs);
@@ -455,6 +454,24 @@ solve_c(struct skin *s, size_t k, double *m, int *eq)
 	}
 }
 
+/* The relation q[b] = mul q[a] + add vec, used to find whichever of
+ * q[a], q[b] is not known yet from the other. */
+static void
+tie(double *const *q, int *known, int a, int b, double mul, double add,
+    const double *vec, int dim)
+{
+	if (known[a] && !known[b]) {
+		vscale(q[b], mul, q[a], dim);
+		vaxpy(q[b], add, vec, dim);
+		known[b] = 1;
+	} else if (known[b] && !known[a]) {
+		vcopy(q[a], q[b], dim);
+		vaxpy(q[a], -add, vec, dim);
+		vscale(q[a], 1 / mul, q[a], dim);
+		known[a] = 1;
+	}
+}
+
 /*
  * The twists at knot j of section k, in the patches around it:
  * q[0] (k-1, j-1) at (1,1), q[1] (k, j-1) at (0,1), q[2] (k-1, j) at
@@ -518,46 +535,14 @@ corner(struct skin *s, size_t k, size_t j)
 			double d3 = r3 ? rho - RHO(s, prev(s, k), j) : 0;
 			double d4 = r4 ? RHO(s, next(s, k), j) - rho : 0;
 
-			if (r1 && known[0] && !known[1]) {
-				vscale(q[1], sig, q[0], dim);
-				vaxpy(q[1], -c1, bv, dim);
-				known[1] = 1;
-			} else if (r1 && known[1] && !known[0]) {
-				vcopy(q[0], q[1], dim);
-				vaxpy(q[0], c1, bv, dim);
-				vscale(q[0], 1 / sig, q[0], dim);
-				known[0] = 1;
-			}
-			if (r3 && known[0] && !known[2]) {
-				vscale(q[2], rho, q[0], dim);
-				vaxpy(q[2], d3, bv, dim);
-				known[2] = 1;
-			} else if (r3 && known[2] && !known[0]) {
-				vcopy(q[0], q[2], dim);
-				vaxpy(q[0], -d3, bv, dim);
-				vscale(q[0], 1 / rho, q[0], dim);
-				known[0] = 1;
-			}
-			if (r2 && known[2] && !known[3]) {
-				vscale(q[3], sig, q[2], dim);
-				vaxpy(q[3], c2, a, dim);
-				known[3] = 1;
-			} else if (r2 && known[3] && !known[2]) {
-				vcopy(q[2], q[3], dim);
-				vaxpy(q[2], -c2, a, dim);
-				vscale(q[2], 1 / sig, q[2], dim);
-				known[2] = 1;
-			}
-			if (r4 && known[1] && !known[3]) {
-				vscale(q[3], rho, q[1], dim);
-				vaxpy(q[3], d4, bv, dim);
-				known[3] = 1;
-			} else if (r4 && known[3] && !known[1]) {
-				vcopy(q[1], q[3], dim);
-				vaxpy(q[1], -d4, bv, dim);
-				vscale(q[1], 1 / rho, q[1], dim);
-				known[1] = 1;
-			}
+			if (r1)
+				tie(q, known, 0, 1, sig, -c1, bv, dim);
+			if (r3)
+				tie(q, known, 0, 2, rho, d3, bv, dim);
+			if (r2)
+				tie(q, known, 2, 3, sig, c2, a, dim);
+			if (r4)
+				tie(q, known, 1, 3, rho, d4, bv, dim);
 		}
 	}
 }
