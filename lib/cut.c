@@ -502,35 +502,66 @@ end_point(const struct piece *pc, int e, int dim)
 	return pc->p + (e ? pc->n - 1 : 0) * dim;
 }
 
+/* Edge pieces by the smaller first coordinate of their two ends. */
+struct key {
+	double x;
+	size_t i;
+};
+
+static int
+key_cmp(const void *a, const void *b)
+{
+	const struct key *x = a, *y = b;
+
+	if (x->x != y->x)
+		return x->x < y->x ? -1 : 1;
+	return (x->i > y->i) - (x->i < y->i);
+}
+
+/* Whether edge pieces a and b are one: the same ends, either way, and
+ * the same point half way. */
+static int
+same_edge(const struct piece *a, const struct piece *b, int dim, double jt)
+{
+	int same = vdist(end_point(a, 0, dim), end_point(b, 0, dim), dim) <= jt &&
+	    vdist(end_point(a, 1, dim), end_point(b, 1, dim), dim) <= jt;
+	int rev = vdist(end_point(a, 0, dim), end_point(b, 1, dim), dim) <= jt &&
+	    vdist(end_point(a, 1, dim), end_point(b, 0, dim), dim) <= jt;
+
+	return (same || rev) && vdist(a->p + a->n / 2 * dim, b->p +
+	    (same ? b->n / 2 : b->n - 1 - b->n / 2) * dim, dim) <=
+	    1e-6 * vdist(end_point(a, 0, dim), end_point(a, 1, dim), dim) + jt;
+}
+
 /* Drop each edge piece that another edge piece repeats (the edge
- * shared by two surfaces, both in the plane). */
-static void
+ * shared by two surfaces, both in the plane); sorted, so only pieces
+ * whose ends begin alike are compared. */
+static int
 drop_repeats(struct pieces *ps, int dim, double jt)
 {
-	for (size_t i = 0; i < ps->n; i++) {
-		struct piece *a = &ps->v[i];
+	struct key *k;
+	size_t n = 0;
 
-		if (!a->edge || a->n == 0)
-			continue;
-		for (size_t j = i + 1; j < ps->n; j++) {
-			struct piece *b = &ps->v[j];
-			int same, rev;
+	if ((k = malloc((ps->n + 1) * sizeof *k)) == NULL)
+		return LOFT_ENOMEM;
+	for (size_t i = 0; i < ps->n; i++)
+		if (ps->v[i].edge && ps->v[i].n > 0)
+			k[n++] = (struct key){ fmin(end_point(&ps->v[i], 0, dim)[0],
+			    end_point(&ps->v[i], 1, dim)[0]), i };
+	qsort(k, n, sizeof *k, key_cmp);
+	for (size_t a = 0; a < n; a++) {
+		struct piece *pa = &ps->v[k[a].i];
 
-			if (!b->edge || b->n == 0)
-				continue;
-			same = vdist(end_point(a, 0, dim), end_point(b, 0, dim),
-			    dim) <= jt && vdist(end_point(a, 1, dim),
-			    end_point(b, 1, dim), dim) <= jt;
-			rev = vdist(end_point(a, 0, dim), end_point(b, 1, dim),
-			    dim) <= jt && vdist(end_point(a, 1, dim),
-			    end_point(b, 0, dim), dim) <= jt;
-			if ((same || rev) && vdist(a->p + a->n / 2 * dim,
-			    b->p + (same ? b->n / 2 : b->n - 1 - b->n / 2) * dim,
-			    dim) <= 1e-6 * (vdist(end_point(a, 0, dim),
-			    end_point(a, 1, dim), dim) + jt))
-				b->n = 0;
+		for (size_t b = a + 1; b < n && k[b].x - k[a].x <= jt &&
+		    pa->n > 0; b++) {
+			struct piece *pb = &ps->v[k[b].i];
+
+			if (pb->n > 0 && same_edge(pa, pb, dim, jt))
+				pb->n = 0;
 		}
 	}
+	free(k);
+	return 0;
 }
 
 /* Append piece pc to curve out, from its end e, skipping its first
@@ -565,7 +596,8 @@ join(struct pieces *ps, int dim, double jt, struct loft_cut *out)
 	char *used;
 	int rc = 0;
 
-	drop_repeats(ps, dim, jt);
+	if (drop_repeats(ps, dim, jt) != 0)
+		return LOFT_ENOMEM;
 	e = malloc((2 * ps->n + 1) * sizeof *e);
 	where = malloc((2 * ps->n + 1) * sizeof *where);
 	used = calloc(ps->n + 1, 1);
