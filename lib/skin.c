@@ -366,7 +366,7 @@ cubic_form(const struct skin *s, size_t k, size_t j)
 {
 	const double *q = SEG(s, k, j);
 	int dim = s->dim;
-	double ext = vdist(q, q + dim, dim), h[LOFT_MAXDIM];
+	double ext = vdist(q, q + dim, dim), h[5 * LOFT_MAXDIM];
 
 	ext = fmax(ext, fmax(vnorm(q + 2 * dim, dim), vnorm(q + 3 * dim, dim)));
 	loft_cubic_to_quartic(q, dim, h);
