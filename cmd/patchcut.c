@@ -187,6 +187,7 @@ gather(struct loft_run *run, const struct loft_record *recs, size_t n,
 {
 	struct loft_surface *s;
 	struct loft_error err;
+	char *mine;
 	size_t k = 0;
 	int rc = 0;
 
@@ -201,14 +202,21 @@ gather(struct loft_run *run, const struct loft_record *recs, size_t n,
 		}
 	if (rc != 0 || loft_design_from_records(run, recs, n, d) != 0)
 		return 1;
-	if ((s = calloc(n + 1, sizeof *s)) == NULL) {
+	s = calloc(n + 1, sizeof *s);
+	mine = calloc(n + 1, 1);
+	if (s == NULL || mine == NULL) {
 		fputs("patchcut: out of memory\n", run->msg);
+		free(s);
+		free(mine);
 		return 1;
 	}
-	for (size_t i = 0; i < d->n; i++)
+	/* the design's patches, and which records they were */
+	for (size_t i = 0; i < d->n; i++) {
 		loft_surface_from_patch(d->p[i].b, d->p[i].dim, &s[k++]);
+		mine[d->p[i].rec - recs] = 1;
+	}
 	for (size_t i = 0; i < n; i++) {
-		if (strcmp(recs[i].type, "patch") == 0)
+		if (mine[i])
 			continue;
 		err.line = 0;
 		if (loft_surface_from_record(&recs[i], &s[k], &err) != 0) {
@@ -224,6 +232,7 @@ gather(struct loft_run *run, const struct loft_record *recs, size_t n,
 			k++;
 		}
 	}
+	free(mine);
 	*out = s;
 	*ns = k;
 	return rc;
