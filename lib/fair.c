@@ -543,7 +543,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		 * where the start does not: the chord spline after all */
 		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
 		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
-		    (loops == 0 && loft_fit_crosses(seg, nseg, o->closed) == 1)) {
+		    (dim == 2 && loops == 0 &&
+		    loft_fit_crosses(seg, nseg, o->closed) == 1)) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);

@@ -1125,6 +1125,7 @@ struct loft_surface {
 	    double *p, double *du, double *dv);
 	void (*eval2)(const struct loft_surface *s, double u, double v,
 	    double *p, double *du, double *dv, double *duu, double *dvv);
+	void (*box)(const struct loft_surface *s, double *lo, double *hi);
 };
 
 /* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
@@ -1148,6 +1149,17 @@ void loft_surface_eval(const struct loft_surface *s, double u, double v,
 /* The same, with the second derivatives x_uu and x_vv (may be NULL). */
 void loft_surface_eval2(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv, double *duu, double *dvv);
+
+/* Fill s for the patch of coefficients b (a patch of a design), which
+ * s points into. */
+void loft_surface_from_patch(const double *b, int dim, struct loft_surface *s);
+
+/*
+ * A box lo..hi (s->dim numbers each) that holds the whole surface: the
+ * box of its Bezier control net (a patch's converted from MacCallum's
+ * form), so a plane that misses the box misses the surface.
+ */
+void loft_surface_box(const struct loft_surface *s, double *lo, double *hi);
 
 /* ------------------------------------------------------------------ */
 /* Grading outlines into shoe sizes (grade.c)                          */
@@ -1262,5 +1274,112 @@ int loft_outfiles_add(struct loft_outfiles *s, const char *name,
 int loft_outfile_write(const struct loft_outfile *f, struct loft_error *err);
 
 void loft_outfiles_free(struct loft_outfiles *s);
+
+/* ------------------------------------------------------------------ */
+/* Lofting: a design of patches through section curves (skin.c)         */
+
+struct loft_skin_opts {
+	int closed;             /* the sections form a ring */
+	int have_start, have_end;       /* given slopes at the first and
+	                                   last section (open lofts) */
+	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
+};
+
+/*
+ * The lofted surface: nu strips across the sections by nv segments
+ * along them, patch (k, j) (between sections k and k + 1, over segment
+ * j) at b + (k * nv + j) * 25 * dim, in loft_patch_eval's layout; su[k]
+ * the scale factor in u of strip k.
+ */
+struct loft_skin_result {
+	int dim;
+	size_t nu, nv;
+	int closed_u, closed_v; /* a closed loft; closed sections */
+	double *b;
+	double *su;
+};
+
+/*
+ * Loft the ns section curves sec (cubic or quartic records, all of one
+ * dimension, all open or all closed, in order) into out, as skin.c's
+ * header and patchloft(1) describe: the sections are the patch edges
+ * along v (refined to the union of their normalised breakpoints, split
+ * exactly), the curves across at each breakpoint go through the
+ * sections' points with loft_fit's (default method's) tangent
+ * directions, and the surface is tangent-plane continuous across every
+ * patch edge where the sections are smooth.  Returns 0 (free out with
+ * loft_skin_free), or LOFT_EINPUT / LOFT_EGEOM with err->row the index
+ * of the section at fault (a bezier record, another dimension, open
+ * among closed, fewer than 2 sections (3 for a closed loft), sections
+ * that cross, a curve across that loft_fit cannot fit), or
+ * LOFT_ENOCONV, LOFT_ENOMEM.
+ */
+int loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
+    size_t ns, struct loft_skin_result *out, struct loft_error *err);
+
+void loft_skin_free(struct loft_skin_result *r);
+
+/*
+ * Append r's patches to the design d (empty, or ids will clash) with
+ * ids 1, 2, .. (patch (k, j) is k * nv + j + 1), scale factors su, and
+ * the neighbour links of the grid (each a whole edge, the same way;
+ * around the ring of a closed loft or closed sections too).  Returns 0,
+ * LOFT_EINPUT (more patches than ids) or LOFT_ENOMEM.
+ */
+int loft_skin_design(const struct loft_skin_result *r, struct loft_design *d,
+    struct loft_error *err);
+
+/* ------------------------------------------------------------------ */
+/* Cutting surfaces by planes (cut.c)                                  */
+
+/* Surfaces to cut, each with the box of its Bezier net. */
+struct loft_cutter {
+	const struct loft_surface *s;
+	size_t ns;
+	int dim;
+	double *box;            /* ns * 2 * dim: lo, hi of each */
+	double size;            /* the diagonal of the box of them all */
+};
+
+/*
+ * Prepare the ns surfaces s (caller-owned, all of one dim, ns >= 0)
+ * for loft_cut_plane.  Returns 0 or LOFT_ENOMEM.  Free with
+ * loft_cutter_free.
+ */
+int loft_cutter_init(struct loft_cutter *k, const struct loft_surface *s,
+    size_t ns, struct loft_error *err);
+void loft_cutter_free(struct loft_cutter *k);
+
+/* A curve of a cut: n points, dim each; closed: the last joins the
+ * first (which it does not repeat). */
+struct loft_cut_curve {
+	double *p;
+	size_t n;
+	int closed;
+};
+
+/* Curves of cuts, appended; starts zeroed. */
+struct loft_cut {
+	int dim;
+	struct loft_cut_curve *c;
+	size_t n, cap;
+};
+
+/*
+ * Cut k's surfaces by the plane normal . x = d (normal: k->dim numbers,
+ * not all zero) and append to out one curve per connected piece:
+ * pieces of different surfaces are joined where their ends meet within
+ * 1e-9 of k->size (across shared edges); an edge lying in the plane is
+ * a piece too, once.  Every point is on a surface as evaluated and on
+ * the plane to rounding (solved in one parameter with the other fixed);
+ * every chord is within tol of the cut (tol > 0, in the surfaces'
+ * units; one below 1e-9 of k->size is taken as that).  Returns 0, or LOFT_EGEOM when the plane misses every
+ * surface (nothing appended), LOFT_EINPUT (a zero normal) or
+ * LOFT_ENOMEM.
+ */
+int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
+    double tol, struct loft_cut *out, struct loft_error *err);
+
+void loft_cut_free(struct loft_cut *c);
 
 #endif

@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin plot offset measure tocad"}
+    patchjoin plot offset measure tocad patchloft patchcut"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -1940,6 +1940,130 @@ tocad_cases() {
 	opts -t 1e-300
 	printf 'quartic\n0 0 1 0 0 1 0 -1 0.5 0.4\n' >"$T/case"
 	good "a quartic at a tolerance below its rounding"
+}
+
+# ---- patchloft -----------------------------------------------------------------
+
+patchloft_kind=design
+patchloft_many=0        # copies of one section coincide: no loft
+patchloft_empty="patchloft: no sections in the input: a loft needs at least 2"
+patchloft_run() { "$B/patchloft" "$@"; }
+patchloft_good() {
+	case $1 in
+	1) printf 'cubic id=1\n0 0 0 0 1 0 0 1 0 0 1 0\n0 1 0 0 2 0 0 1 0 0 1 0\n' ;;
+	2) printf 'cubic name=b\n2 0 0 2 2 0.5 0 2 0 0 2 0\n' ;;
+	esac
+}
+
+patchloft_cases() {
+	opts
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "sections of 2 and 3 coordinates" 4 "section 2 has 3 coordinates, section 1 2"
+	printf 'points\n0 0 0\n0 1 0\n' >"$T/case"
+	bad "a point record" 1 "a point record is no curve"
+	printf 'bezier\n0 0 0\n0 1 0\n0 2 0\n' >"$T/case"
+	bad "a bezier record" 1 "a bezier record: a section is a cubic or quartic curve"
+	patch 1 "" 0 0 >"$T/case"
+	bad "a patch record" 1 "unknown record type 'patch'"
+	# from x = 1 to x = 3, through the second section at x = 2
+	printf 'cubic\n1 0 0 3 2 0 2 2 0 2 2 0\n' >"$T/case"
+	bad "sections that cross" 4 "section 2 crosses section 1"
+	printf 'cubic\n0 2 0 0 0 0 0 -2 0 0 -2 0\n' >"$T/case"
+	bad "a section that runs the other way" 4 "section 2 crosses section 1"
+	printf 'cubic closed=1\n0 0 0 0 1 0 0 1 0 0 1 0\n0 1 0 0 0 0 0 -1 1 0 -1 -1\n' >"$T/case"
+	bad "closed among open" 5 "section 2 is open, section 1 closed"
+	tc="one section"
+	"${P}_good" 1 >"$T/case"
+	alone "one section" 1 "1 section: an open loft needs at least 2"
+	OPTS=-c
+	alone_in "two sections, -c" "2 sections: a closed loft needs at least 3"
+	OPTS="-S 1,0"
+	alone_in "-S of 2 numbers for sections of 3" \
+	    "-S has 2 numbers, the sections 3 coordinates"
+	opts
+	printf 'cubic\n0 0 0 0 1e-300 0 0 1e-300 0 0 1e-300 0\n' >"$T/case"
+	sane "a tiny section"
+	printf 'cubic\n0 0 0 0 1e300 0 0 1e300 0 0 1e300 0\n' >"$T/case"
+	sane "a huge section"
+
+	# units: the loft of the scaled and moved sections is the loft
+	# scaled and moved
+	bin/splinefit -o man/figures/hull.knots >"$T/hull.cubic"
+	UNITS_TR=tr_cubic
+	units "" "$T/hull.cubic"
+	units "-S 1,0,0.2 -E 1,0,0" "$T/hull.cubic"
+	UNITS_TR=tr_points
+}
+
+# alone_in NAME MESSAGE: the good records 1 and 2 together, under $OPTS,
+# are bad at line 1: exit 1, one message there, no output.
+alone_in() {
+	tc=$1
+	run "$T/g12"
+	status 1
+	message_at "$T/g12" 1
+	says "$2"
+	[ ! -s "$T/out" ] && ok || no "$what: output"
+}
+
+# ---- patchcut -------------------------------------------------------------------
+
+patchcut_kind=design
+patchcut_opts="-x 1"
+patchcut_run() { "$B/patchcut" "$@"; }
+patchcut_good() { patchsplit_good "$@"; }
+
+patchcut_cases() {
+	opts -x 1
+	design_cases
+	opts -x 1 -z 0.5:0.6:0.1 -c
+	design_cases
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "a curve record" 1 "cubic record: patchcut cuts surface records"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	good "a bezier-surface"
+	OPTS="-x 100"
+	alone_in "a plane that misses" "plane x = 100 misses the design"
+	OPTS="-x 100 -x 1"
+	tc="a plane that misses, one that cuts"
+	run "$T/g12"
+	status 1
+	message_at "$T/g12" 1
+	[ "$(grep -c '^points plane=x value=1$' "$T/out")" -eq 1 ] && ok ||
+	    no "$what: x = 1 not cut"
+	opts -x 1 -t 1e-300
+	patch 5 "" 0 0 >"$T/case"
+	sane "-t 1e-300"
+	opts -x 1
+	{ patch 5 "" 0 0 | sed 's/^0 0 0 0 3 0/0 0 0 0 3 1e300/'; } >"$T/case"
+	sane "a coefficient of 1e300"
+
+	# units: the cuts of the scaled and moved hull are the cuts scaled
+	# and moved (the planes -x, -z scaled and moved too), point by point
+	# within 1e-9 of the hull's size, 8; moved 1e6 away, within 1e-8:
+	# a root 1e6 from the origin has 1e-10 of rounding in g, which the
+	# waterline, grazing the hull's flat bottom along a grid line,
+	# magnifies along the curve (the points stay on it)
+	bin/splinefit -o man/figures/hull.knots | bin/patchloft >"$T/hull.design"
+	OPTS=
+	for tr in "1e-6 0" "1e6 0" "1 1e6"; do
+		set -- $tr
+		x=$(awk -v s="$1" -v d="$2" 'BEGIN { printf "%.17g", 3 * s + d }')
+		z=$(awk -v s="$1" -v d="$2" 'BEGIN { printf "%.17g", 0.5 * s + d }')
+		tc="units: -x 3 -z 0.5 times $1 plus $2"
+		run -x 3 -z 0.5 "$T/hull.design"
+		awk -v s="$1" -v d="$2" '/^[a-z]/ || NF == 0 { next } { for (i = 1; i <= NF; i++)
+		    $i = sprintf("%.17g", $i * s + d); print }' "$T/out" >"$T/p0"
+		tr_patch "$1" "$2" <"$T/hull.design" >"$T/scaled"
+		run -x "$x" -z "$z" "$T/scaled"
+		status 0
+		awk '/^[a-z]/ || NF == 0 { next } { print }' "$T/out" >"$T/p1"
+		awk -v s="$1" -v d="$2" 'NR == FNR { n = split($0, a); for (k = 1; k <= n; k++) x[FNR, k] = a[k]; r = FNR; next }
+		    { for (k = 1; k <= NF; k++) { e = $k - x[FNR, k]; e = e < 0 ? -e : e; if (e > w) w = e } m = FNR }
+		    END { exit !(m == r && m > 0 && w <= (d > 0 ? 1e-8 : 1e-9) * 8 * s) }' \
+		    "$T/p0" "$T/p1" && ok ||
+		    no "$what: the cuts differ"
+	done
 }
 
 # ---- run them -----------------------------------------------------------------

@@ -221,4 +221,23 @@ printf '0 0\n2 1\n4 0\n2 3\n' >"$T/dart.knots"
 run "$B/splinefit -v $T/dart.knots"
 says ", 2 inflexions"
 
+# a space curve in the plane y = 0 (the keel line of man/figures/hull.knots):
+# the fair fit's last check took the plane crossing test to 3-D segments,
+# read them as plane ones, and so fell back to the chord spline or not by
+# where the knots were; moved by D in x and z, the fit must be the same
+# curve moved (end points by D, tangents not), to 1e-9 of its size 6
+printf '0 0 0.96\n1.5 0 0.16\n3 0 0\n4.5 0 0.128\n6 0 0.8\n' >"$T/keel.knots"
+$B/splinefit -o "$T/keel.knots" >"$T/keel0"
+for d in 1 1000 1e6; do
+	what="the fair fit of a space curve moved by $d"
+	awk -v d=$d '{ printf "%.17g %.17g %.17g\n", $1 + d, $2, $3 + d }' \
+	    "$T/keel.knots" | $B/splinefit -o >"$T/keel1"
+	paste -d' ' "$T/keel0" "$T/keel1" | awk -v d=$d '
+	    NF == 24 { for (i = 1; i <= 12; i++) { x = $(i + 12)
+		if (i <= 6 && i % 3 != 2) x -= d
+		e = $i - x; if (e < 0) e = -e; if (e > m) m = e }; n++ }
+	    END { exit !(n == 4 && m < 6e-9) }' && ok ||
+	    no "$what: $(paste -d' ' "$T/keel0" "$T/keel1" | sed -n 2p)"
+done
+
 finish fit

@@ -37,6 +37,7 @@ suite sh tests/grade.sh
 suite sh tests/offset.sh
 suite bin/test/cad
 suite sh tests/tocad.sh
+suite sh tests/loftcut.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
 suite sh tests/oom.sh

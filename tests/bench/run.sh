@@ -33,6 +33,17 @@ awk 'BEGIN { for (i = 0; i < 20000; i++) printf "points id=%d\n%d %d\n%d %d\n\n"
 awk 'BEGIN { print "bezier-surface m=63 n=63"; for (i = 0; i < 64; i++)
     for (j = 0; j < 64; j++) printf "%d %d %.6f\n", i, j, sin(i / 9) * cos(j / 7) }' \
     >$W/surface63.bez
+# issue 17: 100 sections of 100 segments (patchloft under 1 s); 101 of
+# them lofted, 10000 patches, cut by 50 planes (patchcut under 2 s)
+awk -v n=101 'BEGIN { for (k = 0; k < n; k++) { print "points"
+	for (i = 0; i <= 100; i++) { t = i / 100
+	    x = (1 + 0.3 * sin(k / 10)) * sin(1.5 * t) + 0.01 * k * t
+	    printf "%d %.17g %.17g\n", k, x, 0.5 * cos(2 * t) + 0.002 * k }
+	print "" } }' >$W/sections.knots || exit 1
+$B/splinefit -o $W/sections.knots >$W/sections101.cubic || exit 1
+awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
+    $B/splinefit -o >$W/sections.cubic || exit 1
+$B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
 
 have_spline=0
 if command -v "$SPLINE" >/dev/null 2>&1 &&
@@ -83,6 +94,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ tocad-dxf "$B/tocad -f dxf -n 20 $W/insoles.cubic"
 	case_ tocad-dxf-tol "$B/tocad -f dxf $W/insoles.cubic"
 	case_ sample-n25 "$B/sample -n 25 $W/insoles.cubic"
+	case_ patchloft "$B/patchloft $W/sections.cubic"
+	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
 	rep=$((rep + 1))
 done
 echo
