@@ -11,21 +11,23 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade
+          plot grade fromcad
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
           bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o \
-          bin/obj/grade.o bin/obj/outfiles.o
+          bin/obj/grade.o bin/obj/outfiles.o bin/obj/cadread.o \
+          bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
 BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
-          bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade
+          bin/patchsplit bin/patchdrag bin/patchjoin bin/plot bin/grade \
+          bin/fromcad
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1 man/plot.1 \
-          man/grade.1
+          man/grade.1 man/fromcad.1
 MAN5    = man/loft.5
 MAN7    = man/loft.7
 
