@@ -160,11 +160,15 @@ loft__cad_put_name(struct loft_writer *w, const char *key, const char *s,
 int
 loft__pts_add(struct loft__pts *s, const double *x)
 {
-	if (loft__grow((void **)&s->p, &s->cap, 3 * (s->n + 1), sizeof *s->p)
-	    != 0)
+	double *q;
+
+	if (3 * (s->n + 1) > s->cap && loft__grow((void **)&s->p, &s->cap,
+	    3 * (s->n + 1), sizeof *s->p) != 0)
 		return -1;
-	memcpy(s->p + 3 * s->n, x, 3 * sizeof *x);
-	s->n++;
+	q = s->p + 3 * s->n++;
+	q[0] = x[0];
+	q[1] = x[1];
+	q[2] = x[2];
 	return 0;
 }
 

@@ -151,6 +151,9 @@ loft_csv_read(const char *buf, size_t len, struct loft_cad *c)
 	if (have && !bad) {     /* the last record, with no blank line after */
 		loft_end_record(w);
 		loft__cad_done(c, mark, first);
+	} else if (bad) {
+		w->len = mark;
+		w->col = 0;
 	}
 	if (hdr == NULL)
 		loft__cad_say(c, line, "no header line: want a first line "

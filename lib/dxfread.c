@@ -86,6 +86,7 @@ struct dxf {
 	struct ent e;
 	struct poly pl;
 	int in_insert;          /* ATTRIBs of an INSERT until its SEQEND */
+	int turns;              /* the document may hold turn points */
 	struct loft__pts verts, knots, work;
 	struct knotrec *kr;
 	size_t nkr, krcap;
@@ -98,7 +99,8 @@ struct dxf {
 static int
 nums_add(struct nums *s, double x)
 {
-	if (loft__grow((void **)&s->v, &s->cap, s->n + 1, sizeof *s->v) != 0)
+	if (s->n + 1 > s->cap && loft__grow((void **)&s->v, &s->cap, s->n + 1,
+	    sizeof *s->v) != 0)
 		return -1;
 	s->v[s->n++] = x;
 	return 0;
@@ -474,7 +476,7 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 	loft_end_line(w);
 	loft__pts_put(w, d->knots.p, n, dim);
 	loft_end_record(w);
-	if (loft__cad_done(d->c, mark, line) != 0)
+	if (loft__cad_done(d->c, mark, line) != 0 || !d->turns)
 		return;
 	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
 	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
@@ -1189,6 +1191,26 @@ apply_turns(struct dxf *d, size_t base)
 
 /* ---- the document --------------------------------------------------- */
 
+/* Whether the line word stands anywhere in buf[0..len), blanks around. */
+static int
+find_word(const char *buf, size_t len, const char *word)
+{
+	size_t n = strlen(word);
+
+	for (const char *p = buf, *e = buf + len; p < e;) {
+		const char *q = memchr(p, word[0], (size_t)(e - p));
+
+		if (q == NULL)
+			return 0;
+		if ((size_t)(e - q) >= n && memcmp(q, word, n) == 0 &&
+		    (q == buf || q[-1] == '\n' || q[-1] == ' ' || q[-1] == '\t') &&
+		    (q + n == e || q[n] == '\n' || q[n] == '\r' || q[n] == ' '))
+			return 1;
+		p = q + 1;
+	}
+	return 0;
+}
+
 enum { S_NONE, S_HEADER, S_ENTITIES, S_OTHER };
 
 static void
@@ -1253,6 +1275,8 @@ loft_dxf_read(const char *buf, size_t len, struct loft_cad *c)
 	d.end = buf + len;
 	d.c = c;
 	d.scale = 1;
+	/* no word POINT, no turn points: the knots need not be kept */
+	d.turns = find_word(buf, len, "POINT");
 	while (!eof && !d.oom && (r = next_pair(&d, &pr)) != 0) {
 		if (r < 0) {
 			if (r == -2)

@@ -562,6 +562,16 @@ arc_to(struct svg *s, const double *m, const double *a, double rx, double ry,
 	return 0;
 }
 
+/* S's and T's first control point: the last control point of the
+ * segment before reflected about the current point, if that segment
+ * was of the same kind (after), else the current point. */
+static void
+reflect(int after, const double *cur, const double *ctl, double *q)
+{
+	q[0] = after ? 2 * cur[0] - ctl[0] : cur[0];
+	q[1] = after ? 2 * cur[1] - ctl[1] : cur[1];
+}
+
 /* Path data: every subpath a record.  The element is read whole or, on
  * an error, not at all. */
 static void
@@ -656,10 +666,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 			if (up == 'C') {
 				memcpy(q + 2, v, 6 * sizeof *v);
 			} else {        /* the reflection of the last control */
-				int after = prev == 'C' || prev == 'S';
-
-				q[2] = after ? 2 * cur[0] - ctl[0] : cur[0];
-				q[3] = after ? 2 * cur[1] - ctl[1] : cur[1];
+				reflect(prev == 'C' || prev == 'S', cur, ctl, q + 2);
 				memcpy(q + 4, v, 4 * sizeof *v);
 			}
 			if (seg_bezier(s, q) != 0)
@@ -678,10 +685,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 				qc[0] = v[0];
 				qc[1] = v[1];
 			} else {
-				int after = prev == 'Q' || prev == 'T';
-
-				qc[0] = after ? 2 * cur[0] - ctl[0] : cur[0];
-				qc[1] = after ? 2 * cur[1] - ctl[1] : cur[1];
+				reflect(prev == 'Q' || prev == 'T', cur, ctl, qc);
 			}
 			/* P'_A = 2 (control - start), P'_B = 2 (end -
 			 * control): the cubic it is, exactly */
@@ -727,6 +731,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 bad:
 	w->len = mark;
 	w->col = 0;
+	p = skip_sep(p, e);
 	{
 		char msg[160];
 
@@ -1158,8 +1163,10 @@ loft_svg_read(const char *buf, size_t len, struct loft_cad *c)
 			}
 		}
 		if (r < 0) {
-			loft__cad_say(c, el.line, "malformed XML here: the rest "
-			    "of the document is not read");
+			loft__cad_say(c, el.line, "%s", s->p >= s->end ? "the "
+			    "document ends inside a tag: truncated?" :
+			    "malformed XML here: the rest of the document is "
+			    "not read");
 			break;
 		}
 		if (s->root && s->depth == 0 && s->skip == 0)

@@ -33,6 +33,7 @@ suite bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
 suite sh tests/plot.sh
 suite sh tests/grade.sh
+suite sh tests/fromcad.sh
 suite sh tests/bad.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
