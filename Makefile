@@ -146,7 +146,7 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fsanitize=fuzzer,address,undefined,float-cast-overflow \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
-          patchjoin plot grade
+          patchjoin plot grade fromcad
 LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
 
 bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \

@@ -31,6 +31,17 @@ loft__word_is(const char *s, size_t n, const char *word)
 	return k == n && word[k] == '\0';
 }
 
+const char *
+loft__cad_quote(char *buf, size_t size, const char *s, size_t n)
+{
+	size_t k;
+
+	for (k = 0; k < n && k + 1 < size; k++)
+		buf[k] = (unsigned char)s[k] < 32 || s[k] == 127 ? '?' : s[k];
+	buf[k] = '\0';
+	return buf;
+}
+
 /* The line at s[0..len) without its end and surrounding white space. */
 static void
 trimmed_line(const char *s, size_t len, const char **a, size_t *n)
@@ -67,18 +78,24 @@ loft_cad_sniff(const char *buf, size_t len)
 		return LOFT_CAD_SVG;
 	/* DXF: a group code (a whole number) on its own line, then a value */
 	trimmed_line(buf + i, len - i, &l, &n);
-	if (n > 0 && n <= 4 && strspn(l, "0123456789") >= n &&
-	    (nl = memchr(buf + i, '\n', len - i)) != NULL && nl + 1 < buf + len)
-		return LOFT_CAD_DXF;
+	{
+		size_t k = 0;
+
+		while (k < n && l[k] >= '0' && l[k] <= '9')
+			k++;
+		if (n > 0 && n <= 4 && k == n && (nl = memchr(buf + i, '\n',
+		    len - i)) != NULL && nl + 1 < buf + len)
+			return LOFT_CAD_DXF;
+	}
 	/* CSV: a header line that names an x and a y column */
 	{
 		int x = 0, y = 0;
 
 		for (size_t k = 0; k < n;) {
-			size_t m = strcspn(l + k, ",;\t \"'");
+			size_t m = 0;
 
-			if (m > n - k)
-				m = n - k;
+			while (k + m < n && strchr(",;\t \"'", l[k + m]) == NULL)
+				m++;
 			x |= loft__word_is(l + k, m, "x");
 			y |= loft__word_is(l + k, m, "y");
 			k += m + 1;

@@ -139,9 +139,12 @@ loft_csv_read(const char *buf, size_t len, struct loft_cad *c)
 				    "xyz"[q], cv.col[q] + 1);
 				bad = 1;
 			} else if (loft_parse_num(f, fn, &x[q], NULL) != 0) {
-				loft__cad_say(c, line, "%c '%.*s' is not a "
+				char t[31];
+
+				loft__cad_say(c, line, "%c '%s' is not a "
 				    "finite number: the record is not read",
-				    "xyz"[q], (int)(fn > 30 ? 30 : fn), f);
+				    "xyz"[q], loft__cad_quote(t, sizeof t, f,
+				    fn));
 				bad = 1;
 			}
 		}

@@ -169,9 +169,11 @@ next_pair(struct dxf *d, struct pair *pr)
 static const char *
 ent_name(const struct ent *e, char *buf, size_t size)
 {
+	char h[17];
+
 	if (e->nhandle > 0)
-		snprintf(buf, size, "%s (handle %.*s)", e->name,
-		    (int)(e->nhandle > 16 ? 16 : e->nhandle), e->handle);
+		snprintf(buf, size, "%s (handle %s)", e->name,
+		    loft__cad_quote(h, sizeof h, e->handle, e->nhandle));
 	else
 		snprintf(buf, size, "%s", e->name);
 	return buf;
@@ -182,9 +184,12 @@ ent_bad(struct ent *e, const char *what, const struct pair *pr)
 {
 	if (e->bad)
 		return;
+	char q[31];
+
 	e->bad = 1;
-	snprintf(e->msg, sizeof e->msg, "group %d '%.*s' %s (line %ld)",
-	    pr->code, (int)(pr->n > 30 ? 30 : pr->n), pr->v, what, pr->line);
+	snprintf(e->msg, sizeof e->msg, "group %d '%s' %s (line %ld)",
+	    pr->code, loft__cad_quote(q, sizeof q, pr->v, pr->n), what,
+	    pr->line);
 }
 
 static int
@@ -215,7 +220,7 @@ pair_int(struct ent *e, const struct pair *pr, long *v)
 static void
 ent_start(struct ent *e, const struct pair *pr)
 {
-	snprintf(e->name, sizeof e->name, "%.*s", (int)pr->n, pr->v);
+	loft__cad_quote(e->name, sizeof e->name, pr->v, pr->n);
 	e->line = pr->line;
 	e->handle = e->layer = NULL;
 	e->nhandle = e->nlayer = 0;
@@ -858,9 +863,8 @@ poly_start(struct dxf *d, struct ent *e)
 	pl->open = 1;
 	pl->bad = pl->refused = 0;
 	pl->line = e->line;
-	snprintf(pl->handle, sizeof pl->handle, "%.*s",
-	    (int)(e->nhandle > 16 ? 16 : e->nhandle), e->handle ? e->handle :
-	    "");
+	loft__cad_quote(pl->handle, 17, e->handle ? e->handle : "",
+	    e->nhandle);
 	pl->layer = e->layer;
 	pl->nlayer = e->nlayer;
 	pl->flags = e->f70;
@@ -968,9 +972,11 @@ header_var(struct dxf *d, const char *var, size_t nvar, const struct pair *pr)
 		return;
 	if (loft_parse_num(pr->v, pr->n, &x, NULL) != 0 || x != floor(x) ||
 	    x < 0 || x >= (double)(sizeof unit_mm / sizeof unit_mm[0])) {
-		loft__cad_say(d->c, pr->line, "$INSUNITS '%.*s' is no unit "
+		char q[21];
+
+		loft__cad_say(d->c, pr->line, "$INSUNITS '%s' is no unit "
 		    "loft knows: the drawing's numbers are kept as they are",
-		    (int)(pr->n > 20 ? 20 : pr->n), pr->v);
+		    loft__cad_quote(q, sizeof q, pr->v, pr->n));
 		return;
 	}
 	d->scale = unit_mm[(int)x];
@@ -1279,12 +1285,14 @@ loft_dxf_read(const char *buf, size_t len, struct loft_cad *c)
 	d.turns = find_word(buf, len, "POINT");
 	while (!eof && !d.oom && (r = next_pair(&d, &pr)) != 0) {
 		if (r < 0) {
+			char q[31];
+
 			if (r == -2)
 				break;  /* truncated: said below */
-			loft__cad_say(c, pr.line, "'%.*s' is not a group code "
-			    "(a whole number)%s", (int)(pr.n > 30 ? 30 : pr.n),
-			    pr.v, in_ent ? "; the entity it is in is not read" :
-			    "");
+			loft__cad_say(c, pr.line, "'%s' is not a group code "
+			    "(a whole number)%s", loft__cad_quote(q, sizeof q,
+			    pr.v, pr.n), in_ent ? "; the entity it is in is not "
+			    "read" : "");
 			if (in_ent)
 				d.e.bad = 2;    /* said */
 			if (!resync(&d))

@@ -172,6 +172,9 @@ long loft__arc_chords(const struct loft_cad *c, double r, double a);
 long loft__arc_cubics(const struct loft_cad *c, double r, double a);
 /* The cubic row P_A P_B P'_A P'_B of the Bezier b[0..4) (dim each). */
 void loft__bezier_hermite(const double *b, int dim, double *row);
+/* s[0..n) for a message: at most size - 1 bytes of it into buf, each
+ * control byte as '?', so that a message stays one line; returns buf. */
+const char *loft__cad_quote(char *buf, size_t size, const char *s, size_t n);
 /* Whether s[0..n) is word, ignoring ASCII case. */
 int loft__word_is(const char *s, size_t n, const char *word);
 

@@ -218,14 +218,14 @@ static void
 say_el(struct svg *s, const struct elem *el, const char *at, const char *what)
 {
 	const struct attr *id = attr_of(el, "id");
+	char nm[41], q[41];
 
+	loft__cad_quote(nm, sizeof nm, el->name, el->nn);
 	if (id != NULL)
-		loft__cad_say(s->c, line_at(el, at), "%.*s id=%.*s: %s",
-		    (int)el->nn, el->name, (int)(id->vn > 40 ? 40 : id->vn),
-		    id->v, what);
+		loft__cad_say(s->c, line_at(el, at), "%s id=%s: %s", nm,
+		    loft__cad_quote(q, sizeof q, id->v, id->vn), what);
 	else
-		loft__cad_say(s->c, line_at(el, at), "%.*s: %s", (int)el->nn,
-		    el->name, what);
+		loft__cad_say(s->c, line_at(el, at), "%s: %s", nm, what);
 }
 
 /* A number attribute (with no unit): 0, 1 when absent, -1 when bad. */
@@ -733,10 +733,10 @@ bad:
 	w->col = 0;
 	p = skip_sep(p, e);
 	{
-		char msg[160];
+		char msg[160], q[13];
 
-		snprintf(msg, sizeof msg, "%s at '%.*s': not read", why,
-		    (int)(e - p > 12 ? 12 : e - p), p);
+		snprintf(msg, sizeof msg, "%s at '%s': not read", why,
+		    loft__cad_quote(q, sizeof q, p, (size_t)(e - p)));
 		say_el(s, el, p, msg);
 	}
 	return;

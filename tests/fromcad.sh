@@ -302,6 +302,10 @@ t2=$(date +%s%N)
 awk -v a=$((t1 - t0)) -v b=$((t2 - t1)) 'BEGIN { exit !(b < 25 * a + 2e8) }' && ok ||
     no "10^6 segments took $(((t2 - t1) / 1000000)) ms, 10^5 $(((t1 - t0) / 1000000)) ms: not linear"
 rm -f "$T"/long*.svg
+# Text quoted in a message keeps the message one line (found by fuzzing)
+printf '<svg><path d="M0 0 L1 0 L\n\001x"/></svg>' >"$T/ctl.svg"
+fails 1 "ctl.svg:2: path: bad path data at '?x'" "$F $T/ctl.svg"
+[ "$(wc -l <"$T/err")" = 1 ] && ok || no "ctl.svg: message of more lines: $(cat "$T/err")"
 # Garbage and binary bytes: a message, nothing written, exit 1
 printf '<\001\002\377garbage' >"$T/garbage.svg"
 fails 1 "malformed XML" "$F $T/garbage.svg"
