@@ -23,7 +23,8 @@ BINS    = bin/splinefit bin/sample bin/bezapprox bin/patchnew \
           bin/fromcad
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen
-BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
+BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
+          bin/bench/numbers
 LIB     = bin/libloft.a
 MAN1    = man/splinefit.1 man/sample.1 man/bezapprox.1 man/patchnew.1 \
           man/patchsplit.1 man/patchdrag.1 man/patchjoin.1 man/plot.1 \
