@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "loft.h"
@@ -40,14 +41,20 @@ complain(void *ctx, long line, const char *msg)
 	o->run->status = 1;
 }
 
-/* All of fp into *buf (malloc'd); 0, or an errno value. */
+/* All of fp into *buf (malloc'd); 0, or an errno value.  A file's own
+ * size is the first guess, so that a large drawing is not copied as the
+ * buffer grows. */
 static int
 slurp(FILE *fp, char **buf, size_t *len)
 {
+	struct stat st;
 	size_t cap = 1 << 16, n = 0, got;
-	char *b = malloc(cap), *nb;
+	char *b, *nb;
 
-	if (b == NULL)
+	if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) &&
+	    st.st_size > 0 && (unsigned long long)st.st_size < ((size_t)-1) / 4)
+		cap = (size_t)st.st_size + 1;
+	if ((b = malloc(cap)) == NULL)
 		return ENOMEM;
 	while ((got = fread(b + n, 1, cap - n, fp)) > 0) {
 		n += got;

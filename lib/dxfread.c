@@ -1281,6 +1281,10 @@ loft_dxf_read(const char *buf, size_t len, struct loft_cad *c)
 	d.end = buf + len;
 	d.c = c;
 	d.scale = 1;
+	/* the records are shorter than the groups they come from: room for
+	 * them at once saves copying the output as it grows (if there is
+	 * no such room, it grows as usual) */
+	loft__grow((void **)&c->w->buf, &c->w->cap, c->w->len + len + 1, 1);
 	/* no word POINT, no turn points: the knots need not be kept */
 	d.turns = find_word(buf, len, "POINT");
 	while (!eof && !d.oom && (r = next_pair(&d, &pr)) != 0) {
