@@ -572,6 +572,19 @@ reflect(int after, const double *cur, const double *ctl, double *q)
 	q[1] = after ? 2 * cur[1] - ctl[1] : cur[1];
 }
 
+/* After a curved segment: its last control point c (for S or T), its
+ * end e the current point, and the subpath no longer straight. */
+static void
+curve_end(double *ctl, const double *c, double *cur, const double *e,
+    int *straight)
+{
+	ctl[0] = c[0];
+	ctl[1] = c[1];
+	cur[0] = e[0];
+	cur[1] = e[1];
+	*straight = 0;
+}
+
 /* Path data: every subpath a record.  The element is read whole or, on
  * an error, not at all. */
 static void
@@ -671,11 +684,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 			}
 			if (seg_bezier(s, q) != 0)
 				goto oom;
-			ctl[0] = q[4];
-			ctl[1] = q[5];
-			cur[0] = q[6];
-			cur[1] = q[7];
-			straight = 0;
+			curve_end(ctl, q + 4, cur, q + 6, &straight);
 			break;
 		case 'Q':
 		case 'T': {
@@ -699,11 +708,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 			}
 			if (seg_row(s, q, q + 2, q + 4, q + 6) != 0)
 				goto oom;
-			ctl[0] = qc[0];
-			ctl[1] = qc[1];
-			cur[0] = q[2];
-			cur[1] = q[3];
-			straight = 0;
+			curve_end(ctl, qc, cur, q + 2, &straight);
 			break;
 		}
 		case 'A':
