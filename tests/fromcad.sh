@@ -225,6 +225,50 @@ out_is "points closed=0 layer=Cut%20line%20%231 name=p1
 25.4 0
 "
 
+# An Inkscape document: DOCTYPE with an internal subset, namedview,
+# defs, metadata passed over; the layer's translate(-10,-20) takes
+# m 20,30 to (10,10), the end 20,20 further to (30,30); turned up.
+# P'_A = 3(10,0), P'_B = 3((40,50) - (40,40)) = (0,30), y negated.
+cat >"$T/ink.svg" <<'EOF'
+<?xml version="1.0" encoding="UTF-8" standalone="no"?>
+<!-- Created with Inkscape (http://www.inkscape.org/) -->
+<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [
+  <!ENTITY ns "http://www.w3.org/2000/svg">
+]>
+<svg
+   width="210mm"
+   height="297mm"
+   viewBox="0 0 210 297"
+   version="1.1"
+   id="svg1"
+   inkscape:version="1.2 (dc2aedaf03, 2022-05-15)"
+   sodipodi:docname="pattern.svg"
+   xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+   xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
+   xmlns="http://www.w3.org/2000/svg"
+   xmlns:svg="http://www.w3.org/2000/svg">
+  <sodipodi:namedview id="namedview7" pagecolor="#ffffff" inkscape:document-units="mm" />
+  <defs id="defs2"><linearGradient id="g1"><stop offset="0" style="stop-color:#000"/></linearGradient></defs>
+  <metadata><rdf:RDF xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#"><cc:Work/></rdf:RDF></metadata>
+  <g
+     inkscape:label="Layer 1"
+     inkscape:groupmode="layer"
+     id="layer1"
+     transform="translate(-10,-20)">
+    <path
+       style="fill:none;stroke:#000000;stroke-width:0.264583"
+       d="m 20,30 c 10,0 20,10 20,20"
+       id="path1"
+       sodipodi:nodetypes="cc" />
+  </g>
+</svg>
+EOF
+run "$F $T/ink.svg"
+status 0
+out_is "cubic closed=0 layer=Layer%201 name=path1
+10 -10 30 -30 30 0 0 -30
+"
+
 # ---- SVG that cannot be read whole -----------------------------------
 svg "$T/text.svg" '<path d="M0 0L1 0"/>
 <text x="0" y="0">label</text>
