@@ -11,7 +11,7 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade offset measure tocad patchloft patchcut
+          plot grade offset measure tocad patchloft patchcut fromcad
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
@@ -20,7 +20,8 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/offset.o \
           bin/obj/bernstein.o bin/obj/arclen.o bin/obj/measure.o \
           bin/obj/flatten.o bin/obj/merge.o bin/obj/fair.o \
-          bin/obj/skin.o bin/obj/cut.o
+          bin/obj/skin.o bin/obj/cut.o bin/obj/cadread.o \
+          bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
 LIBOBJ += $(CADOBJ)
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o
@@ -168,7 +169,7 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fsanitize=fuzzer,address,undefined,float-cast-overflow \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
-          patchjoin plot grade offset measure patchloft patchcut
+          patchjoin plot grade offset measure patchloft patchcut fromcad
 LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
 
 bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \

@@ -1381,5 +1381,59 @@ int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
     double tol, struct loft_cut *out, struct loft_error *err);
 
 void loft_cut_free(struct loft_cut *c);
+/* Reading CAD documents into records (cadread.c, dxfread.c,          */
+/* svgread.c, csvread.c)                                               */
+
+/* The formats, by the names of fromcad -f. */
+enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV };
+extern const char *const loft_cadin_format_name[];       /* NULL-ended */
+
+/*
+ * Circular and elliptic arcs are not polynomial, so the readers
+ * approximate them: DXF arcs (bulges, ARC, CIRCLE) by chords, SVG arcs
+ * by cubic pieces, each within a distance of the true arc.  That
+ * distance is tol (in the output's units) when tol > 0, else
+ * LOFT_CADIN_ARC_REL times the arc's radius (its larger semi-axis): a
+ * hundredth of a millimetre on a 100 mm radius, finer than a cutter's
+ * kerf, and scale-free.  An arc that would need more than
+ * LOFT_CADIN_ARC_MAX pieces for tol is refused (a tol far below the
+ * arc's size is a mistake, not a request for a million points).
+ */
+#define LOFT_CADIN_ARC_REL 1e-4
+#define LOFT_CADIN_ARC_MAX 100000
+
+/*
+ * A reading: the records go to w, each whole (a record that fails is
+ * taken back out of w); each problem found is handed to complain with
+ * the document's line (1-based) and a message of no newline, and
+ * counted in nbad.  The reader goes on after each problem.
+ */
+struct loft_cadin {
+	double tol;             /* arcs: see LOFT_CADIN_ARC_REL; 0: relative */
+	struct loft_writer *w;
+	void (*complain)(void *ctx, long line, const char *msg);
+	void *ctx;
+	long nbad;
+};
+
+/*
+ * The format of the document buf[0..len), told from its content: a
+ * binary or ASCII DXF, an XML document (SVG), or a text whose first line
+ * names columns (CSV).  Returns the enum loft_cadin_format, or -1 when it
+ * is none of them (len 0 included).
+ */
+int loft_cadin_sniff(const char *buf, size_t len);
+
+/*
+ * Read the whole document buf[0..len) of the given format into records
+ * (fromcad(1) and loft(5) say which records each element becomes).
+ * Returns 0 when all of it was read; LOFT_EINPUT when anything was
+ * complained about (the rest was read); LOFT_ENOMEM when memory ran out
+ * (complained about too; what was read before may be in w).
+ */
+int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c);
+int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);
 
 #endif

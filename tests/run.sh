@@ -38,6 +38,7 @@ suite sh tests/offset.sh
 suite bin/test/cad
 suite sh tests/tocad.sh
 suite sh tests/loftcut.sh
+suite sh tests/fromcad.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
 suite sh tests/oom.sh

@@ -8,7 +8,9 @@
 #   REPS=5 N=10000 PYTHON=python3 SPLINE=spline sh tests/bench/run.sh
 #
 # Needs sh, the programs in bin/ and bin/bench/ (make bench builds them),
-# and optionally GNU plotutils spline and Python with scipy.
+# and optionally GNU plotutils spline and Python with scipy.  fromcad's
+# case reads a DXF of the N insoles (50 MB for N=10000) against the
+# time to read its bytes as numbers (bin/bench/numbers, and awk).
 
 B=bin
 W=bin/bench
@@ -44,6 +46,18 @@ $B/splinefit -o $W/sections.knots >$W/sections101.cubic || exit 1
 awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
     $B/splinefit -o >$W/sections.cubic || exit 1
 $B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
+# fromcad's corpus: the fitted insoles sampled 8 points a segment, each a
+# closed LWPOLYLINE of 177 vertices on layer 1, in millimetres: 50 MB
+echo "bench: making $W/insoles.dxf: the insoles as 10^4 LWPOLYLINEs, 50 MB"
+$B/sample -n 8 -p 10 $W/insoles.cubic | awk '
+function flush() {
+	if (n) printf "0\nLWPOLYLINE\n5\n%X\n8\n1\n90\n%d\n70\n1\n%s", ++h, n, v
+	n = 0; v = ""
+}
+BEGIN { printf "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n" }
+NF { v = v sprintf("10\n%s\n20\n%s\n", $1, $2); n++; next }
+{ flush() }
+END { flush(); printf "0\nENDSEC\n0\nEOF\n" }' >$W/insoles.dxf || exit 1
 
 have_spline=0
 if command -v "$SPLINE" >/dev/null 2>&1 &&
@@ -89,6 +103,9 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ surface-63 "$B/sample -n 100 $W/surface63.bez"
 	case_ outline-fit "$B/splinefit $W/outline.knots"
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"
+	case_ fromcad "$B/fromcad $W/insoles.dxf"
+	case_ dxf-numbers "$W/numbers $W/insoles.dxf"
+	case_ dxf-awk "awk '{ s += \$1 } END { print s }' $W/insoles.dxf"
 	[ $have_spline = 1 ] &&
 	    case_ space-gnu "$SPLINE -a -d 3 -p -n 400000 $W/space.spline"
 	case_ tocad-dxf "$B/tocad -f dxf -n 20 $W/insoles.cubic"
@@ -112,3 +129,7 @@ echo "bench: tocad -f dxf of the insoles: -n 20, the points of sample -n 20" \
     "(440 a closed outline, 441); and at its default tolerance, about 540," \
     "against sample -n 25 (551)"
 $W/timeit -r $OUT tocad-dxf/sample tocad-dxf-tol/sample-n25
+echo
+echo "bench: fromcad of a 50 MB DXF against reading its bytes as numbers" \
+    "(numbers: loft's converter on every line; awk: summing them)"
+$W/timeit -r $OUT fromcad/dxf-numbers fromcad/dxf-awk

@@ -1,0 +1,273 @@
+/*
+ * cadread.c: what the CAD readers (dxfread.c, svgread.c, csvread.c)
+ * share: telling a document's format, the dispatch, their complaints,
+ * records written whole, attribute values from names, and arcs made
+ * polynomial within a tolerance.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "internal.h"
+
+const char *const loft_cadin_format_name[] = { "dxf", "svg", "csv", NULL };
+
+int
+loft__word_is(const char *s, size_t n, const char *word)
+{
+	size_t k;
+
+	for (k = 0; k < n && word[k] != '\0'; k++) {
+		int a = (unsigned char)s[k], b = (unsigned char)word[k];
+
+		if (a >= 'A' && a <= 'Z')
+			a += 'a' - 'A';
+		if (b >= 'A' && b <= 'Z')
+			b += 'a' - 'A';
+		if (a != b)
+			return 0;
+	}
+	return k == n && word[k] == '\0';
+}
+
+const char *
+loft__cadin_quote(char *buf, size_t size, const char *s, size_t n)
+{
+	size_t k;
+
+	for (k = 0; k < n && k + 1 < size; k++)
+		buf[k] = (unsigned char)s[k] < 32 || s[k] == 127 ? '?' : s[k];
+	buf[k] = '\0';
+	return buf;
+}
+
+/* The line at s[0..len) without its end and surrounding white space. */
+static void
+trimmed_line(const char *s, size_t len, const char **a, size_t *n)
+{
+	const char *e = memchr(s, '\n', len);
+	size_t m = e ? (size_t)(e - s) : len, i = 0;
+
+	while (i < m && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r'))
+		i++;
+	while (m > i && (s[m - 1] == ' ' || s[m - 1] == '\t' ||
+	    s[m - 1] == '\r'))
+		m--;
+	*a = s + i;
+	*n = m - i;
+}
+
+int
+loft_cadin_sniff(const char *buf, size_t len)
+{
+	static const char bin[] = "AutoCAD Binary DXF";
+	const char *l, *nl;
+	size_t n, i = 0;
+
+	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0)
+		return LOFT_CADIN_DXF;
+	if (len >= 3 && memcmp(buf, "\xef\xbb\xbf", 3) == 0)
+		i = 3;          /* a UTF-8 byte order mark */
+	while (i < len && (buf[i] == ' ' || buf[i] == '\t' || buf[i] == '\r' ||
+	    buf[i] == '\n'))
+		i++;
+	if (i == len)
+		return -1;
+	if (buf[i] == '<')
+		return LOFT_CADIN_SVG;
+	/* DXF: a group code (a whole number) on its own line, then a value */
+	trimmed_line(buf + i, len - i, &l, &n);
+	{
+		size_t k = 0;
+
+		while (k < n && l[k] >= '0' && l[k] <= '9')
+			k++;
+		if (n > 0 && n <= 4 && k == n && (nl = memchr(buf + i, '\n',
+		    len - i)) != NULL && nl + 1 < buf + len)
+			return LOFT_CADIN_DXF;
+	}
+	/* CSV: a header line that names an x and a y column */
+	{
+		int x = 0, y = 0;
+
+		for (size_t k = 0; k < n;) {
+			size_t m = 0;
+
+			while (k + m < n && strchr(",;\t \"'", l[k + m]) == NULL)
+				m++;
+			x |= loft__word_is(l + k, m, "x");
+			y |= loft__word_is(l + k, m, "y");
+			k += m + 1;
+		}
+		if (x && y)
+			return LOFT_CADIN_CSV;
+	}
+	return -1;
+}
+
+int
+loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c)
+{
+	switch (format) {
+	case LOFT_CADIN_DXF: return loft_dxf_read(buf, len, c);
+	case LOFT_CADIN_SVG: return loft_svg_read(buf, len, c);
+	case LOFT_CADIN_CSV: return loft_csv_read(buf, len, c);
+	}
+	loft__cadin_say(c, 0, "unknown format");
+	return LOFT_EINPUT;
+}
+
+void
+loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
+{
+	char msg[256];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	c->nbad++;
+	c->complain(c->ctx, line, msg);
+}
+
+int
+loft__cadin_done(struct loft_cadin *c, size_t mark, long line)
+{
+	struct loft_writer *w = c->w;
+	int bad = w->bad;
+
+	if (!bad)
+		return 0;
+	w->len = mark < w->len ? mark : w->len;
+	w->bad = 0;
+	w->col = 0;
+	loft__cadin_say(c, line, "%s", bad == LOFT_ENOMEM ? "out of memory" :
+	    "result is not finite (the input is too extreme)");
+	return -1;
+}
+
+void
+loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
+    size_t n)
+{
+	static const char hex[] = "0123456789ABCDEF";
+	char buf[3 * 255 + 1];
+	size_t k = 0;
+
+	if (n == 0)
+		return;
+	if (n > 255)            /* a name this long is no layer name */
+		n = 255;
+	for (size_t i = 0; i < n; i++) {
+		unsigned char b = (unsigned char)s[i];
+
+		if (b < 33 || b > 126 || b == '%' || b == '#') {
+			buf[k++] = '%';
+			buf[k++] = hex[b >> 4];
+			buf[k++] = hex[b & 15];
+		} else {
+			buf[k++] = (char)b;
+		}
+	}
+	buf[k] = '\0';
+	loft_put_attr(w, key, buf);
+}
+
+int
+loft__pts_add(struct loft__pts *s, const double *x)
+{
+	double *q;
+
+	if (3 * (s->n + 1) > s->cap && loft__grow((void **)&s->p, &s->cap,
+	    3 * (s->n + 1), sizeof *s->p) != 0)
+		return -1;
+	q = s->p + 3 * s->n++;
+	q[0] = x[0];
+	q[1] = x[1];
+	q[2] = x[2];
+	return 0;
+}
+
+int
+loft__pts_dim(const double *p, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		if (p[3 * i + 2] != 0)
+			return 3;
+	return 2;
+}
+
+void
+loft__pts_put(struct loft_writer *w, const double *p, size_t n, int dim)
+{
+	for (size_t i = 0; i < n; i++)
+		loft_put_row(w, p + 3 * i, dim);
+}
+
+/* The tolerance of an arc of radius r in the output's units. */
+static double
+arc_tol(const struct loft_cadin *c, double r)
+{
+	return c->tol > 0 ? c->tol : LOFT_CADIN_ARC_REL * r;
+}
+
+/*
+ * Chords: one spanning an angle t stands r (1 - cos(t/2)) off the arc
+ * at its middle, so t = 2 acos(1 - tol/r); never more than a quarter
+ * turn a chord, so that a coarse tolerance still keeps the arc's shape.
+ */
+long
+loft__arc_chords(const struct loft_cadin *c, double r, double a)
+{
+	double tol = arc_tol(c, r), t, n;
+
+	a = fabs(a);
+	t = tol >= r ? M_PI / 2 : 2 * acos(1 - tol / r);
+	if (!(t > 0) || t > M_PI / 2)
+		t = M_PI / 2;
+	n = ceil(a / t - 1e-12);
+	if (!(n <= LOFT_CADIN_ARC_MAX))
+		return -1;
+	return n < 1 ? 1 : (long)n;
+}
+
+/* The radial error of the cubic through an arc of radius r and angle t
+ * with its inner control points at (4/3) tan(t/4) r along the end
+ * tangents: r (2/27) sin^6(t/4) / cos^2(t/4), largest at the middle. */
+static double
+cubic_arc_error(double r, double t)
+{
+	double s = sin(t / 4), co = cos(t / 4);
+
+	return r * (2.0 / 27) * s * s * s * s * s * s / (co * co);
+}
+
+long
+loft__arc_cubics(const struct loft_cadin *c, double r, double a)
+{
+	double tol = arc_tol(c, r), n, t;
+
+	a = fabs(a);
+	/* sin^6(t/4) ~ (t/4)^6: a first guess from below, then step up */
+	t = 4 * pow(27 * tol / (2 * r), 1.0 / 6);
+	n = !(t > 0) ? LOFT_CADIN_ARC_MAX + 1.0 : ceil(a / t - 1e-12);
+	if (n < ceil(a / (M_PI / 2) - 1e-12))
+		n = ceil(a / (M_PI / 2) - 1e-12);
+	if (n < 1)
+		n = 1;
+	while (n <= LOFT_CADIN_ARC_MAX && cubic_arc_error(r, a / n) > tol)
+		n++;
+	return n <= LOFT_CADIN_ARC_MAX ? (long)n : -1;
+}
+
+void
+loft__bezier_hermite(const double *b, int dim, double *row)
+{
+	for (int k = 0; k < dim; k++) {
+		row[k] = b[k];
+		row[dim + k] = b[3 * dim + k];
+		row[2 * dim + k] = 3 * (b[dim + k] - b[k]);
+		row[3 * dim + k] = 3 * (b[3 * dim + k] - b[2 * dim + k]);
+	}
+}

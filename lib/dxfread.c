@@ -1,0 +1,1368 @@
+/*
+ * dxfread.c: ASCII DXF (R12 to current) into loft records.  A DXF is
+ * pairs of lines, a group code and its value; the ENTITIES section's
+ * entities become records in the order of the file:
+ *
+ *   LINE, LWPOLYLINE, POLYLINE (VERTEX ... SEQEND), ARC, CIRCLE, POINT,
+ *   SPLINE by fit points           knot (points) records;
+ *   SPLINE by control points       exact pieces: `cubic` (degree 1 to 3)
+ *                                  or `bezier` records (degree 4 up).
+ *
+ * Arcs (bulges, ARC, CIRCLE) are chords within c->tol.  $INSUNITS
+ * scales the drawing to millimetres.  POINTs on layer 2 at the vertices
+ * of knot records are ASTM D6673 turn points: they become corners= of
+ * those records instead of records of their own.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Turn points lie on polyline vertices, written with the same digits;
+ * nearer than this fraction of the drawing's extent is "at" one (a
+ * micrometre on a metre-wide marker: far below any two vertices'
+ * spacing, far above the rounding of coordinates written with 6 or more
+ * significant digits). */
+#define TURN_TOL 1e-6
+
+/* A SPLINE's weights within this of each other are equal: the spline
+ * is polynomial (the weights of non-rational splines are written 1). */
+#define WEIGHT_SAME 1e-12
+
+#define MAX_DEGREE 63           /* loft.5's bezier records */
+
+struct nums {
+	double *v;
+	size_t n, cap;
+};
+
+/* One entity: the groups loft uses, collected until the next 0 group. */
+struct ent {
+	char name[32];
+	long line;
+	const char *handle, *layer;
+	size_t nhandle, nlayer;
+	struct loft__pts p10, p11;      /* 10/20/30, 11/21/31 */
+	struct nums bulge;              /* 42 per 10 point (polylines) */
+	struct nums g40, g41;           /* knots (radius), weights */
+	double t12[3], t13[3], ext[3], elev, a50, a51;
+	int has12, has13, has50, has51;
+	long f70, f71, f73, f90;
+	int has71, has73, has90;
+	int bad;                        /* a message is in msg */
+	char msg[200];
+};
+
+/* A POLYLINE while its VERTEX entities come in. */
+struct poly {
+	int open, bad, refused;
+	long line, flags;
+	char handle[24];
+	const char *layer;
+	size_t nlayer;
+	double ext[3], elev;
+	struct loft__pts v;
+	struct nums bulge;
+};
+
+struct knotrec {                /* a knot record written: for corners= */
+	size_t hdr;             /* offset in w of its header line's end */
+	size_t v0, nv;          /* its knots in verts */
+};
+
+struct turn {                   /* a POINT on layer 2 */
+	double x[3];
+	size_t a, b;            /* its record's text in w */
+	int used;
+};
+
+struct dxf {
+	const char *p, *end;
+	long line;              /* lines read */
+	struct loft_cadin *c;
+	double scale;           /* drawing units to millimetres */
+	struct ent e;
+	struct poly pl;
+	int in_insert;          /* ATTRIBs of an INSERT until its SEQEND */
+	int turns;              /* the document may hold turn points */
+	struct loft__pts verts, knots, work;
+	struct knotrec *kr;
+	size_t nkr, krcap;
+	struct turn *tp;
+	size_t ntp, tpcap;
+	struct nums seg;        /* spline pieces */
+	int oom;
+};
+
+static int
+nums_add(struct nums *s, double x)
+{
+	if (s->n + 1 > s->cap && loft__grow((void **)&s->v, &s->cap, s->n + 1,
+	    sizeof *s->v) != 0)
+		return -1;
+	s->v[s->n++] = x;
+	return 0;
+}
+
+/* The next line: its text without the line end and surrounding blanks. */
+static int
+next_line(struct dxf *d, const char **s, size_t *n)
+{
+	const char *a = d->p, *e;
+
+	if (a >= d->end)
+		return 0;
+	e = memchr(a, '\n', (size_t)(d->end - a));
+	d->p = e ? e + 1 : d->end;
+	if (e == NULL)
+		e = d->end;
+	d->line++;
+	while (a < e && (*a == ' ' || *a == '\t' || *a == '\r'))
+		a++;
+	while (e > a && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'))
+		e--;
+	*s = a;
+	*n = (size_t)(e - a);
+	return 1;
+}
+
+struct pair {
+	int code;
+	const char *v;
+	size_t n;
+	long line;              /* of the code */
+};
+
+/* The next pair: 1, 0 at the end, -1 for a code that is not a whole
+ * number, -2 for a code with no value after it (a truncated file). */
+static int
+next_pair(struct dxf *d, struct pair *pr)
+{
+	const char *s;
+	size_t n, i = 0;
+	long code = 0;
+	int neg = 0;
+
+	if (!next_line(d, &s, &n))
+		return 0;
+	pr->line = d->line;
+	pr->v = s;
+	pr->n = n;
+	if (n > 0 && s[0] == '-')
+		neg = i = 1;
+	if (i == n || n - i > 6)
+		return -1;
+	for (; i < n; i++) {
+		if (s[i] < '0' || s[i] > '9')
+			return -1;
+		code = 10 * code + (s[i] - '0');
+	}
+	pr->code = (int)(neg ? -code : code);
+	if (!next_line(d, &pr->v, &pr->n))
+		return -2;
+	return 1;
+}
+
+/* The entity's name for messages: "LINE (handle 2F)". */
+static const char *
+ent_name(const struct ent *e, char *buf, size_t size)
+{
+	char h[17];
+
+	if (e->nhandle > 0)
+		snprintf(buf, size, "%s (handle %s)", e->name,
+		    loft__cadin_quote(h, sizeof h, e->handle, e->nhandle));
+	else
+		snprintf(buf, size, "%s", e->name);
+	return buf;
+}
+
+static void
+ent_bad(struct ent *e, const char *what, const struct pair *pr)
+{
+	if (e->bad)
+		return;
+	char q[31];
+
+	e->bad = 1;
+	snprintf(e->msg, sizeof e->msg, "group %d '%s' %s (line %ld)",
+	    pr->code, loft__cadin_quote(q, sizeof q, pr->v, pr->n), what,
+	    pr->line);
+}
+
+static int
+pair_num(struct ent *e, const struct pair *pr, double *x)
+{
+	if (loft_parse_num(pr->v, pr->n, x, NULL) != 0) {
+		ent_bad(e, "is not a finite number", pr);
+		return -1;
+	}
+	return 0;
+}
+
+static int
+pair_int(struct ent *e, const struct pair *pr, long *v)
+{
+	double x;
+
+	if (pair_num(e, pr, &x) != 0)
+		return -1;
+	if (x != floor(x) || fabs(x) > 1e9) {
+		ent_bad(e, "is not a whole number", pr);
+		return -1;
+	}
+	*v = (long)x;
+	return 0;
+}
+
+static void
+ent_start(struct ent *e, const struct pair *pr)
+{
+	loft__cadin_quote(e->name, sizeof e->name, pr->v, pr->n);
+	e->line = pr->line;
+	e->handle = e->layer = NULL;
+	e->nhandle = e->nlayer = 0;
+	e->p10.n = e->p11.n = e->bulge.n = e->g40.n = e->g41.n = 0;
+	e->has12 = e->has13 = e->has50 = e->has51 = 0;
+	e->ext[0] = e->ext[1] = 0;
+	e->ext[2] = 1;
+	e->elev = e->a50 = e->a51 = 0;
+	e->f70 = e->f71 = e->f73 = e->f90 = 0;
+	e->has71 = e->has73 = e->has90 = 0;
+	e->bad = 0;
+}
+
+/* Coordinate k of a point list's last point, for groups 20 and 30. */
+static void
+set_last(struct ent *e, struct loft__pts *s, int k, const struct pair *pr)
+{
+	double x;
+
+	if (pair_num(e, pr, &x) != 0)
+		return;
+	if (s->n == 0) {
+		ent_bad(e, "comes before its x (group 10 or 11)", pr);
+		return;
+	}
+	s->p[3 * (s->n - 1) + k] = x;
+}
+
+static void
+ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
+{
+	double x[3] = { 0, 0, 0 };
+	int poly = strcmp(e->name, "LWPOLYLINE") == 0 ||
+	    strcmp(e->name, "VERTEX") == 0;
+
+	switch (pr->code) {
+	case 5: e->handle = pr->v; e->nhandle = pr->n; break;
+	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
+	case 10:
+	case 11:
+		if (pair_num(e, pr, &x[0]) != 0)
+			break;
+		if (loft__pts_add(pr->code == 10 ? &e->p10 : &e->p11, x) != 0 ||
+		    (pr->code == 10 && poly && nums_add(&e->bulge, 0) != 0))
+			d->oom = 1;
+		break;
+	case 20: set_last(e, &e->p10, 1, pr); break;
+	case 30: set_last(e, &e->p10, 2, pr); break;
+	case 21: set_last(e, &e->p11, 1, pr); break;
+	case 31: set_last(e, &e->p11, 2, pr); break;
+	case 12: e->has12 = pair_num(e, pr, &e->t12[0]) == 0; break;
+	case 22: pair_num(e, pr, &e->t12[1]); break;
+	case 32: pair_num(e, pr, &e->t12[2]); break;
+	case 13: e->has13 = pair_num(e, pr, &e->t13[0]) == 0; break;
+	case 23: pair_num(e, pr, &e->t13[1]); break;
+	case 33: pair_num(e, pr, &e->t13[2]); break;
+	case 38: pair_num(e, pr, &e->elev); break;
+	case 40:
+	case 41:
+		if (pair_num(e, pr, &x[0]) == 0 &&
+		    nums_add(pr->code == 40 ? &e->g40 : &e->g41, x[0]) != 0)
+			d->oom = 1;
+		break;
+	case 42:
+		if (!poly)
+			break;  /* a SPLINE's 42 is a tolerance */
+		if (pair_num(e, pr, &x[0]) != 0)
+			break;
+		if (e->bulge.n == 0)
+			ent_bad(e, "comes before the vertex it bends", pr);
+		else
+			e->bulge.v[e->bulge.n - 1] = x[0];
+		break;
+	case 50: e->has50 = pair_num(e, pr, &e->a50) == 0; break;
+	case 51: e->has51 = pair_num(e, pr, &e->a51) == 0; break;
+	case 70: pair_int(e, pr, &e->f70); break;
+	case 71: e->has71 = pair_int(e, pr, &e->f71) == 0; break;
+	case 73: e->has73 = pair_int(e, pr, &e->f73) == 0; break;
+	case 90: e->has90 = pair_int(e, pr, &e->f90) == 0; break;
+	case 210: pair_num(e, pr, &e->ext[0]); break;
+	case 220: pair_num(e, pr, &e->ext[1]); break;
+	case 230: pair_num(e, pr, &e->ext[2]); break;
+	}
+}
+
+/*
+ * The arbitrary axis algorithm of the DXF reference: the x and y axes
+ * of the object coordinate system whose z axis is the extrusion n.
+ * Returns 0, or -1 when n is zero.
+ */
+static int
+ocs_axes(const double *ext, double *ax, double *ay, double *az)
+{
+	double len = sqrt(ext[0] * ext[0] + ext[1] * ext[1] + ext[2] * ext[2]);
+
+	if (!(len > 0) || !isfinite(len))
+		return -1;
+	for (int k = 0; k < 3; k++)
+		az[k] = ext[k] / len;
+	if (fabs(az[0]) < 1.0 / 64 && fabs(az[1]) < 1.0 / 64) {
+		ax[0] = az[2];          /* (0, 1, 0) x n */
+		ax[1] = 0;
+		ax[2] = -az[0];
+	} else {
+		ax[0] = -az[1];         /* (0, 0, 1) x n */
+		ax[1] = az[0];
+		ax[2] = 0;
+	}
+	len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+	for (int k = 0; k < 3; k++)
+		ax[k] /= len;
+	ay[0] = az[1] * ax[2] - az[2] * ax[1];
+	ay[1] = az[2] * ax[0] - az[0] * ax[2];
+	ay[2] = az[0] * ax[1] - az[1] * ax[0];
+	return 0;
+}
+
+/* An object's frame: from the OCS of extrusion ext to millimetres. */
+struct frame {
+	int plain;              /* extrusion (0, 0, 1): OCS is WCS */
+	double ax[3], ay[3], az[3], scale;
+};
+
+static int
+frame_of(const double *ext, double scale, struct frame *f)
+{
+	f->scale = scale;
+	f->plain = ext[0] == 0 && ext[1] == 0 && ext[2] > 0;
+	return f->plain ? 0 : ocs_axes(ext, f->ax, f->ay, f->az);
+}
+
+static void
+to_world(const struct frame *f, const double *o, double *w)
+{
+	for (int k = 0; k < 3; k++)
+		w[k] = f->plain ? o[k] * f->scale : (o[0] * f->ax[k] + o[1] *
+		    f->ay[k] + o[2] * f->az[k]) * f->scale;
+}
+
+/* Append point o (in the OCS) to d->knots; -1 when out of memory. */
+static int
+knot(struct dxf *d, const struct frame *f, const double *o)
+{
+	double w[3];
+
+	to_world(f, o, w);
+	if (loft__pts_add(&d->knots, w) != 0) {
+		d->oom = 1;
+		return -1;
+	}
+	return 0;
+}
+
+/* The points strictly inside the arc about centre c (OCS) of radius r
+ * from angle a0 through sweep: n - 1 points for n chords. */
+static int
+arc_inside(struct dxf *d, const struct frame *f, const double *c, double r,
+    double a0, double sweep, long n)
+{
+	for (long k = 1; k < n; k++) {
+		double a = a0 + sweep * (double)k / (double)n;
+		double o[3] = { c[0] + r * cos(a), c[1] + r * sin(a), c[2] };
+
+		if (knot(d, f, o) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/*
+ * The vertices v[0..n) with bulges b (OCS, z from elev) as knots: each
+ * bulge b != 0 bends the edge to the next vertex into an arc of
+ * included angle 4 atan(b), counter-clockwise for b > 0, sampled by
+ * chords.  Returns 0, or -1 with msg filled.
+ */
+static int
+polyline_knots(struct dxf *d, const struct frame *f, const double *v,
+    const double *b, size_t n, int closed, int zfromv, double elev,
+    char *msg, size_t msize)
+{
+	d->knots.n = 0;
+	if (closed && n > 1 && v[0] == v[3 * (n - 1)] &&
+	    v[1] == v[3 * (n - 1) + 1] && v[2] == v[3 * (n - 1) + 2])
+		n--;            /* the first vertex repeated at the end */
+	for (size_t i = 0; i < n; i++) {
+		const double *p = v + 3 * i, *q = v + 3 * ((i + 1) % n);
+		double o[3] = { p[0], p[1], zfromv ? p[2] : elev };
+		double dx = q[0] - p[0], dy = q[1] - p[1], bu = b ? b[i] : 0;
+
+		if (knot(d, f, o) != 0)
+			return -1;
+		if (bu != 0 && (i + 1 < n || closed) && (dx != 0 || dy != 0)) {
+			double h = (1 - bu * bu) / (4 * bu);
+			double cc[3] = { (p[0] + q[0]) / 2 - h * dy,
+			    (p[1] + q[1]) / 2 + h * dx, o[2] };
+			double r = hypot(p[0] - cc[0], p[1] - cc[1]);
+			double sweep = 4 * atan(bu);
+			long m = loft__arc_chords(d->c, r * f->scale, sweep);
+
+			if (!isfinite(r) || !isfinite(h)) {
+				snprintf(msg, msize, "vertex %zu: bulge %g "
+				    "makes no arc", i + 1, bu);
+				return -1;
+			}
+			if (m < 0) {
+				snprintf(msg, msize, "vertex %zu: its arc needs "
+				    "more than %d chords for the tolerance",
+				    i + 1, LOFT_CADIN_ARC_MAX);
+				return -1;
+			}
+			if (arc_inside(d, f, cc, r, atan2(p[1] - cc[1],
+			    p[0] - cc[0]), sweep, m) != 0)
+				return -1;
+		}
+	}
+	return 0;
+}
+
+/* Format the vector t (dim numbers) as "x,y[,z]" into buf. */
+static void
+vector_text(char *buf, const double *t, int dim)
+{
+	size_t k = 0;
+
+	for (int q = 0; q < dim; q++) {
+		if (q > 0)
+			buf[k++] = ',';
+		k += (size_t)loft_format_num(buf + k, t[q], 0);
+	}
+	buf[k] = '\0';
+}
+
+/*
+ * Write d->knots as a knot record of the entity with layer (and, for a
+ * SPLINE, its end tangents) and keep its knots for the turn points.
+ */
+static void
+put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
+    int closed, const double *start, const double *end)
+{
+	struct loft_writer *w = d->c->w;
+	size_t mark = w->len, hdr, n = d->knots.n;
+	int dim = loft__pts_dim(d->knots.p, n);
+	char buf[3 * LOFT_NUMBUF + 4];
+
+	loft_put_type(w, "points");
+	loft_put_attr(w, "closed", closed ? "1" : "0");
+	loft__cadin_put_name(w, "layer", layer, nlayer);
+	if (start != NULL) {
+		vector_text(buf, start, dim);
+		loft_put_attr(w, "start", buf);
+	}
+	if (end != NULL) {
+		vector_text(buf, end, dim);
+		loft_put_attr(w, "end", buf);
+	}
+	hdr = w->len;
+	loft_end_line(w);
+	loft__pts_put(w, d->knots.p, n, dim);
+	loft_end_record(w);
+	if (loft__cadin_done(d->c, mark, line) != 0 || !d->turns)
+		return;
+	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
+	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
+	    3 * (d->verts.n + n), sizeof *d->verts.p) != 0) {
+		d->oom = 1;
+		return;
+	}
+	d->kr[d->nkr].hdr = hdr;
+	d->kr[d->nkr].v0 = d->verts.n;
+	d->kr[d->nkr].nv = n;
+	d->nkr++;
+	memcpy(d->verts.p + 3 * d->verts.n, d->knots.p, 3 * n *
+	    sizeof *d->knots.p);
+	d->verts.n += n;
+}
+
+/* 0, or -1 after the message "NAME: what" for entity e. */
+static int
+refuse(struct dxf *d, const struct ent *e, const char *what)
+{
+	char nm[64];
+
+	loft__cadin_say(d->c, e->line, "%s: %s", ent_name(e, nm, sizeof nm), what);
+	return -1;
+}
+
+static void
+do_line(struct dxf *d, struct ent *e)
+{
+	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+
+	if (e->p10.n != 1 || e->p11.n != 1) {
+		refuse(d, e, "a LINE needs one start (10/20/30) and one end "
+		    "(11/21/31)");
+		return;
+	}
+	d->knots.n = 0;
+	if (knot(d, &f, e->p10.p) != 0 || knot(d, &f, e->p11.p) != 0)
+		return;
+	put_knots(d, e->layer, e->nlayer, e->line, 0, NULL, NULL);
+}
+
+static void
+do_point(struct dxf *d, struct ent *e)
+{
+	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+	struct loft_writer *w = d->c->w;
+	size_t mark = w->len;
+	double p[3];
+
+	if (e->p10.n != 1) {
+		refuse(d, e, "a POINT needs one point (10/20/30)");
+		return;
+	}
+	to_world(&f, e->p10.p, p);
+	loft_put_type(w, "points");
+	loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+	loft_end_line(w);
+	loft_put_row(w, p, loft__pts_dim(p, 1));
+	loft_end_record(w);
+	if (loft__cadin_done(d->c, mark, e->line) != 0 || e->nlayer != 1 ||
+	    e->layer[0] != '2')
+		return;
+	if (loft__grow((void **)&d->tp, &d->tpcap, d->ntp + 1, sizeof *d->tp)
+	    != 0) {
+		d->oom = 1;
+		return;
+	}
+	memcpy(d->tp[d->ntp].x, p, sizeof p);
+	d->tp[d->ntp].a = mark;
+	d->tp[d->ntp].b = w->len;
+	d->tp[d->ntp].used = 0;
+	d->ntp++;
+}
+
+static void
+do_lwpolyline(struct dxf *d, struct ent *e)
+{
+	struct frame f;
+	char msg[160];
+
+	if (e->p10.n == 0) {
+		refuse(d, e, "an LWPOLYLINE needs vertices");
+		return;
+	}
+	if (e->has90 && e->f90 != (long)e->p10.n) {
+		snprintf(msg, sizeof msg, "group 90 says %ld vertices; it has "
+		    "%zu", e->f90, e->p10.n);
+		refuse(d, e, msg);
+		return;
+	}
+	if (frame_of(e->ext, d->scale, &f) != 0) {
+		refuse(d, e, "its extrusion direction (210/220/230) is zero");
+		return;
+	}
+	if (polyline_knots(d, &f, e->p10.p, e->bulge.v, e->p10.n, e->f70 & 1,
+	    0, e->elev, msg, sizeof msg) != 0) {
+		if (!d->oom)
+			refuse(d, e, msg);
+		return;
+	}
+	put_knots(d, e->layer, e->nlayer, e->line, e->f70 & 1, NULL, NULL);
+}
+
+/* ARC and CIRCLE: chords of the circle of centre 10/20/30, radius 40,
+ * from angle 50 counter-clockwise to 51 (degrees). */
+static void
+do_arc(struct dxf *d, struct ent *e, int circle)
+{
+	struct frame f;
+	double r, a0, a1, sweep;
+	long n;
+
+	if (e->p10.n != 1 || e->g40.n != 1 || (!circle && (!e->has50 ||
+	    !e->has51))) {
+		refuse(d, e, circle ? "a CIRCLE needs a centre (10/20/30) and "
+		    "a radius (40)" : "an ARC needs a centre (10/20/30), a "
+		    "radius (40) and its angles (50, 51)");
+		return;
+	}
+	r = e->g40.v[0];
+	if (!(r > 0)) {
+		refuse(d, e, "its radius is not above 0");
+		return;
+	}
+	if (frame_of(e->ext, d->scale, &f) != 0) {
+		refuse(d, e, "its extrusion direction (210/220/230) is zero");
+		return;
+	}
+	a0 = circle ? 0 : fmod(e->a50, 360);
+	a1 = circle ? 360 : fmod(e->a51, 360);
+	if (a1 <= a0)
+		a1 += 360;
+	sweep = (a1 - a0) * M_PI / 180;
+	a0 *= M_PI / 180;
+	if ((n = loft__arc_chords(d->c, r * d->scale, sweep)) < 0) {
+		refuse(d, e, "it needs more chords than the tolerance allows");
+		return;
+	}
+	if (circle && n < 3)
+		n = 3;
+	d->knots.n = 0;
+	{
+		const double *c = e->p10.p;
+		double o[3] = { c[0] + r * cos(a0), c[1] + r * sin(a0), c[2] };
+
+		if (knot(d, &f, o) != 0 || arc_inside(d, &f, c, r, a0, sweep,
+		    n) != 0)
+			return;
+		if (!circle) {
+			o[0] = c[0] + r * cos(a0 + sweep);
+			o[1] = c[1] + r * sin(a0 + sweep);
+			if (knot(d, &f, o) != 0)
+				return;
+		}
+	}
+	put_knots(d, e->layer, e->nlayer, e->line, circle, NULL, NULL);
+}
+
+/*
+ * The Bezier control points b[0..p] of span [t[i], t[i+1]) of the
+ * B-spline of degree p with knots t and control points ctl (dim each):
+ * b_j is the blossom at (t[i] p - j times, t[i+1] j times), which is
+ * what inserting t[i] and t[i+1] until each has multiplicity p leaves
+ * as the span's control points.  The blossom at (u_1 .. u_p) is de
+ * Boor's algorithm with u_r at level r.  work holds (p + 1) dim.
+ */
+static void
+span_bezier(const double *t, const double *ctl, int p, size_t i, int dim,
+    double *b, double *work)
+{
+	for (int j = 0; j <= p; j++) {
+		for (int k = 0; k <= p; k++)
+			memcpy(work + k * dim, ctl + (i - (size_t)p + (size_t)k) *
+			    (size_t)dim, (size_t)dim * sizeof *work);
+		for (int r = 1; r <= p; r++) {
+			double u = r <= p - j ? t[i] : t[i + 1];
+
+			for (int k = p; k >= r; k--) {
+				size_t m = i - (size_t)p + (size_t)k;
+				double a = (u - t[m]) / (t[m + (size_t)p + 1 -
+				    (size_t)r] - t[m]);
+
+				for (int q = 0; q < dim; q++)
+					work[k * dim + q] = (1 - a) *
+					    work[(k - 1) * dim + q] + a *
+					    work[k * dim + q];
+			}
+		}
+		memcpy(b + j * dim, work + p * dim, (size_t)dim * sizeof *b);
+	}
+}
+
+/* A SPLINE by control points: its Bezier pieces, exactly. */
+static void
+spline_ctl(struct dxf *d, struct ent *e)
+{
+	struct loft_writer *w = d->c->w;
+	size_t n = e->p10.n, mark = w->len, npieces = 0;
+	const double *t = e->g40.v;
+	int p = (int)e->f71, dim, cubic;
+	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
+	double row[12], *ctl;
+	char msg[160];
+
+	if (!e->has71 || p < 1 || p > MAX_DEGREE) {
+		snprintf(msg, sizeof msg, "degree (group 71) %ld: loft reads "
+		    "degrees 1 to %d", e->f71, MAX_DEGREE);
+		refuse(d, e, msg);
+		return;
+	}
+	if (e->has73 && e->f73 != (long)n) {
+		snprintf(msg, sizeof msg, "group 73 says %ld control points; "
+		    "it has %zu", e->f73, n);
+		refuse(d, e, msg);
+		return;
+	}
+	if (n < (size_t)p + 1 || e->g40.n != n + (size_t)p + 1) {
+		snprintf(msg, sizeof msg, "%zu control points of degree %d "
+		    "need %zu knots (group 40); it has %zu", n, p,
+		    n + (size_t)p + 1, e->g40.n);
+		refuse(d, e, n < (size_t)p + 1 ? "fewer control points than "
+		    "its degree needs" : msg);
+		return;
+	}
+	for (size_t k = 1; k < e->g40.n; k++)
+		if (t[k] < t[k - 1]) {
+			snprintf(msg, sizeof msg, "knot %zu (%g) is below the "
+			    "one before it", k + 1, t[k]);
+			refuse(d, e, msg);
+			return;
+		}
+	for (size_t k = 1; k < e->g41.n; k++)
+		if (fabs(e->g41.v[k] - e->g41.v[0]) > WEIGHT_SAME *
+		    fabs(e->g41.v[0])) {
+			refuse(d, e, "its weights differ: a rational spline, "
+			    "which loft's polynomial records cannot hold");
+			return;
+		}
+	if (e->g41.n > 0 && !(e->g41.v[0] > 0)) {
+		refuse(d, e, "its weights are not above 0");
+		return;
+	}
+	/* the control points in millimetres, in place */
+	ctl = e->p10.p;
+	for (size_t k = 0; k < 3 * n; k++)
+		ctl[k] *= d->scale;
+	dim = loft__pts_dim(ctl, n);
+	if (dim == 2)           /* close up to rows of dim numbers */
+		for (size_t k = 0; k < n; k++) {
+			ctl[2 * k] = ctl[3 * k];
+			ctl[2 * k + 1] = ctl[3 * k + 1];
+		}
+	cubic = p <= 3;
+	if (cubic) {
+		loft_put_type(w, "cubic");
+		loft_put_attr(w, "closed", e->f70 & 1 ? "1" : "0");
+		loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+		loft_end_line(w);
+	}
+	for (size_t i = (size_t)p; i < n; i++) {
+		if (!(t[i] < t[i + 1]))
+			continue;       /* an empty span */
+		span_bezier(t, ctl, p, i, dim, b, work);
+		npieces++;
+		if (cubic) {
+			/* degree 1 and 2 raised to 3 exactly: the ends stay,
+			 * P'_A = p (b1 - b0), P'_B = p (b_p - b_{p-1}) */
+			if (p == 3)
+				loft__bezier_hermite(b, dim, row);
+			else
+				for (int q = 0; q < dim; q++) {
+					row[q] = b[q];
+					row[dim + q] = b[p * dim + q];
+					row[2 * dim + q] = p * (b[dim + q] -
+					    b[q]);
+					row[3 * dim + q] = p * (b[p * dim + q] -
+					    b[(p - 1) * dim + q]);
+				}
+			loft_put_row(w, row, 4 * dim);
+		} else {
+			char num[24];
+
+			snprintf(num, sizeof num, "%zu", npieces);
+			loft_put_type(w, "bezier");
+			loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+			loft_put_attr(w, "piece", num);
+			loft_end_line(w);
+			for (int j = 0; j <= p; j++)
+				loft_put_row(w, b + j * dim, dim);
+			loft_end_record(w);
+		}
+	}
+	if (npieces == 0) {
+		w->len = mark;
+		w->col = 0;
+		refuse(d, e, "its knots span nothing: no piece of curve");
+		return;
+	}
+	if (cubic)
+		loft_end_record(w);
+	loft__cadin_done(d->c, mark, e->line);
+}
+
+static void
+do_spline(struct dxf *d, struct ent *e)
+{
+	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+
+	if (e->p10.n > 0) {
+		spline_ctl(d, e);
+		return;
+	}
+	if (e->p11.n < 2) {
+		refuse(d, e, "a SPLINE needs control points (10/20/30) or "
+		    "fit points (11/21/31)");
+		return;
+	}
+	d->knots.n = 0;
+	for (size_t k = 0; k < e->p11.n; k++)
+		if (knot(d, &f, e->p11.p + 3 * k) != 0)
+			return;
+	if (e->f70 & 1 && d->knots.n > 1 && memcmp(d->knots.p, d->knots.p +
+	    3 * (d->knots.n - 1), 3 * sizeof *d->knots.p) == 0)
+		d->knots.n--;
+	put_knots(d, e->layer, e->nlayer, e->line, e->f70 & 1,
+	    e->has12 && !(e->f70 & 1) ? e->t12 : NULL,
+	    e->has13 && !(e->f70 & 1) ? e->t13 : NULL);
+}
+
+/* A POLYLINE's vertices so far, as one knot record. */
+static void
+poly_end(struct dxf *d, int complete)
+{
+	struct poly *pl = &d->pl;
+	struct ent tmp;
+	struct frame f;
+	char msg[160];
+	int plane = !(pl->flags & 8);
+
+	if (!pl->open)
+		return;
+	pl->open = 0;
+	snprintf(tmp.name, sizeof tmp.name, "POLYLINE");
+	tmp.line = pl->line;
+	tmp.handle = pl->handle;
+	tmp.nhandle = strlen(pl->handle);
+	if (pl->bad || pl->refused)
+		return;         /* said so already */
+	if (!complete) {
+		refuse(d, &tmp, "no SEQEND ends its vertices: not read");
+		return;
+	}
+	if (pl->v.n == 0) {
+		refuse(d, &tmp, "a POLYLINE needs vertices");
+		return;
+	}
+	if (frame_of(plane ? pl->ext : (double[3]){ 0, 0, 1 }, d->scale,
+	    &f) != 0) {
+		refuse(d, &tmp, "its extrusion direction (210/220/230) is "
+		    "zero");
+		return;
+	}
+	if (polyline_knots(d, &f, pl->v.p, plane ? pl->bulge.v : NULL,
+	    pl->v.n, pl->flags & 1, !plane, pl->elev, msg, sizeof msg) != 0) {
+		if (!d->oom)
+			refuse(d, &tmp, msg);
+		return;
+	}
+	put_knots(d, pl->layer, pl->nlayer, pl->line, pl->flags & 1, NULL,
+	    NULL);
+}
+
+static void
+poly_start(struct dxf *d, struct ent *e)
+{
+	struct poly *pl = &d->pl;
+
+	pl->open = 1;
+	pl->bad = pl->refused = 0;
+	pl->line = e->line;
+	loft__cadin_quote(pl->handle, 17, e->handle ? e->handle : "",
+	    e->nhandle);
+	pl->layer = e->layer;
+	pl->nlayer = e->nlayer;
+	pl->flags = e->f70;
+	memcpy(pl->ext, e->ext, sizeof pl->ext);
+	pl->elev = e->p10.n > 0 ? e->p10.p[2] : e->elev;
+	pl->v.n = pl->bulge.n = 0;
+	if (e->f70 & (16 | 64)) {
+		pl->refused = 1;
+		refuse(d, e, "a polygon or polyface mesh is a surface loft "
+		    "does not read");
+	}
+}
+
+static void
+vertex(struct dxf *d, struct ent *e)
+{
+	struct poly *pl = &d->pl;
+
+	if (!pl->open) {
+		refuse(d, e, "a VERTEX outside a POLYLINE");
+		return;
+	}
+	if (pl->refused || pl->bad)
+		return;
+	if (e->p10.n != 1) {
+		pl->bad = 1;
+		refuse(d, e, "a VERTEX needs one point (10/20/30): its "
+		    "POLYLINE is not read");
+		return;
+	}
+	if (e->f70 & 16)
+		return;         /* a spline frame's control point: not drawn */
+	if (loft__pts_add(&pl->v, e->p10.p) != 0 ||
+	    nums_add(&pl->bulge, e->bulge.n > 0 ? e->bulge.v[0] : 0) != 0)
+		d->oom = 1;
+}
+
+/* The entity just ended: its record, or a message. */
+static void
+ent_end(struct dxf *d, struct ent *e)
+{
+	const char *n = e->name;
+
+	if (strcmp(n, "VERTEX") != 0 && strcmp(n, "SEQEND") != 0)
+		poly_end(d, 0);
+	if (strcmp(n, "ATTRIB") != 0 && strcmp(n, "SEQEND") != 0)
+		d->in_insert = 0;
+	if (e->bad) {
+		char msg[240];
+
+		snprintf(msg, sizeof msg, "%s: not read", e->msg);
+		if (strcmp(n, "VERTEX") == 0 && d->pl.open && !d->pl.bad) {
+			d->pl.bad = 1;
+			snprintf(msg, sizeof msg, "%s: its POLYLINE is not "
+			    "read", e->msg);
+		}
+		refuse(d, e, msg);
+		return;
+	}
+	if (strcmp(n, "LINE") == 0)
+		do_line(d, e);
+	else if (strcmp(n, "POINT") == 0)
+		do_point(d, e);
+	else if (strcmp(n, "LWPOLYLINE") == 0)
+		do_lwpolyline(d, e);
+	else if (strcmp(n, "SPLINE") == 0)
+		do_spline(d, e);
+	else if (strcmp(n, "ARC") == 0)
+		do_arc(d, e, 0);
+	else if (strcmp(n, "CIRCLE") == 0)
+		do_arc(d, e, 1);
+	else if (strcmp(n, "POLYLINE") == 0)
+		poly_start(d, e);
+	else if (strcmp(n, "VERTEX") == 0)
+		vertex(d, e);
+	else if (strcmp(n, "SEQEND") == 0) {
+		poly_end(d, 1);
+		d->in_insert = 0;
+	} else if (strcmp(n, "ATTRIB") == 0 && d->in_insert)
+		;               /* said so at its INSERT */
+	else {
+		refuse(d, e, "not read: loft reads LINE, LWPOLYLINE, POLYLINE, "
+		    "SPLINE, ARC, CIRCLE and POINT entities");
+		d->in_insert = strcmp(n, "INSERT") == 0;
+	}
+}
+
+/* $INSUNITS codes to millimetres (the DXF reference's table). */
+static const double unit_mm[] = {
+	1,              /* 0 unitless: kept */
+	25.4, 304.8, 1609344, 1, 10, 1000, 1e6,         /* in ft mi mm cm m km */
+	25.4e-6, 0.0254, 914.4, 1e-7, 1e-6, 1e-3,       /* uin mil yd A nm um */
+	100, 1e4, 1e5, 1e12, 1.495978707e14,            /* dm dam hm Gm AU */
+	9.4607304725808e18, 3.0856775814913673e19,      /* ly pc */
+	1200000.0 / 3937                                /* US survey foot */
+};
+
+/* A HEADER variable's value: $INSUNITS sets the scale. */
+static void
+header_var(struct dxf *d, const char *var, size_t nvar, const struct pair *pr)
+{
+	double x;
+
+	if (pr->code != 70 || nvar != 9 || memcmp(var, "$INSUNITS", 9) != 0)
+		return;
+	if (loft_parse_num(pr->v, pr->n, &x, NULL) != 0 || x != floor(x) ||
+	    x < 0 || x >= (double)(sizeof unit_mm / sizeof unit_mm[0])) {
+		char q[21];
+
+		loft__cadin_say(d->c, pr->line, "$INSUNITS '%s' is no unit "
+		    "loft knows: the drawing's numbers are kept as they are",
+		    loft__cadin_quote(q, sizeof q, pr->v, pr->n));
+		return;
+	}
+	d->scale = unit_mm[(int)x];
+}
+
+/* ---- turn points ---------------------------------------------------- */
+
+struct cell {
+	long long x, y;
+	size_t v;               /* index in verts */
+};
+
+static int
+cell_cmp(const void *a, const void *b)
+{
+	const struct cell *p = a, *q = b;
+
+	if (p->x != q->x)
+		return p->x < q->x ? -1 : 1;
+	if (p->y != q->y)
+		return p->y < q->y ? -1 : 1;
+	return p->v < q->v ? -1 : p->v > q->v;
+}
+
+static long long
+cell_of(double x, double tol)
+{
+	double c = floor(x / tol);
+
+	return c > 1e18 ? (long long)1e18 : c < -1e18 ? -(long long)1e18 :
+	    (long long)c;
+}
+
+struct corner {
+	size_t rec, knot;
+};
+
+static int
+corner_cmp(const void *a, const void *b)
+{
+	const struct corner *p = a, *q = b;
+
+	if (p->rec != q->rec)
+		return p->rec < q->rec ? -1 : 1;
+	return p->knot < q->knot ? -1 : p->knot > q->knot;
+}
+
+/* The knot record holding vertex v. */
+static size_t
+record_of(const struct dxf *d, size_t v)
+{
+	size_t lo = 0, hi = d->nkr;
+
+	while (hi - lo > 1) {
+		size_t m = (lo + hi) / 2;
+
+		if (d->kr[m].v0 <= v)
+			lo = m;
+		else
+			hi = m;
+	}
+	return lo;
+}
+
+/* Match the turn points to vertices into cs; returns their count, or
+ * (size_t)-1 when out of memory. */
+static size_t
+match_turns(struct dxf *d, struct corner *cs)
+{
+	size_t nv = d->verts.n, nc = 0;
+	const double *v = d->verts.p;
+	double lo[3], hi[3], ext = 0, tol;
+	struct cell *g;
+
+	for (int k = 0; k < 3; k++) {
+		lo[k] = hi[k] = v[k];
+		for (size_t i = 1; i < nv; i++) {
+			lo[k] = fmin(lo[k], v[3 * i + k]);
+			hi[k] = fmax(hi[k], v[3 * i + k]);
+		}
+		ext = hypot(ext, hi[k] - lo[k]);
+	}
+	tol = TURN_TOL * ext;
+	if (!(tol > 0) || !isfinite(tol))
+		tol = DBL_MIN;  /* one point, or none but exact */
+	if ((g = malloc(nv * sizeof *g)) == NULL)
+		return (size_t)-1;
+	for (size_t i = 0; i < nv; i++) {
+		g[i].x = cell_of(v[3 * i], tol);
+		g[i].y = cell_of(v[3 * i + 1], tol);
+		g[i].v = i;
+	}
+	qsort(g, nv, sizeof *g, cell_cmp);
+	for (size_t t = 0; t < d->ntp; t++) {
+		const double *x = d->tp[t].x;
+		long long cx = cell_of(x[0], tol), cy = cell_of(x[1], tol);
+		size_t best = (size_t)-1;
+		double bd = tol;
+
+		for (int dx = -1; dx <= 1; dx++)
+			for (int dy = -1; dy <= 1; dy++) {
+				struct cell key = { cx + dx, cy + dy, 0 };
+				size_t a = 0, b = nv;
+
+				while (a < b) {         /* first >= key */
+					size_t m = (a + b) / 2;
+
+					if (cell_cmp(&g[m], &key) < 0)
+						a = m + 1;
+					else
+						b = m;
+				}
+				for (; a < nv && g[a].x == key.x && g[a].y ==
+				    key.y; a++) {
+					double dd = vdist(v + 3 * g[a].v, x, 3);
+
+					if (dd <= bd && (best == (size_t)-1 ||
+					    dd < bd || g[a].v < best)) {
+						bd = dd;
+						best = g[a].v;
+					}
+				}
+			}
+		if (best != (size_t)-1) {
+			size_t r = record_of(d, best);
+
+			cs[nc].rec = r;
+			cs[nc].knot = best - d->kr[r].v0 + 1;
+			nc++;
+			d->tp[t].used = 1;
+		}
+	}
+	free(g);
+	return nc;
+}
+
+/* Append s[0..n) to the buffer *b of length *len; -1 when out of memory. */
+static int
+append(char **b, size_t *len, size_t *cap, const char *s, size_t n)
+{
+	if (loft__grow((void **)b, cap, *len + n + 1, 1) != 0)
+		return -1;
+	memcpy(*b + *len, s, n);
+	*len += n;
+	return 0;
+}
+
+/*
+ * Rewrite the text of this document's records in w (from base on):
+ * corners= added to the knot records the matched turn points lie on,
+ * the matched points' own records left out.
+ */
+static int
+apply_turns(struct dxf *d, size_t base)
+{
+	struct loft_writer *w = d->c->w;
+	struct corner *cs;
+	size_t nc, at = base, ci = 0, ti = 0, len = 0, cap = 0;
+	char *nb = NULL, num[24];
+	int rc = 0;
+
+	if (d->ntp == 0 || d->nkr == 0)
+		return 0;
+	if ((cs = malloc(d->ntp * sizeof *cs)) == NULL)
+		return -1;
+	if ((nc = match_turns(d, cs)) == (size_t)-1) {
+		free(cs);
+		return -1;
+	}
+	qsort(cs, nc, sizeof *cs, corner_cmp);
+	if (append(&nb, &len, &cap, w->buf, base) != 0)
+		rc = -1;
+	for (size_t r = 0; r < d->nkr && rc == 0; r++) {
+		size_t h = d->kr[r].hdr;
+		int first = 1;
+
+		if (ci >= nc || cs[ci].rec != r)
+			continue;
+		/* the text before this header's end, less matched points */
+		for (; ti < d->ntp && d->tp[ti].a < h; ti++)
+			if (d->tp[ti].used) {
+				rc |= append(&nb, &len, &cap, w->buf + at,
+				    d->tp[ti].a - at);
+				at = d->tp[ti].b;
+			}
+		rc |= append(&nb, &len, &cap, w->buf + at, h - at);
+		at = h;
+		rc |= append(&nb, &len, &cap, " corners=", 9);
+		for (; ci < nc && cs[ci].rec == r; ci++) {
+			if (ci > 0 && cs[ci - 1].rec == r && cs[ci - 1].knot ==
+			    cs[ci].knot)
+				continue;
+			snprintf(num, sizeof num, "%s%zu", first ? "" : ",",
+			    cs[ci].knot);
+			rc |= append(&nb, &len, &cap, num, strlen(num));
+			first = 0;
+		}
+	}
+	for (; ti < d->ntp && rc == 0; ti++)
+		if (d->tp[ti].used) {
+			rc |= append(&nb, &len, &cap, w->buf + at, d->tp[ti].a -
+			    at);
+			at = d->tp[ti].b;
+		}
+	if (rc == 0)
+		rc = append(&nb, &len, &cap, w->buf + at, w->len - at);
+	free(cs);
+	if (rc != 0) {
+		free(nb);
+		return -1;
+	}
+	free(w->buf);
+	w->buf = nb;
+	w->len = len;
+	w->cap = cap;
+	return 0;
+}
+
+/* ---- the document --------------------------------------------------- */
+
+/* Whether the line word stands anywhere in buf[0..len), blanks around. */
+static int
+find_word(const char *buf, size_t len, const char *word)
+{
+	size_t n = strlen(word);
+
+	for (const char *p = buf, *e = buf + len; p < e;) {
+		const char *q = memchr(p, word[0], (size_t)(e - p));
+
+		if (q == NULL)
+			return 0;
+		if ((size_t)(e - q) >= n && memcmp(q, word, n) == 0 &&
+		    (q == buf || q[-1] == '\n' || q[-1] == ' ' || q[-1] == '\t') &&
+		    (q + n == e || q[n] == '\n' || q[n] == '\r' || q[n] == ' '))
+			return 1;
+		p = q + 1;
+	}
+	return 0;
+}
+
+enum { S_NONE, S_HEADER, S_ENTITIES, S_OTHER };
+
+static void
+dxf_free(struct dxf *d)
+{
+	struct ent *e = &d->e;
+
+	free(e->p10.p);
+	free(e->p11.p);
+	free(e->bulge.v);
+	free(e->g40.v);
+	free(e->g41.v);
+	free(d->pl.v.p);
+	free(d->pl.bulge.v);
+	free(d->verts.p);
+	free(d->knots.p);
+	free(d->work.p);
+	free(d->kr);
+	free(d->tp);
+	free(d->seg.v);
+}
+
+/* Skip to the next line that is a 0 group code; 1 if there is one. */
+static int
+resync(struct dxf *d)
+{
+	const char *s;
+	size_t n;
+
+	for (;;) {
+		const char *at = d->p;
+		long line = d->line;
+
+		if (!next_line(d, &s, &n))
+			return 0;
+		if (n == 1 && s[0] == '0') {
+			d->p = at;
+			d->line = line;
+			return 1;
+		}
+	}
+}
+
+int
+loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c)
+{
+	static const char bin[] = "AutoCAD Binary DXF";
+	struct dxf d;
+	struct pair pr;
+	int sec = S_NONE, want_name = 0, in_ent = 0, eof = 0, r;
+	const char *var = NULL;
+	size_t nvar = 0, base = c->w->len;
+	long nbad = c->nbad;
+
+	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0) {
+		loft__cadin_say(c, 1, "a binary DXF: loft reads ASCII DXF (save "
+		    "the drawing as ASCII DXF)");
+		return LOFT_EINPUT;
+	}
+	memset(&d, 0, sizeof d);
+	d.p = buf;
+	d.end = buf + len;
+	d.c = c;
+	d.scale = 1;
+	/* the records are shorter than the groups they come from: room for
+	 * them at once saves copying the output as it grows (if there is
+	 * no such room, it grows as usual) */
+	loft__grow((void **)&c->w->buf, &c->w->cap, c->w->len + len + 1, 1);
+	/* no word POINT, no turn points: the knots need not be kept */
+	d.turns = find_word(buf, len, "POINT");
+	while (!eof && !d.oom && (r = next_pair(&d, &pr)) != 0) {
+		if (r < 0) {
+			char q[31];
+
+			if (r == -2)
+				break;  /* truncated: said below */
+			loft__cadin_say(c, pr.line, "'%s' is not a group code "
+			    "(a whole number)%s", loft__cadin_quote(q, sizeof q,
+			    pr.v, pr.n), in_ent ? "; the entity it is in is not "
+			    "read" : "");
+			if (in_ent)
+				d.e.bad = 2;    /* said */
+			if (!resync(&d))
+				break;
+			continue;
+		}
+		if (want_name) {
+			want_name = 0;
+			if (pr.code == 2) {
+				sec = loft__word_is(pr.v, pr.n, "HEADER") ?
+				    S_HEADER : loft__word_is(pr.v, pr.n,
+				    "ENTITIES") ? S_ENTITIES : S_OTHER;
+				continue;
+			}
+			sec = S_OTHER;
+		}
+		if (pr.code != 0) {
+			if (sec == S_ENTITIES && in_ent)
+				ent_group(&d, &d.e, &pr);
+			else if (sec == S_HEADER && pr.code == 9) {
+				var = pr.v;
+				nvar = pr.n;
+			} else if (sec == S_HEADER && var != NULL)
+				header_var(&d, var, nvar, &pr);
+			continue;
+		}
+		if (in_ent) {
+			in_ent = 0;
+			if (d.e.bad == 2 && strcmp(d.e.name, "VERTEX") == 0)
+				d.pl.bad = 1;
+			else if (d.e.bad == 2)
+				poly_end(&d, 0);
+			else
+				ent_end(&d, &d.e);
+		}
+		if (loft__word_is(pr.v, pr.n, "SECTION"))
+			want_name = 1;
+		else if (loft__word_is(pr.v, pr.n, "ENDSEC")) {
+			poly_end(&d, 0);
+			sec = S_NONE;
+		} else if (loft__word_is(pr.v, pr.n, "EOF"))
+			eof = 1;
+		else if (sec == S_ENTITIES) {
+			ent_start(&d.e, &pr);
+			in_ent = 1;
+		}
+	}
+	if (!eof && !d.oom) {
+		if (in_ent) {
+			char nm[64];
+
+			loft__cadin_say(c, d.e.line, "%s: the file ends inside it "
+			    "(truncated?): not read", ent_name(&d.e, nm,
+			    sizeof nm));
+			d.pl.refused = 1;
+		}
+		poly_end(&d, 0);
+		loft__cadin_say(c, d.line, "the file ends without an EOF group: "
+		    "truncated?");
+	}
+	if (!d.oom && apply_turns(&d, base) != 0)
+		d.oom = 1;
+	dxf_free(&d);
+	if (d.oom) {
+		loft__cadin_say(c, d.line, "out of memory");
+		return LOFT_ENOMEM;
+	}
+	return c->nbad > nbad ? LOFT_EINPUT : 0;
+}

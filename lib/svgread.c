@@ -1,0 +1,1193 @@
+/*
+ * svgread.c: SVG into loft records, in millimetres with the y axis up.
+ * path, polyline, polygon, line, rect, circle and ellipse elements are
+ * read, under any nesting of g (and a) elements with their transforms.
+ * Each subpath of a path is a record: a `cubic` record where it has a
+ * curve (C, S, Q, T exactly, A within c->tol), a knot record where it is
+ * straight segments only, as polylines and polygons are.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Elements nested deeper are not read: a real drawing nests a few
+ * levels, and a bound keeps the stack fixed however hostile the file. */
+#define SVG_DEPTH 256
+
+#define MAX_ATTRS 64
+
+struct attr {
+	const char *k, *v;
+	size_t kn, vn;
+};
+
+struct elem {
+	const char *name;
+	size_t nn;
+	long line;
+	const char *at;         /* its '<', for lines inside it */
+	struct attr a[MAX_ATTRS];
+	int na;
+};
+
+struct level {
+	double m[6];            /* user space to millimetres */
+	const char *layer;
+	size_t nlayer;
+	int inklayer;           /* layer named by an Inkscape layer */
+};
+
+struct svg {
+	struct loft_cadin *c;
+	const char *buf, *p, *end;
+	long line;              /* of p */
+	struct level st[SVG_DEPTH];
+	int depth;              /* open elements read */
+	long skip;              /* open elements below one not read */
+	int root;               /* the root svg was seen */
+	struct nums { double *v; size_t n, cap; } seg;  /* a subpath */
+	int oom;
+};
+
+/* The first n2 bytes t in s[0..n), or NULL (memmem is not C99). */
+static const char *
+find(const char *s, size_t n, const char *t, size_t n2)
+{
+	for (const char *p = s; n2 <= n && p <= s + (n - n2); p++) {
+		p = memchr(p, t[0], (size_t)(s + (n - n2) - p) + 1);
+		if (p == NULL)
+			return NULL;
+		if (memcmp(p, t, n2) == 0)
+			return p;
+	}
+	return NULL;
+}
+
+/* ---- the affine maps ------------------------------------------------- */
+
+/* r = a b: first b, then a. */
+static void
+mat_mul(const double *a, const double *b, double *r)
+{
+	double t[6];
+
+	t[0] = a[0] * b[0] + a[2] * b[1];
+	t[1] = a[1] * b[0] + a[3] * b[1];
+	t[2] = a[0] * b[2] + a[2] * b[3];
+	t[3] = a[1] * b[2] + a[3] * b[3];
+	t[4] = a[0] * b[4] + a[2] * b[5] + a[4];
+	t[5] = a[1] * b[4] + a[3] * b[5] + a[5];
+	memcpy(r, t, sizeof t);
+}
+
+static void
+mat_apply(const double *m, const double *p, double *q)
+{
+	double x = p[0], y = p[1];
+
+	q[0] = m[0] * x + m[2] * y + m[4];
+	q[1] = m[1] * x + m[3] * y + m[5];
+}
+
+/* The largest factor by which m stretches a length. */
+static double
+mat_stretch(const double *m)
+{
+	double s = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3];
+	double det = m[0] * m[3] - m[1] * m[2];
+
+	return sqrt((s + sqrt(fmax(0, s * s - 4 * det * det))) / 2);
+}
+
+/* ---- numbers --------------------------------------------------------- */
+
+static int
+is_wsp(int ch)
+{
+	return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' ||
+	    ch == '\f';
+}
+
+static int
+is_digit(int ch)
+{
+	return ch >= '0' && ch <= '9';
+}
+
+/* Skip white space and at most one comma. */
+static const char *
+skip_sep(const char *s, const char *e)
+{
+	while (s < e && is_wsp((unsigned char)*s))
+		s++;
+	if (s < e && *s == ',')
+		for (s++; s < e && is_wsp((unsigned char)*s); s++)
+			;
+	return s;
+}
+
+/*
+ * An SVG number at *s: sign, digits, a point and digits, an exponent;
+ * "1.5.5" is 1.5 and .5, "1-2" is 1 and -2.  Returns 0 and moves *s past
+ * it, or -1 (not a number there, or not finite).
+ */
+static int
+svg_num(const char **s, const char *e, double *x)
+{
+	const char *a = skip_sep(*s, e), *p = a;
+	int digits = 0;
+
+	if (p < e && (*p == '+' || *p == '-'))
+		p++;
+	while (p < e && is_digit((unsigned char)*p)) {
+		p++;
+		digits++;
+	}
+	if (p < e && *p == '.') {
+		p++;
+		while (p < e && is_digit((unsigned char)*p)) {
+			p++;
+			digits++;
+		}
+	}
+	if (digits == 0)
+		return -1;
+	if (p < e && (*p == 'e' || *p == 'E')) {
+		const char *q = p + 1;
+
+		if (q < e && (*q == '+' || *q == '-'))
+			q++;
+		if (q < e && is_digit((unsigned char)*q)) {
+			while (q < e && is_digit((unsigned char)*q))
+				q++;
+			p = q;
+		}
+	}
+	if (loft_parse_num(a, (size_t)(p - a), x, NULL) != 0)
+		return -1;
+	*s = p;
+	return 0;
+}
+
+/* An arc's flag: a single 0 or 1. */
+static int
+svg_flag(const char **s, const char *e, int *f)
+{
+	const char *a = skip_sep(*s, e);
+
+	if (a >= e || (*a != '0' && *a != '1'))
+		return -1;
+	*f = *a == '1';
+	*s = a + 1;
+	return 0;
+}
+
+/* ---- elements and their attributes ----------------------------------- */
+
+static const struct attr *
+attr_of(const struct elem *el, const char *key)
+{
+	size_t n = strlen(key);
+
+	for (int i = 0; i < el->na; i++)
+		if (el->a[i].kn == n && memcmp(el->a[i].k, key, n) == 0)
+			return &el->a[i];
+	return NULL;
+}
+
+static int
+name_is(const struct elem *el, const char *name)
+{
+	return el->nn == strlen(name) && memcmp(el->name, name, el->nn) == 0;
+}
+
+/* The line of position at inside element el. */
+static long
+line_at(const struct elem *el, const char *at)
+{
+	long line = el->line;
+
+	for (const char *p = el->at; p < at; p++)
+		line += *p == '\n';
+	return line;
+}
+
+static void
+say_el(struct svg *s, const struct elem *el, const char *at, const char *what)
+{
+	const struct attr *id = attr_of(el, "id");
+	char nm[41], q[41];
+
+	loft__cadin_quote(nm, sizeof nm, el->name, el->nn);
+	if (id != NULL)
+		loft__cadin_say(s->c, line_at(el, at), "%s id=%s: %s", nm,
+		    loft__cadin_quote(q, sizeof q, id->v, id->vn), what);
+	else
+		loft__cadin_say(s->c, line_at(el, at), "%s: %s", nm, what);
+}
+
+/* A number attribute (with no unit): 0, 1 when absent, -1 when bad. */
+static int
+num_attr(struct svg *s, const struct elem *el, const char *key, double *x)
+{
+	const struct attr *a = attr_of(el, key);
+	const char *p;
+	char msg[80];
+
+	*x = 0;
+	if (a == NULL)
+		return 1;
+	p = a->v;
+	if (svg_num(&p, a->v + a->vn, x) != 0 || skip_sep(p, a->v + a->vn) !=
+	    a->v + a->vn) {
+		snprintf(msg, sizeof msg, "%s is not a number", key);
+		say_el(s, el, a->v, msg);
+		return -1;
+	}
+	return 0;
+}
+
+/* A length of the root svg in millimetres, or 0 when absent or in a
+ * unit relative to something unknown (%, em, ex). */
+static double
+length_mm(const struct attr *a)
+{
+	static const struct { const char *u; double mm; } units[] = {
+		{ "", 25.4 / 96 }, { "px", 25.4 / 96 }, { "mm", 1 },
+		{ "cm", 10 }, { "in", 25.4 }, { "pt", 25.4 / 72 },
+		{ "pc", 25.4 / 6 }, { "q", 0.25 },
+	};
+	const char *p;
+	double x;
+	size_t un;
+
+	if (a == NULL)
+		return 0;
+	p = a->v;
+	if (svg_num(&p, a->v + a->vn, &x) != 0 || !(x > 0))
+		return 0;
+	un = (size_t)(a->v + a->vn - p);
+	while (un > 0 && is_wsp((unsigned char)p[un - 1]))
+		un--;
+	for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
+		if (loft__word_is(p, un, units[i].u))
+			return x * units[i].mm;
+	return 0;
+}
+
+/*
+ * Parse a transform list into m (which starts as the identity).
+ * Returns 0, or -1 after complaining.
+ */
+static int
+transform(struct svg *s, const struct elem *el, double *m)
+{
+	static const char *const fn[] = { "matrix", "translate", "scale",
+	    "rotate", "skewX", "skewY" };
+	const struct attr *a = attr_of(el, "transform");
+	const char *p, *e;
+
+	m[0] = m[3] = 1;
+	m[1] = m[2] = m[4] = m[5] = 0;
+	if (a == NULL)
+		return 0;
+	p = a->v;
+	e = a->v + a->vn;
+	for (;;) {
+		double v[6], t[6] = { 1, 0, 0, 1, 0, 0 }, r;
+		int f, n = 0;
+		size_t k;
+
+		p = skip_sep(p, e);
+		if (p == e)
+			return 0;
+		for (f = 0; f < 6; f++) {
+			k = strlen(fn[f]);
+			if ((size_t)(e - p) > k && memcmp(p, fn[f], k) == 0)
+				break;
+		}
+		if (f == 6)
+			goto bad;
+		for (p += k; p < e && is_wsp((unsigned char)*p); p++)
+			;
+		if (p == e || *p++ != '(')
+			goto bad;
+		while (n < 6 && svg_num(&p, e, &v[n]) == 0)
+			n++;
+		for (; p < e && is_wsp((unsigned char)*p); p++)
+			;
+		if (p == e || *p++ != ')')
+			goto bad;
+		switch (f) {
+		case 0:
+			if (n != 6)
+				goto bad;
+			memcpy(t, v, sizeof t);
+			break;
+		case 1:
+			if (n != 1 && n != 2)
+				goto bad;
+			t[4] = v[0];
+			t[5] = n == 2 ? v[1] : 0;
+			break;
+		case 2:
+			if (n != 1 && n != 2)
+				goto bad;
+			t[0] = v[0];
+			t[3] = n == 2 ? v[1] : v[0];
+			break;
+		case 3:
+			if (n != 1 && n != 3)
+				goto bad;
+			r = v[0] * M_PI / 180;
+			t[0] = t[3] = cos(r);
+			t[1] = sin(r);
+			t[2] = -t[1];
+			if (n == 3) {   /* about (cx, cy) */
+				t[4] = v[1] - t[0] * v[1] - t[2] * v[2];
+				t[5] = v[2] - t[1] * v[1] - t[3] * v[2];
+			}
+			break;
+		case 4:
+		case 5:
+			if (n != 1)
+				goto bad;
+			t[f == 4 ? 2 : 1] = tan(v[0] * M_PI / 180);
+			break;
+		}
+		mat_mul(m, t, m);
+	}
+bad:
+	say_el(s, el, p, "bad transform: not read");
+	return -1;
+}
+
+/* ---- records ---------------------------------------------------------- */
+
+/* The header of a record of element el: type, closed=, layer=, name=. */
+static void
+put_header(struct svg *s, const struct elem *el, const char *type, int closed,
+    const char *corners)
+{
+	struct loft_writer *w = s->c->w;
+	const struct level *lv = &s->st[s->depth - 1];
+	const struct attr *id = attr_of(el, "id");
+
+	loft_put_type(w, type);
+	loft_put_attr(w, "closed", closed ? "1" : "0");
+	loft__cadin_put_name(w, "layer", lv->layer, lv->nlayer);
+	if (id != NULL)
+		loft__cadin_put_name(w, "name", id->v, id->vn);
+	if (corners != NULL)
+		loft_put_attr(w, "corners", corners);
+	loft_end_line(w);
+}
+
+static int
+seg_add(struct svg *s, const double *v, int n)
+{
+	struct nums *g = &s->seg;
+
+	if (loft__grow((void **)&g->v, &g->cap, g->n + (size_t)n,
+	    sizeof *g->v) != 0) {
+		s->oom = 1;
+		return -1;
+	}
+	memcpy(g->v + g->n, v, (size_t)n * sizeof *v);
+	g->n += (size_t)n;
+	return 0;
+}
+
+/* A segment as Manning's row P_A P_B P'_A P'_B, user space. */
+static int
+seg_row(struct svg *s, const double *a, const double *b, const double *ta,
+    const double *tb)
+{
+	double v[8] = { a[0], a[1], b[0], b[1], ta[0], ta[1], tb[0], tb[1] };
+
+	return seg_add(s, v, 8);
+}
+
+/* A cubic Bezier's control points q[0..8) as a segment. */
+static int
+seg_bezier(struct svg *s, const double *q)
+{
+	double row[8];
+
+	loft__bezier_hermite(q, 2, row);
+	return seg_add(s, row, 8);
+}
+
+/*
+ * The subpath in s->seg (rows of 8 numbers in user space) as a record: a
+ * knot record when every segment is straight (straight != 0), else a
+ * cubic record.  Points go through m, tangents through its linear part.
+ */
+static void
+put_subpath(struct svg *s, const struct elem *el, const double *m, int closed,
+    int straight)
+{
+	struct loft_writer *w = s->c->w;
+	size_t n = s->seg.n / 8, mark = w->len;
+	const double *g = s->seg.v;
+	double row[8];
+
+	if (n == 0)
+		return;
+	put_header(s, el, straight ? "points" : "cubic", closed, NULL);
+	for (size_t i = 0; i < n; i++) {
+		const double *r = g + 8 * i;
+
+		mat_apply(m, r, row);
+		mat_apply(m, r + 2, row + 2);
+		for (int k = 4; k < 8; k += 2) {
+			row[k] = m[0] * r[k] + m[2] * r[k + 1];
+			row[k + 1] = m[1] * r[k] + m[3] * r[k + 1];
+		}
+		if (straight) {
+			loft_put_row(w, row, 2);
+			if (i + 1 == n && !closed)
+				loft_put_row(w, row + 2, 2);
+		} else {
+			loft_put_row(w, row, 8);
+		}
+	}
+	loft_end_record(w);
+	loft__cadin_done(s->c, mark, el->line);
+}
+
+/* A straight segment from a to b: both tangents b - a. */
+static int
+line_to(struct svg *s, const double *a, const double *b)
+{
+	double t[2] = { b[0] - a[0], b[1] - a[1] };
+
+	return seg_row(s, a, b, t, t);
+}
+
+/*
+ * The elliptic arc of centre c, radii rx, ry, x axis turned by phi, from
+ * angle t0 through dt (radians, on the unit circle before the ellipse's
+ * stretch), as n cubic pieces: on the unit circle each piece from t to
+ * t + h has its inner control points (4/3) tan(h/4) along the end
+ * tangents (the error of loft__arc_cubics).
+ */
+static int
+arc_cubics(struct svg *s, const double *c, double rx, double ry, double phi,
+    double t0, double dt, long n)
+{
+	double h = dt / (double)n, k = 4.0 / 3 * tan(h / 4);
+	double cp = cos(phi), sp = sin(phi);
+
+	for (long i = 0; i < n; i++) {
+		double a = t0 + h * (double)i, e = i + 1 == n ? t0 + dt : a + h;
+		double u[8] = { cos(a), sin(a), cos(a) - k * sin(a),
+		    sin(a) + k * cos(a), cos(e) + k * sin(e), sin(e) - k * cos(e),
+		    cos(e), sin(e) }, v[8];
+
+		for (int j = 0; j < 4; j++) {
+			double x = rx * u[2 * j], y = ry * u[2 * j + 1];
+
+			v[2 * j] = c[0] + cp * x - sp * y;
+			v[2 * j + 1] = c[1] + sp * x + cp * y;
+		}
+		if (seg_bezier(s, v) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* The number of cubic pieces for an arc of radii rx, ry under m. */
+static long
+arc_pieces(struct svg *s, const double *m, double rx, double ry, double dt)
+{
+	return loft__arc_cubics(s->c, fmax(rx, ry) * mat_stretch(m), dt);
+}
+
+/*
+ * SVG's arc from a to b (the implementation notes' endpoint to centre
+ * conversion, radii scaled up where too small for the ends).  Returns 0,
+ * -1 when out of memory, -2 when it needs too many pieces.
+ */
+static int
+arc_to(struct svg *s, const double *m, const double *a, double rx, double ry,
+    double rot, int large, int sweep, const double *b)
+{
+	double phi = rot * M_PI / 180, cp = cos(phi), sp = sin(phi);
+	double dx = (a[0] - b[0]) / 2, dy = (a[1] - b[1]) / 2;
+	double x1 = cp * dx + sp * dy, y1 = -sp * dx + cp * dy;
+	double lam, num, den, co, cx, cy, c[2], t0, t1, dt;
+	long n;
+
+	rx = fabs(rx);
+	ry = fabs(ry);
+	if (a[0] == b[0] && a[1] == b[1])
+		return 0;
+	if (rx == 0 || ry == 0)
+		return line_to(s, a, b);
+	lam = (x1 * x1) / (rx * rx) + (y1 * y1) / (ry * ry);
+	if (lam > 1) {
+		rx *= sqrt(lam);
+		ry *= sqrt(lam);
+	}
+	num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
+	den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
+	co = den > 0 && num > 0 ? sqrt(num / den) : 0;
+	if (large == sweep)
+		co = -co;
+	cx = co * rx * y1 / ry;
+	cy = -co * ry * x1 / rx;
+	c[0] = cp * cx - sp * cy + (a[0] + b[0]) / 2;
+	c[1] = sp * cx + cp * cy + (a[1] + b[1]) / 2;
+	t0 = atan2((y1 - cy) / ry, (x1 - cx) / rx);
+	t1 = atan2((-y1 - cy) / ry, (-x1 - cx) / rx);
+	dt = t1 - t0;
+	if (sweep && dt < 0)
+		dt += 2 * M_PI;
+	else if (!sweep && dt > 0)
+		dt -= 2 * M_PI;
+	if (!isfinite(dt) || !isfinite(c[0]) || !isfinite(c[1]))
+		return line_to(s, a, b);
+	if ((n = arc_pieces(s, m, rx, ry, dt)) < 0)
+		return -2;
+	if (arc_cubics(s, c, rx, ry, phi, t0, dt, n) != 0)
+		return -1;
+	/* the arc's ends exactly where the path is */
+	s->seg.v[s->seg.n - 8 * (size_t)n] = a[0];
+	s->seg.v[s->seg.n - 8 * (size_t)n + 1] = a[1];
+	s->seg.v[s->seg.n - 6] = b[0];
+	s->seg.v[s->seg.n - 5] = b[1];
+	return 0;
+}
+
+/* S's and T's first control point: the last control point of the
+ * segment before reflected about the current point, if that segment
+ * was of the same kind (after), else the current point. */
+static void
+reflect(int after, const double *cur, const double *ctl, double *q)
+{
+	q[0] = after ? 2 * cur[0] - ctl[0] : cur[0];
+	q[1] = after ? 2 * cur[1] - ctl[1] : cur[1];
+}
+
+/* After a curved segment: its last control point c (for S or T), its
+ * end e the current point, and the subpath no longer straight. */
+static void
+curve_end(double *ctl, const double *c, double *cur, const double *e,
+    int *straight)
+{
+	ctl[0] = c[0];
+	ctl[1] = c[1];
+	cur[0] = e[0];
+	cur[1] = e[1];
+	*straight = 0;
+}
+
+/* Path data: every subpath a record.  The element is read whole or, on
+ * an error, not at all. */
+static void
+do_path(struct svg *s, const struct elem *el, const double *m)
+{
+	const struct attr *d = attr_of(el, "d");
+	struct loft_writer *w = s->c->w;
+	size_t mark = w->len;
+	const char *p, *e, *why = "bad path data";
+	double cur[2] = { 0, 0 }, start[2] = { 0, 0 }, ctl[2] = { 0, 0 };
+	int cmd = 0, prev = 0, straight = 1, rc;
+	long nbad = s->c->nbad;
+
+	if (d == NULL)
+		return;         /* no path: nothing drawn */
+	p = d->v;
+	e = d->v + d->vn;
+	s->seg.n = 0;
+	for (;;) {
+		double v[7], q[8];
+		int rel, n, k, up, f1, f2;
+
+		p = skip_sep(p, e);
+		if (p == e)
+			break;
+		if (strchr("MmLlHhVvCcSsQqTtAaZz", *p) != NULL && *p != '\0') {
+			cmd = (unsigned char)*p++;
+		} else if (cmd == 0 || cmd == 'Z' || cmd == 'z') {
+			goto bad;       /* numbers where a command must be */
+		}
+		/* an M's further pairs are L's */
+		rel = cmd >= 'a';
+		up = cmd & ~0x20;
+		if (up == 'Z') {
+			if (s->seg.n > 0 && (cur[0] != start[0] ||
+			    cur[1] != start[1]))
+				if (line_to(s, cur, start) != 0)
+					goto oom;
+			put_subpath(s, el, m, 1, straight);
+			s->seg.n = 0;
+			straight = 1;
+			cur[0] = start[0];
+			cur[1] = start[1];
+			prev = 'Z';
+			continue;
+		}
+		n = up == 'M' || up == 'L' || up == 'T' ? 2 : up == 'H' ||
+		    up == 'V' ? 1 : up == 'C' ? 6 : up == 'A' ? 7 : 4;
+		for (k = 0; k < n; k++) {
+			if (up == 'A' && (k == 3 || k == 4)) {
+				if (svg_flag(&p, e, k == 3 ? &f1 : &f2) != 0)
+					goto bad;
+				v[k] = 0;
+			} else if (svg_num(&p, e, &v[k]) != 0) {
+				goto bad;
+			}
+		}
+		/* to absolute coordinates */
+		if (up == 'H')
+			v[0] += rel ? cur[0] : 0;
+		else if (up == 'V')
+			v[0] += rel ? cur[1] : 0;
+		else if (rel)
+			for (k = up == 'A' ? 5 : 0; k < n; k += 2) {
+				v[k] += cur[0];
+				v[k + 1] += cur[1];
+			}
+		switch (up) {
+		case 'M':
+			put_subpath(s, el, m, 0, straight);
+			s->seg.n = 0;
+			straight = 1;
+			start[0] = cur[0] = v[0];
+			start[1] = cur[1] = v[1];
+			cmd = rel ? 'l' : 'L';
+			prev = 'M';
+			continue;
+		case 'L':
+		case 'H':
+		case 'V':
+			q[0] = up == 'V' ? cur[0] : v[0];
+			q[1] = up == 'H' ? cur[1] : up == 'V' ? v[0] : v[1];
+			if (line_to(s, cur, q) != 0)
+				goto oom;
+			cur[0] = q[0];
+			cur[1] = q[1];
+			break;
+		case 'C':
+		case 'S':
+			q[0] = cur[0];
+			q[1] = cur[1];
+			if (up == 'C') {
+				memcpy(q + 2, v, 6 * sizeof *v);
+			} else {        /* the reflection of the last control */
+				reflect(prev == 'C' || prev == 'S', cur, ctl, q + 2);
+				memcpy(q + 4, v, 4 * sizeof *v);
+			}
+			if (seg_bezier(s, q) != 0)
+				goto oom;
+			curve_end(ctl, q + 4, cur, q + 6, &straight);
+			break;
+		case 'Q':
+		case 'T': {
+			double qc[2];
+
+			if (up == 'Q') {
+				qc[0] = v[0];
+				qc[1] = v[1];
+			} else {
+				reflect(prev == 'Q' || prev == 'T', cur, ctl, qc);
+			}
+			/* P'_A = 2 (control - start), P'_B = 2 (end -
+			 * control): the cubic it is, exactly */
+			q[0] = cur[0];
+			q[1] = cur[1];
+			q[2] = v[n - 2];
+			q[3] = v[n - 1];
+			for (k = 0; k < 2; k++) {
+				q[4 + k] = 2 * (qc[k] - q[k]);
+				q[6 + k] = 2 * (q[2 + k] - qc[k]);
+			}
+			if (seg_row(s, q, q + 2, q + 4, q + 6) != 0)
+				goto oom;
+			curve_end(ctl, qc, cur, q + 2, &straight);
+			break;
+		}
+		case 'A':
+			q[0] = v[5];
+			q[1] = v[6];
+			rc = arc_to(s, m, cur, v[0], v[1], v[2], f1, f2, q);
+			if (rc == -1)
+				goto oom;
+			if (rc == -2) {
+				why = "an arc needs more cubic pieces than "
+				    "the tolerance allows";
+				goto bad;
+			}
+			cur[0] = q[0];
+			cur[1] = q[1];
+			straight = 0;
+			break;
+		}
+		prev = up;
+	}
+	put_subpath(s, el, m, 0, straight);
+	if (s->c->nbad > nbad)
+		w->len = mark;  /* a record of it failed: none of it */
+	return;
+bad:
+	w->len = mark;
+	w->col = 0;
+	p = skip_sep(p, e);
+	{
+		char msg[160], q[13];
+
+		snprintf(msg, sizeof msg, "%s at '%s': not read", why,
+		    loft__cadin_quote(q, sizeof q, p, (size_t)(e - p)));
+		say_el(s, el, p, msg);
+	}
+	return;
+oom:
+	w->len = mark;
+	s->oom = 1;
+}
+
+/* polyline and polygon: their points as a knot record. */
+static void
+do_poly(struct svg *s, const struct elem *el, const double *m, int closed)
+{
+	const struct attr *a = attr_of(el, "points");
+	const char *p, *e;
+	double v[2];
+
+	s->seg.n = 0;
+	if (a == NULL)
+		return;
+	p = a->v;
+	e = a->v + a->vn;
+	for (;;) {
+		double x[2];
+
+		if (skip_sep(p, e) == e)
+			break;
+		if (svg_num(&p, e, &x[0]) != 0 || svg_num(&p, e, &x[1]) != 0) {
+			say_el(s, el, p, "points: want pairs of numbers: not "
+			    "read");
+			return;
+		}
+		if (s->seg.n > 0 && line_to(s, v, x) != 0)
+			return;
+		if (s->seg.n == 0 && seg_add(s, x, 2) != 0)
+			return;
+		v[0] = x[0];
+		v[1] = x[1];
+	}
+	if (s->seg.n == 2) {    /* one point: a knot record of one knot */
+		size_t mark = s->c->w->len;
+		double y[2];
+
+		mat_apply(m, s->seg.v, y);
+		put_header(s, el, "points", 0, NULL);
+		loft_put_row(s->c->w, y, 2);
+		loft_end_record(s->c->w);
+		loft__cadin_done(s->c, mark, el->line);
+		return;
+	}
+	/* the first point alone, then a segment per further point */
+	memmove(s->seg.v, s->seg.v + 2, (s->seg.n - 2) * sizeof *s->seg.v);
+	s->seg.n -= 2;
+	/* the closing side, unless the last point repeats the first */
+	if (closed && (s->seg.v[s->seg.n - 6] != s->seg.v[0] ||
+	    s->seg.v[s->seg.n - 5] != s->seg.v[1]) && line_to(s, s->seg.v + 
+	    s->seg.n - 6, s->seg.v) != 0)
+		return;
+	put_subpath(s, el, m, closed, 1);
+}
+
+static void
+do_line(struct svg *s, const struct elem *el, const double *m)
+{
+	double a[2], b[2];
+
+	if (num_attr(s, el, "x1", &a[0]) < 0 || num_attr(s, el, "y1", &a[1]) <
+	    0 || num_attr(s, el, "x2", &b[0]) < 0 ||
+	    num_attr(s, el, "y2", &b[1]) < 0)
+		return;
+	s->seg.n = 0;
+	if (line_to(s, a, b) == 0)
+		put_subpath(s, el, m, 0, 1);
+}
+
+static void
+do_rect(struct svg *s, const struct elem *el, const double *m)
+{
+	double x, y, wd, ht, rx, ry, p[8];
+
+	if (num_attr(s, el, "x", &x) < 0 || num_attr(s, el, "y", &y) < 0 ||
+	    num_attr(s, el, "width", &wd) < 0 ||
+	    num_attr(s, el, "height", &ht) < 0 ||
+	    num_attr(s, el, "rx", &rx) < 0 || num_attr(s, el, "ry", &ry) < 0)
+		return;
+	if (!(wd > 0) || !(ht > 0))
+		return;         /* not drawn */
+	if (rx != 0 || ry != 0) {
+		say_el(s, el, el->at, "a rect with rounded corners is not read "
+		    "(draw it as a path)");
+		return;
+	}
+	p[0] = x;
+	p[1] = y;
+	p[2] = x + wd;
+	p[3] = y;
+	p[4] = x + wd;
+	p[5] = y + ht;
+	p[6] = x;
+	p[7] = y + ht;
+	s->seg.n = 0;
+	for (int k = 0; k < 4; k++)
+		if (line_to(s, p + 2 * k, p + 2 * ((k + 1) % 4)) != 0)
+			return;
+	{
+		struct loft_writer *w = s->c->w;
+		size_t mark = w->len;
+		double q[2];
+
+		put_header(s, el, "points", 1, "1,2,3,4");
+		for (int k = 0; k < 4; k++) {
+			mat_apply(m, p + 2 * k, q);
+			loft_put_row(w, q, 2);
+		}
+		loft_end_record(w);
+		loft__cadin_done(s->c, mark, el->line);
+	}
+}
+
+/* circle and ellipse: a closed cubic record within the tolerance. */
+static void
+do_ellipse(struct svg *s, const struct elem *el, const double *m, int circle)
+{
+	double c[2], rx, ry;
+	long n;
+
+	if (num_attr(s, el, "cx", &c[0]) < 0 || num_attr(s, el, "cy", &c[1]) <
+	    0)
+		return;
+	if (circle ? num_attr(s, el, "r", &rx) < 0 :
+	    num_attr(s, el, "rx", &rx) < 0 || num_attr(s, el, "ry", &ry) < 0)
+		return;
+	if (circle)
+		ry = rx;
+	if (!(rx > 0) || !(ry > 0))
+		return;         /* not drawn */
+	if ((n = arc_pieces(s, m, rx, ry, 2 * M_PI)) < 0) {
+		say_el(s, el, el->at, "needs more cubic pieces than the "
+		    "tolerance allows");
+		return;
+	}
+	s->seg.n = 0;
+	if (arc_cubics(s, c, rx, ry, 0, 0, 2 * M_PI, n) != 0)
+		return;
+	s->seg.v[s->seg.n - 6] = s->seg.v[0];   /* closed exactly */
+	s->seg.v[s->seg.n - 5] = s->seg.v[1];
+	put_subpath(s, el, m, 1, 0);
+}
+
+/* The root svg's map from user space to millimetres, y turned up. */
+static void
+root_map(struct svg *s, const struct elem *el, double *m)
+{
+	const struct attr *vb = attr_of(el, "viewBox");
+	const struct attr *par = attr_of(el, "preserveAspectRatio");
+	double wmm = length_mm(attr_of(el, "width"));
+	double hmm = length_mm(attr_of(el, "height"));
+	double v[4], sx = 25.4 / 96, sy = sx;
+	const char *p;
+	int n = 0;
+
+	if (vb != NULL) {
+		p = vb->v;
+		while (n < 4 && svg_num(&p, vb->v + vb->vn, &v[n]) == 0)
+			n++;
+		if (n != 4 || !(v[2] > 0) || !(v[3] > 0)) {
+			say_el(s, el, vb->v, "viewBox is not four numbers with "
+			    "width and height above 0: user units taken as "
+			    "px");
+			n = 0;
+		}
+	}
+	if (n == 4 && (wmm > 0 || hmm > 0)) {
+		sx = wmm > 0 ? wmm / v[2] : hmm / v[3];
+		sy = hmm > 0 ? hmm / v[3] : sx;
+		if (par == NULL || par->vn < 4 || memcmp(par->v, "none", 4)
+		    != 0) {
+			int slice = par != NULL && find(par->v, par->vn,
+			    "slice", 5) != NULL;
+
+			sx = sy = slice ? fmax(sx, sy) : fmin(sx, sy);
+		}
+	}
+	m[0] = sx;
+	m[3] = -sy;
+	m[1] = m[2] = m[4] = m[5] = 0;
+}
+
+/* ---- the document ---------------------------------------------------- */
+
+static int
+is_name_char(int ch)
+{
+	return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+	    is_digit(ch) || ch == ':' || ch == '-' || ch == '_' || ch == '.' ||
+	    ch >= 0x80;
+}
+
+/* Move past the text up to and with the string t; -1 when absent. */
+static int
+skip_past(struct svg *s, const char *t)
+{
+	size_t n = strlen(t);
+	const char *q = find(s->p, (size_t)(s->end - s->p), t, n);
+
+	if (q == NULL)
+		return -1;
+	for (; s->p < q + n; s->p++)
+		s->line += *s->p == '\n';
+	return 0;
+}
+
+/* Parse a start tag at s->p (past '<') into el; 1 for a tag that
+ * closes itself, 0 for one that opens, -1 when malformed. */
+static int
+start_tag(struct svg *s, struct elem *el)
+{
+	const char *p = s->p, *e = s->end;
+	int r = -1;
+
+	el->name = p;
+	while (p < e && is_name_char((unsigned char)*p))
+		p++;
+	el->nn = (size_t)(p - el->name);
+	el->na = 0;
+	if (el->nn == 0)
+		goto out;
+	for (;;) {
+		struct attr *a;
+		char q;
+
+		while (p < e && is_wsp((unsigned char)*p))
+			s->line += *p++ == '\n';
+		if (p == e)
+			goto out;
+		if (*p == '>' || (*p == '/' && p + 1 < e && p[1] == '>')) {
+			r = *p == '/';
+			p += 1 + r;
+			goto out;
+		}
+		a = el->na < MAX_ATTRS ? &el->a[el->na++] : &el->a[MAX_ATTRS -
+		    1];
+		a->k = p;
+		while (p < e && is_name_char((unsigned char)*p))
+			p++;
+		a->kn = (size_t)(p - a->k);
+		while (p < e && is_wsp((unsigned char)*p))
+			s->line += *p++ == '\n';
+		if (a->kn == 0 || p == e || *p++ != '=')
+			goto out;
+		while (p < e && is_wsp((unsigned char)*p))
+			s->line += *p++ == '\n';
+		if (p == e || (*p != '"' && *p != '\''))
+			goto out;
+		q = *p++;
+		a->v = p;
+		while (p < e && *p != q)
+			s->line += *p++ == '\n';
+		if (p == e)
+			goto out;
+		a->vn = (size_t)(p++ - a->v);
+	}
+out:
+	s->p = p;
+	return r;
+}
+
+/* Elements that draw nothing themselves, passed over with what is in
+ * them; and those that draw what loft cannot hold. */
+static const char *const quiet[] = { "defs", "title", "desc", "metadata",
+	"style", "script", "symbol", "clipPath", "mask", "marker", "pattern",
+	"linearGradient", "radialGradient", "filter", NULL };
+static const char *const refused[] = { "text", "image", "use",
+	"foreignObject", "video", "audio", "canvas", "iframe", NULL };
+
+static int
+in_list(const struct elem *el, const char *const *list)
+{
+	for (; *list != NULL; list++)
+		if (name_is(el, *list))
+			return 1;
+	return 0;
+}
+
+/* An element opened: 0 when it is read (and, if it opens, pushed), 1
+ * when it and what is in it are passed over. */
+static int
+element(struct svg *s, const struct elem *el, int opens)
+{
+	struct level *up = s->depth > 0 ? &s->st[s->depth - 1] : NULL, lv;
+	double t[6];
+
+	if (s->depth >= SVG_DEPTH - 1) {
+		say_el(s, el, el->at, "nested deeper than 256 elements: not "
+		    "read, nor what is in it");
+		return 1;
+	}
+	if (!s->root) {
+		if (!name_is(el, "svg")) {
+			say_el(s, el, el->at, "the root element is not svg: "
+			    "not an SVG document");
+			return -1;
+		}
+		s->root = 1;
+		memset(&lv, 0, sizeof lv);
+		root_map(s, el, lv.m);
+		if (transform(s, el, t) == 0)
+			mat_mul(lv.m, t, lv.m);
+	} else if (memchr(el->name, ':', el->nn) != NULL ||
+	    in_list(el, quiet)) {
+		return 1;
+	} else if (in_list(el, refused) || name_is(el, "svg")) {
+		say_el(s, el, el->at, "not read: loft reads path, polyline, "
+		    "polygon, line, rect, circle and ellipse elements");
+		return 1;
+	} else {
+		int g = name_is(el, "g") || name_is(el, "a") ||
+		    name_is(el, "switch");
+		const struct attr *mode = attr_of(el, "inkscape:groupmode");
+		const struct attr *label = attr_of(el, "inkscape:label");
+		const struct attr *id = attr_of(el, "id");
+
+		lv = *up;
+		if (transform(s, el, t) != 0)
+			return 1;
+		mat_mul(up->m, t, lv.m);
+		if (g && mode != NULL && mode->vn == 5 &&
+		    memcmp(mode->v, "layer", 5) == 0 && (label || id)) {
+			lv.layer = label ? label->v : id->v;
+			lv.nlayer = label ? label->vn : id->vn;
+			lv.inklayer = 1;
+		} else if (g && id != NULL && !lv.inklayer) {
+			lv.layer = id->v;
+			lv.nlayer = id->vn;
+		}
+		if (!g) {
+			s->st[s->depth] = lv;   /* for put_header */
+			s->depth++;
+			if (name_is(el, "path"))
+				do_path(s, el, lv.m);
+			else if (name_is(el, "polyline"))
+				do_poly(s, el, lv.m, 0);
+			else if (name_is(el, "polygon"))
+				do_poly(s, el, lv.m, 1);
+			else if (name_is(el, "line"))
+				do_line(s, el, lv.m);
+			else if (name_is(el, "rect"))
+				do_rect(s, el, lv.m);
+			else if (name_is(el, "circle"))
+				do_ellipse(s, el, lv.m, 1);
+			else if (name_is(el, "ellipse"))
+				do_ellipse(s, el, lv.m, 0);
+			else {
+				s->depth--;
+				say_el(s, el, el->at, "an element loft does "
+				    "not know: not read");
+				return 1;
+			}
+			s->depth--;
+		}
+	}
+	if (opens)
+		s->st[s->depth++] = lv;
+	return 0;
+}
+
+int
+loft_svg_read(const char *buf, size_t len, struct loft_cadin *c)
+{
+	struct svg *s = calloc(1, sizeof *s);
+	struct elem el;
+	long nbad = c->nbad;
+	int r;
+
+	if (s == NULL) {
+		loft__cadin_say(c, 0, "out of memory");
+		return LOFT_ENOMEM;
+	}
+	s->c = c;
+	s->buf = s->p = buf;
+	s->end = buf + len;
+	s->line = 1;
+	while (s->p < s->end && !s->oom) {
+		const char *lt = memchr(s->p, '<', (size_t)(s->end - s->p));
+
+		if (lt == NULL)
+			break;
+		for (; s->p < lt; s->p++)
+			s->line += *s->p == '\n';
+		el.at = s->p++;
+		el.line = s->line;
+		if (s->end - s->p >= 3 && memcmp(s->p, "!--", 3) == 0)
+			r = skip_past(s, "-->");
+		else if (s->end - s->p >= 8 && memcmp(s->p, "![CDATA[", 8) == 0)
+			r = skip_past(s, "]]>");
+		else if (s->p < s->end && *s->p == '?')
+			r = skip_past(s, "?>");
+		else if (s->p < s->end && *s->p == '!') {
+			/* a DOCTYPE, maybe with an internal subset */
+			const char *br = memchr(s->p, '[', (size_t)(s->end -
+			    s->p)), *gt = memchr(s->p, '>', (size_t)(s->end -
+			    s->p));
+
+			r = br != NULL && gt != NULL && br < gt ?
+			    skip_past(s, "]") | skip_past(s, ">") :
+			    skip_past(s, ">");
+		} else if (s->p < s->end && *s->p == '/') {
+			if ((r = skip_past(s, ">")) == 0) {
+				if (s->skip > 0)
+					s->skip--;
+				else if (s->depth > 0)
+					s->depth--;
+			}
+		} else {
+			r = start_tag(s, &el);
+			if (r >= 0 && s->skip > 0)
+				s->skip += r == 0;
+			else if (r >= 0) {
+				int e = element(s, &el, r == 0);
+
+				if (e < 0)
+					break;
+				if (e == 1 && r == 0)
+					s->skip = 1;
+			}
+		}
+		if (r < 0) {
+			loft__cadin_say(c, el.line, "%s", s->p >= s->end ? "the "
+			    "document ends inside a tag: truncated?" :
+			    "malformed XML here: the rest of the document is "
+			    "not read");
+			break;
+		}
+		if (s->root && s->depth == 0 && s->skip == 0)
+			break;  /* the root element closed */
+	}
+	if (!s->oom && s->root && (s->depth > 0 || s->skip > 0) &&
+	    c->nbad == nbad)
+		loft__cadin_say(c, s->line, "the document ends inside an "
+		    "element: truncated?");
+	else if (!s->oom && !s->root && c->nbad == nbad)
+		loft__cadin_say(c, s->line, "no svg element: not an SVG "
+		    "document");
+	if (s->oom)
+		loft__cadin_say(c, s->line, "out of memory");
+	r = s->oom ? LOFT_ENOMEM : c->nbad > nbad ? LOFT_EINPUT : 0;
+	free(s->seg.v);
+	free(s);
+	return r;
+}
