@@ -675,6 +675,36 @@ span_bezier(const double *t, const double *ctl, int p, size_t i, int dim,
 	}
 }
 
+/*
+ * Whether the curve of a SPLINE ends exactly where it starts: the first
+ * point of its first span's Bezier form and the last of its last.  A
+ * closed curve written as a clamped spline (as tocad writes one) carries
+ * no closed flag (group 70 bit 1 means a periodic spline to most
+ * readers), so this is how it is known.  The spline's knots are checked.
+ */
+static int
+ends_meet(const double *t, const double *ctl, int p, size_t n, int dim)
+{
+	double b0[(MAX_DEGREE + 1) * 3], b1[(MAX_DEGREE + 1) * 3];
+	double work[(MAX_DEGREE + 1) * 3];
+	size_t first = n, last = n;
+
+	for (size_t i = (size_t)p; i < n; i++)
+		if (t[i] < t[i + 1]) {
+			if (first == n)
+				first = i;
+			last = i;
+		}
+	if (first == n)
+		return 0;
+	span_bezier(t, ctl, p, first, dim, b0, work);
+	span_bezier(t, ctl, p, last, dim, b1, work);
+	for (int q = 0; q < dim; q++)
+		if (b0[q] != b1[p * dim + q])
+			return 0;
+	return 1;
+}
+
 /* A SPLINE by control points: its Bezier pieces, exactly. */
 static void
 spline_ctl(struct dxf *d, struct ent *e)
@@ -738,7 +768,8 @@ spline_ctl(struct dxf *d, struct ent *e)
 	cubic = p <= 3;
 	if (cubic) {
 		loft_put_type(w, "cubic");
-		loft_put_attr(w, "closed", e->f70 & 1 ? "1" : "0");
+		loft_put_attr(w, "closed", e->f70 & 1 || ends_meet(t, ctl, p,
+		    n, dim) ? "1" : "0");
 		loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
 		loft_end_line(w);
 	}

@@ -39,6 +39,7 @@ suite bin/test/cad
 suite sh tests/tocad.sh
 suite sh tests/loftcut.sh
 suite sh tests/fromcad.sh
+suite sh tests/roundtrip.sh
 suite sh tests/bad.sh
 suite bin/test/hostile
 suite sh tests/oom.sh
