@@ -1612,7 +1612,8 @@ plot_run() { "$B/plot" "$@"; }
 plot_good() {
 	case $1 in
 	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
-	2) printf 'points id=2\n0 1 2\n1 1 1\n2 1 0\n' ;;
+	# plane, as record 1: plot refuses wider points after it (sample -k)
+	2) printf 'points id=2\n0 1\n1 1\n2 1\n' ;;
 	esac
 }
 
