@@ -54,6 +54,7 @@ valid() {
 	[ -z "$(tail -c 1 "$1")" ] || { echo "no final newline"; return 1; }
 	awk '
 	function bad(what) { print "line " NR ": " what; failed = 1; exit 1 }
+	/^#/ { next }   # a comment line, as sample -a writes
 	/^$/ { if (!inrec || !rows) bad("blank line where no record"); inrec = 0; next }
 	{
 		if (!inrec) { inrec = 1; rows = 0; cols = -1; if ($1 ~ /^[A-Za-z]/) next }
@@ -845,6 +846,7 @@ sample_good() {
 }
 
 sample_cases() {
+	opts -a
 	opts
 	# issue 12: sample -d took its own plain norm, so the unit tangent of
 	# a curve of size 1e160 was 0 0 (the sum of squares overflowed), and
