@@ -1357,6 +1357,50 @@ grid_init(struct grid *g, double cw, double ch, const struct box *frame,
 	return 0;
 }
 
+/* The leader of label l, in box b: from its point to the nearest point
+ * of b. */
+static void
+leader(const struct label *l, const struct box *b, double *sg)
+{
+	for (int k = 0; k < 2; k++) {
+		sg[k] = l->anchor[k];
+		sg[2 + k] = fmin(fmax(l->anchor[k], b->lo[k]), b->hi[k]);
+	}
+}
+
+/* Whether the segment sg crosses a placed label's box: in pieces no
+ * longer than a cell, each looked for in the cells of its box. */
+static int
+crosses_label(const struct grid *g, const double *sg, const struct box *placed)
+{
+	double d[2] = { sg[2] - sg[0], sg[3] - sg[1] }, q[2];
+	double len = fmax(fabs(d[0]) / g->cw, fabs(d[1]) / g->ch);
+	size_t n = len < 1 ? 1 : (size_t)ceil(len);
+	long x0, x1, y0, y1;
+	struct box b;
+
+	for (size_t i = 0; i < n; i++) {
+		box_empty(&b);
+		for (int e = 0; e < 2; e++) {
+			double t = (double)(i + e) / (double)n;
+
+			q[0] = sg[0] + t * d[0];
+			q[1] = sg[1] + t * d[1];
+			box_add(&b, q);
+		}
+		cells(g, &b, 0, &x0, &x1);
+		cells(g, &b, 1, &y0, &y1);
+		for (long cx = x0; cx <= x1; cx++)
+			for (long cy = y0; cy <= y1; cy++)
+				for (size_t k = g->head[bucket(g, cx, cy)];
+				    k != (size_t)-1; k = g->e[k].next)
+					if (g->e[k].cx == cx && g->e[k].cy == cy &&
+					    segment_meets(sg, &placed[g->e[k].lb]))
+						return 1;
+	}
+	return 0;
+}
+
 static void
 widen(struct box *b, const struct box *a, double by)
 {
@@ -1383,7 +1427,7 @@ try_spots(struct label *l, int nanc,
     const struct obstacles *o, struct box *b)
 {
 	/* a gap of 2 pixels; the own line within a line, others not */
-	double gap = 0.15 * font, near = font, far = near;
+	double gap = 0.15 * font, near = font, far = near, sg[4];
 	struct box w;
 
 	for (int a = 0; a < nanc; a++)
@@ -1401,6 +1445,10 @@ try_spots(struct label *l, int nanc,
 			widen(&w, b, far);
 			if (grid_hits(o, &w, strict == 1 ? l->rec : ANYREC, 0))
 				continue;
+			/* a leader must not cross an earlier label */
+			if (strict == 2 && (leader(l, b, sg),
+			    crosses_label(g, sg, placed)))
+				continue;
 			widen(&w, b, near);
 			if (strict == 1 && !grid_hits(o, &w, l->rec, 1))
 				continue;
@@ -1415,7 +1463,8 @@ try_spots(struct label *l, int nanc,
  * lines of points along its record's curve (the rightmost first) that
  * are within a line of that curve and of no other record's; (2) spots
  * out to the right of its rightmost point a line clear of every line,
- * tied to it by a leader line; (3) the spots of (1) without their
+ * tied to it by a leader line that crosses no earlier label (and that
+ * later labels keep clear of); (3) the spots of (1) without their
  * condition; (4) where all are taken, its rightmost point, moved down a
  * line at a time while it overlaps a label placed before it, below the
  * first (in input order) it overlaps.  A patch's label stays at the
@@ -1491,6 +1540,16 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 		}
 		box_join(frame, &placed[i]);
 		rc = grid_add(&g, &placed[i], i);
+		/* later labels keep clear of its leader too */
+		if (rc == 0 && l->leader) {
+			double sg[4];
+
+			leader(l, &placed[i], sg);
+			rc = add_segment(&o, sg, sg + 2, l->rec);
+			if (rc == 0)
+				rc = grid_add_segment(&o.g, o.seg[o.n - 1],
+				    o.n - 1);
+		}
 	}
 done:
 	free(g.head);
@@ -1602,17 +1661,15 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	for (size_t i = 0; i < pc->nlb; i++) {
 		const struct label *l = &pc->lb[i];
 		struct box lb;
-		double q[2];
+		double sg[4];
 
 		if (!l->leader)
 			continue;
-		/* from its point to the nearest point of its box */
 		label_box(l, font, &lb);
-		for (int k = 0; k < 2; k++)
-			q[k] = fmin(fmax(l->anchor[k], lb.lo[k]), lb.hi[k]);
+		leader(l, &lb, sg);
 		path_open(d, "leader", l->rec, THIN_PX);
-		point(d, " d=\"M", l->anchor);
-		point(d, " L", q);
+		point(d, " d=\"M", sg);
+		point(d, " L", sg + 2);
 		out(d, "\"/>\n");
 	}
 	out(d, "</g>\n");
