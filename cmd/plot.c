@@ -1238,25 +1238,42 @@ collect_segments(const struct pic *pc, double scale, struct obstacles *o)
 	return 0;
 }
 
-/* File segment k in every cell it passes through: in pieces no longer
- * than a cell, each in the cells of its own box. */
+/* A segment sg is looked at in n pieces no longer than a cell of g
+ * (cell_pieces), each by its box (piece_box): the cells of those boxes
+ * are the cells it passes through. */
+static size_t
+cell_pieces(const struct grid *g, const double *sg)
+{
+	double len = fmax(fabs(sg[2] - sg[0]) / g->cw,
+	    fabs(sg[3] - sg[1]) / g->ch);
+
+	return len < 1 ? 1 : (size_t)ceil(len);
+}
+
+static void
+piece_box(const double *sg, size_t i, size_t n, struct box *b)
+{
+	double q[2];
+
+	box_empty(b);
+	for (int e = 0; e < 2; e++) {
+		double t = (double)(i + e) / (double)n;
+
+		q[0] = sg[0] + t * (sg[2] - sg[0]);
+		q[1] = sg[1] + t * (sg[3] - sg[1]);
+		box_add(b, q);
+	}
+}
+
+/* File segment k in every cell it passes through. */
 static int
 grid_add_segment(struct grid *g, const double *sg, size_t k)
 {
-	double d[2] = { sg[2] - sg[0], sg[3] - sg[1] }, q[2];
-	double len = fmax(fabs(d[0]) / g->cw, fabs(d[1]) / g->ch);
-	size_t n = len < 1 ? 1 : (size_t)ceil(len);
+	size_t n = cell_pieces(g, sg);
 	struct box b;
 
 	for (size_t i = 0; i < n; i++) {
-		box_empty(&b);
-		for (int e = 0; e < 2; e++) {
-			double t = (double)(i + e) / (double)n;
-
-			q[0] = sg[0] + t * d[0];
-			q[1] = sg[1] + t * d[1];
-			box_add(&b, q);
-		}
+		piece_box(sg, i, n, &b);
 		if (grid_add(g, &b, k) != 0)
 			return -1;
 	}
@@ -1368,26 +1385,17 @@ leader(const struct label *l, const struct box *b, double *sg)
 	}
 }
 
-/* Whether the segment sg crosses a placed label's box: in pieces no
- * longer than a cell, each looked for in the cells of its box. */
+/* Whether the segment sg crosses a placed label's box, looked for in
+ * the cells it passes through. */
 static int
 crosses_label(const struct grid *g, const double *sg, const struct box *placed)
 {
-	double d[2] = { sg[2] - sg[0], sg[3] - sg[1] }, q[2];
-	double len = fmax(fabs(d[0]) / g->cw, fabs(d[1]) / g->ch);
-	size_t n = len < 1 ? 1 : (size_t)ceil(len);
+	size_t n = cell_pieces(g, sg);
 	long x0, x1, y0, y1;
 	struct box b;
 
 	for (size_t i = 0; i < n; i++) {
-		box_empty(&b);
-		for (int e = 0; e < 2; e++) {
-			double t = (double)(i + e) / (double)n;
-
-			q[0] = sg[0] + t * d[0];
-			q[1] = sg[1] + t * d[1];
-			box_add(&b, q);
-		}
+		piece_box(sg, i, n, &b);
 		cells(g, &b, 0, &x0, &x1);
 		cells(g, &b, 1, &y0, &y1);
 		for (long cx = x0; cx <= x1; cx++)
