@@ -666,8 +666,9 @@ add_control(struct pic *pc, const struct loft_record *rec, size_t nu,
 	return add_marks(pc, rec, K_CONTROL, pc->nrec, e, err);
 }
 
-/* Points of stroke s spread along it, for a label to stand by: the
- * middles of NANCHOR - 1 of its pieces or points, evenly apart. */
+/* Points of stroke s spread along it, for a label to stand by:
+ * NANCHOR - 1 of them at even steps of its parameter (of its cubic
+ * pieces) or of its points. */
 static void
 label_anchors(const struct pic *pc, const struct stroke *s, struct label *l)
 {
@@ -675,12 +676,12 @@ label_anchors(const struct pic *pc, const struct stroke *s, struct label *l)
 	size_t n = s->kind == K_BEZIER ? s->n / 4 : s->n;
 
 	for (int k = 0; n > 0 && k < NANCHOR - 1; k++) {
-		size_t i = (size_t)(((double)k + 0.5) * (double)n /
-		    (NANCHOR - 1));
+		double t = ((double)k + 0.5) * (double)n / (NANCHOR - 1);
+		size_t i = (size_t)t < n ? (size_t)t : n - 1;
 		double *q = l->anc[l->rec_anchors++];
 
 		if (s->kind == K_BEZIER) {
-			bezier_at(p + 8 * i, 0.5, q);
+			bezier_at(p + 8 * i, t - (double)i, q);
 		} else {
 			q[0] = p[2 * i];
 			q[1] = p[2 * i + 1];
