@@ -1,7 +1,8 @@
 # loft: make builds bin/ and libloft.a; make check runs every test;
 # make demo grades and fits the bundled insole; make figures draws the
 # papers' figures; make bench times the programs against GNU spline
-# (tests/bench/run.sh); make install PREFIX=... installs.
+# (tests/bench/run.sh); make install PREFIX=... installs, and make
+# uninstall PREFIX=... removes what it installed.
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -97,6 +98,17 @@ install: all
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
 	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/
 
+# the files install copies, by name, and nothing else (the directories
+# stay: they may hold other things, and may have been there before)
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/bin/,$(notdir $(BINS))) \
+	    $(DESTDIR)$(PREFIX)/lib/$(notdir $(LIB)) \
+	    $(DESTDIR)$(PREFIX)/include/loft.h \
+	    $(DESTDIR)$(PREFIX)/include/loftcad.h \
+	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man1/,$(notdir $(MAN1))) \
+	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man5/,$(notdir $(MAN5))) \
+	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man7/,$(notdir $(MAN7)))
+
 clean:
 	rm -rf bin
 
@@ -107,7 +119,7 @@ ifneq ($(filter clean,$(MAKECMDGOALS)),)
 .NOTPARALLEL:
 endif
 
-.PHONY: all check bench compare demo figures install clean
+.PHONY: all check bench compare demo figures install uninstall clean
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------

@@ -24,17 +24,30 @@
  * drawing's units: curve and thin strokes, knot marker radius, labels. */
 #define CURVE_PX 1.5
 #define THIN_PX 0.6
+/* -t tangents: dashed, so heavier than the thin lines to be seen. */
+#define TANGENT_PX 1.1
 #define KNOT_PX 2.5
 #define FONT_PX 12
 /* An estimate of a label's advance per character, as a fraction of the
  * font size, generous for digits and signs in a sans-serif face. */
 #define CHAR_EM 0.62
+/* A curve of another type than cubic is drawn as a polyline within this
+ * many pixels of it: a quarter pixel, below what antialiasing shows. */
+#define FLAT_PX 0.25
+/* ...with at most this many points: far more than a picture of 640
+ * pixels can show, so only a pathological record reaches it. */
+#define MAX_FLAT 4000000
 /* The margin around the drawing, a fraction of its larger side. */
 #define MARGIN 0.04
 /* Without -C, the longest comb tooth is this fraction of the larger side
  * of the curves' extent: long enough to read, short enough not to hide
  * the drawing. */
 #define COMB_LENGTH 0.15
+/* With a -C of the user's, no tooth is longer than this fraction of the
+ * larger side of the curves' extent (longer teeth are cut to it): a
+ * sharp corner must not shrink the curve to a speck in a frame the comb
+ * fills. */
+#define COMB_CAP 0.5
 /* Coordinates are written to this fraction of the picture's larger side,
  * 1/1600 of a pixel: below anything a screen or printer shows, yet short
  * text. */
@@ -66,11 +79,18 @@ struct stroke {
 	size_t first, n;        /* its points in pic.pt */
 };
 
+/* A label tries these many points of its record's curve. */
+#define NANCHOR 13
+
 struct label {
 	int rec;
 	double at[2];           /* where the label's text begins */
 	double anchor[2];       /* its record's rightmost point */
 	int numbered;           /* the text is the record's number */
+	int centred;            /* a patch's: centred on its anchor */
+	int rec_anchors;        /* how many of anc are set */
+	int leader;             /* placed far: a line ties it to anchor */
+	double anc[NANCHOR][2]; /* points of its curve, the rightmost first */
 	char *text;
 };
 
@@ -94,6 +114,8 @@ struct pic {
 	long grid;              /* a surface's parameter intervals each way */
 	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
+	double comb_cap;        /* the longest tooth, in the drawing's units */
+	const char *background; /* -B, or NULL */
 	const char *label_key;
 	/* the picture */
 	double *pt;             /* projected points, 2 numbers each */
@@ -106,6 +128,7 @@ struct pic {
 	struct box kbox;        /* of the knots of -K */
 	double kmax;            /* largest curvature of any comb tooth */
 	int nrec;               /* records drawn */
+	int dim;                /* the first record's dimension; 0: none yet */
 	struct drawn *rec;      /* each of them */
 	size_t reccap;
 	int failed;             /* out of memory */
@@ -121,8 +144,8 @@ struct doc {
 };
 
 static const char usage_text[] =
-    "usage: plot [-bcmt] [-C scale] [-g lines] [-K file] [-l key] "
-    "[-n steps]\n            [-v xy|yz|xz|iso] [file ...]\n";
+    "usage: plot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
+    "[-l key]\n            [-n steps] [-v xy|yz|xz|iso] [file ...]\n";
 
 /* Colours of records 0, 1, ... in turn; the -K knots are black. */
 static const char *const colours[] = {
@@ -173,7 +196,7 @@ project(enum view v, const double *p, int dim, double *q)
 	double x = p[0], y = p[1], z = dim > 2 ? p[2] : 0;
 
 	switch (v) {
-	case V_XY: q[0] = x; q[1] = y; break;
+	default: q[0] = x; q[1] = y; break;     /* V_XY */
 	case V_YZ: q[0] = y; q[1] = z; break;
 	case V_XZ: q[0] = x; q[1] = z; break;
 	case V_ISO:
@@ -343,6 +366,17 @@ extreme_params(const double *cp, int k, double *t)
 	return m;
 }
 
+/* The point at t of the cubic Bezier piece cp (4 plane points). */
+static void
+bezier_at(const double *cp, double t, double *q)
+{
+	double s = 1 - t;
+
+	for (int k = 0; k < 2; k++)
+		q[k] = s * s * s * cp[k] + 3 * s * s * t * cp[2 + k] +
+		    3 * s * t * t * cp[4 + k] + t * t * t * cp[6 + k];
+}
+
 /* See the whole of the Bezier piece cp (4 plane points): its ends and
  * its extremes in x and y, so the frame fits the curve, not its control
  * polygon. */
@@ -416,19 +450,57 @@ eval_finite(const struct loft_curve *c, size_t i, double u, double *p,
 	return 0;
 }
 
-/* Pieces of other types: a polyline through steps points per piece. */
+/*
+ * Curves of other types: a polyline through the fewest points that keep
+ * it within FLAT_PX pixels of the curve (loft_curve_flatten).  The
+ * tolerance is taken from the record's own projected extent, which is at
+ * most the picture's, so it is at most FLAT_PX of the picture's pixels
+ * however the record is framed.  The views are orthogonal projections,
+ * which shorten no distance less than the curve's own 3-D distance, so a
+ * polyline within tol in space is within tol on the page.
+ */
 static int
-add_sampled_piece(struct pic *pc, struct stroke *s, struct extent *e,
-    const struct loft_curve *c, size_t i, struct loft_error *err)
+add_flattened(struct pic *pc, struct stroke *s, struct extent *e,
+    const struct loft_curve *c, struct loft_error *err)
 {
-	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+	double ctl[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM], p[LOFT_MAXDIM],
+	    d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], q[2], tol, size = 0, *u;
+	struct box b;
+	size_t n;
 
-	for (long j = i == 0 ? 0 : 1; j <= pc->steps; j++) {
-		if (eval_finite(c, i, (double)j / pc->steps, p, d1, d2, err))
-			return -1;
-		if (add_seen(pc, s, e, p, c->dim, err) != 0)
-			return (err->row = i), -1;
+	box_empty(&b);
+	for (size_t i = 0; i < c->npieces; i++) {
+		int deg = loft_curve_bezier(c, i, ctl);
+
+		for (int j = 0; j <= deg; j++) {
+			project(pc->view, ctl + j * c->dim, c->dim, q);
+			box_add(&b, q);
+		}
 	}
+	size = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
+	if (!isfinite(size))
+		return loft_fail(err, LOFT_EGEOM, -1, "coordinates too large "
+		    "to draw");
+	/* a curve seen end on: any tolerance draws its one point */
+	tol = size > 0 ? FLAT_PX * size / PICTURE_PX : 1;
+	n = loft_curve_flatten(c, tol, NULL, 0);
+	if (n > MAX_FLAT)
+		return loft_fail(err, LOFT_EGEOM, -1, "curve needs %zu points "
+		    "to draw smooth (more than %d): too wiggly", n, MAX_FLAT);
+	if ((u = malloc(n * sizeof *u)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	loft_curve_flatten(c, tol, u, n);
+	for (size_t j = 0; j < n; j++) {
+		size_t i = u[j] >= (double)c->npieces ? c->npieces - 1 :
+		    (size_t)u[j];
+
+		if (eval_finite(c, i, u[j] - (double)i, p, d1, d2, err) != 0 ||
+		    add_seen(pc, s, e, p, c->dim, err) != 0) {
+			free(u);
+			return (err->row = (long)i), -1;
+		}
+	}
+	free(u);
 	return 0;
 }
 
@@ -503,7 +575,8 @@ add_handles(struct pic *pc, const struct loft_curve *c, struct extent *e,
 
 /*
  * A curve record of any type lib/curve.c knows: exact Bezier segments
- * for cubic records, a sampled polyline for the others.
+ * for cubic records, a polyline within FLAT_PX of the curve for the
+ * others.
  */
 static int
 draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
@@ -515,9 +588,10 @@ draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
 	if (s == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	s->closed = c->closed;
-	for (size_t i = 0; i < c->npieces; i++)
-		if ((exact ? add_bezier_piece : add_sampled_piece)(pc, s, e, c,
-		    i, err) != 0)
+	if (!exact && add_flattened(pc, s, e, c, err) != 0)
+		return -1;
+	for (size_t i = 0; exact && i < c->npieces; i++)
+		if (add_bezier_piece(pc, s, e, c, i, err) != 0)
 			return -1;
 	if (pc->comb && add_comb(pc, c, err) != 0)
 		return -1;
@@ -592,9 +666,33 @@ add_control(struct pic *pc, const struct loft_record *rec, size_t nu,
 	return add_marks(pc, rec, K_CONTROL, pc->nrec, e, err);
 }
 
+/* Points of stroke s spread along it, for a label to stand by:
+ * NANCHOR - 1 of them at even steps of its parameter (of its cubic
+ * pieces) or of its points. */
+static void
+label_anchors(const struct pic *pc, const struct stroke *s, struct label *l)
+{
+	const double *p = pc->pt + 2 * s->first;
+	size_t n = s->kind == K_BEZIER ? s->n / 4 : s->n;
+
+	for (int k = 0; n > 0 && k < NANCHOR - 1; k++) {
+		double t = ((double)k + 0.5) * (double)n / (NANCHOR - 1);
+		size_t i = (size_t)t < n ? (size_t)t : n - 1;
+		double *q = l->anc[l->rec_anchors++];
+
+		if (s->kind == K_BEZIER) {
+			bezier_at(p + 8 * i, t - (double)i, q);
+		} else {
+			q[0] = p[2 * i];
+			q[1] = p[2 * i + 1];
+		}
+	}
+}
+
 static int
 add_label(struct pic *pc, const struct loft_record *rec,
-    const struct extent *e, struct loft_error *err)
+    const struct extent *e, const double *centre, size_t nst,
+    struct loft_error *err)
 {
 	const char *v = loft_attr(rec, pc->label_key);
 	char num[24];
@@ -610,8 +708,33 @@ add_label(struct pic *pc, const struct loft_record *rec,
 	l = &pc->lb[pc->nlb++];
 	l->rec = pc->nrec;
 	l->numbered = v == num;
-	l->at[0] = l->anchor[0] = e->right[0];
-	l->at[1] = l->anchor[1] = e->right[1];
+	l->centred = centre != NULL;
+	l->at[0] = l->anchor[0] = centre ? centre[0] : e->right[0];
+	l->at[1] = l->anchor[1] = centre ? centre[1] : e->right[1];
+	l->anc[0][0] = l->anchor[0];
+	l->anc[0][1] = l->anchor[1];
+	l->rec_anchors = 1;
+	if (!l->centred && nst < pc->nst)
+		label_anchors(pc, &pc->st[nst], l);
+	return 0;
+}
+
+/*
+ * Rows of sample -k, -d, -s or -t of a plane curve have 3 or more
+ * numbers, and drawn with plane curves they would be taken for 3-D
+ * points without a word: a point record (points true) of more
+ * coordinates than the picture's first good record is refused.  Plane
+ * curves and surfaces may still be drawn with space ones (at z = 0).
+ */
+static int
+check_dim(struct pic *pc, int dim, int points, struct loft_error *err)
+{
+	if (pc->dim == 0)
+		pc->dim = dim;
+	else if (points && dim > pc->dim)
+		return loft_fail(err, LOFT_EINPUT, -1, "%d coordinates, where "
+		    "the first record has %d: rows of sample -k, -d, -s or -t? "
+		    "plot draws coordinates alone", dim, pc->dim);
 	return 0;
 }
 
@@ -630,30 +753,42 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	struct loft_curve c;
 	struct loft_surface sf;
 	struct extent e;
-	int rc;
+	double mid[LOFT_MAXDIM], centre[2];
+	int rc, surface = 0, dim = pc->dim;
 
 	box_empty(&e.box);
 	pc->kmax = 0;           /* this record's own, for pc->rec */
-	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
-		rc = draw_points(pc, rec, &e, err);
-	else if (loft_is_surface(rec)) {
-		if ((rc = loft_surface_from_record(rec, &sf, err)) == 0)
+	if (rec->type == NULL || strcmp(rec->type, "points") == 0) {
+		if ((rc = draw_points(pc, rec, &e, err)) == 0)
+			rc = check_dim(pc, rec->ncols, 1, err);
+	} else if (loft_is_surface(rec)) {
+		if ((rc = loft_surface_from_record(rec, &sf, err)) == 0 &&
+		    (rc = check_dim(pc, sf.dim, 0, err)) == 0)
 			rc = draw_surface(pc, &sf, &e, err);
+		/* a patch's label (its id) at its middle, f(1/2, 1/2): a
+		 * corner is shared by up to four patches */
+		if (rc == 0) {
+			loft_surface_eval(&sf, 0.5, 0.5, mid, NULL, NULL);
+			project(pc->view, mid, sf.dim, centre);
+			surface = 1;
+		}
 		if (rc == 0 && pc->control &&
 		    strcmp(sf.type, "bezier-surface") == 0)
 			rc = add_control(pc, rec, (size_t)sf.m + 1,
 			    (size_t)sf.n + 1, &e, err);
-	} else if ((rc = loft_curve_from_record(rec, &c, err)) == 0) {
+	} else if ((rc = loft_curve_from_record(rec, &c, err)) == 0 &&
+	    (rc = check_dim(pc, c.dim, 0, err)) == 0) {
 		rc = draw_curve(pc, &c, &e, err);
 		if (rc == 0 && pc->control && strcmp(c.type, "bezier") == 0)
 			rc = add_control(pc, rec, 1, rec->nrows, &e, err);
 	}
 	if (rc == 0 && pc->label_key != NULL)
-		rc = add_label(pc, rec, &e, err);
+		rc = add_label(pc, rec, &e, surface ? centre : NULL, nst, err);
 	if (rc == 0 && grow((void **)&pc->rec, &pc->reccap,
 	    (size_t)pc->nrec + 1, sizeof *pc->rec) != 0)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc != 0) {
+		pc->dim = dim;
 		pc->npt = npt;
 		pc->nst = nst;
 		while (pc->nlb > nlb)
@@ -683,6 +818,7 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: -K reads "
 		    "knots (point records)", rec->type);
 	if (check_points(rec, err) != 0 ||
+	    check_dim(pc, rec->ncols, 1, err) != 0 ||
 	    add_marks(pc, rec, K_KNOTS, -1, &e, err) != 0) {
 		pc->npt = npt;
 		pc->nst = nst;
@@ -761,7 +897,10 @@ tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
     double scale, double *tip)
 {
 	const double *base = pc->pt + 2 * (s->first + 2 * j), *kn = base + 2;
+	double len = scale * hypot(kn[0], kn[1]);
 
+	if (len > pc->comb_cap)         /* cut to the cap */
+		scale *= pc->comb_cap / len;
 	tip[0] = base[0] - scale * kn[0];
 	tip[1] = base[1] - scale * kn[1];
 }
@@ -809,6 +948,20 @@ same_point(const double *a, const double *b)
 	return a[0] == b[0] && a[1] == b[1];
 }
 
+/*
+ * A record's curve width in pixels: CURVE_PX for the last record, and
+ * up to CURVE_PX more for the first, so that where two records' curves
+ * run together (a fitted segment and the arc it approximates) the later,
+ * drawn on top and thinner, leaves the earlier showing at both sides.
+ */
+static double
+curve_px(const struct pic *pc, int rec)
+{
+	if (pc->nrec < 2 || rec < 0)
+		return CURVE_PX;
+	return CURVE_PX * (1 + (double)(pc->nrec - 1 - rec) / (pc->nrec - 1));
+}
+
 static void
 draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
@@ -818,7 +971,7 @@ draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
 		path_open(d, s->kind == K_MESH ? "mesh" : "control-polygon",
 		    s->rec, THIN_PX);
 	else
-		path_open(d, "curve", s->rec, 0);
+		path_open(d, "curve", s->rec, curve_px(pc, s->rec));
 	out(d, " d=\"");
 	if (s->kind == K_BEZIER) {
 		for (size_t i = 0; i < s->n / 4; i++, p += 8) {
@@ -844,11 +997,11 @@ draw_handles(struct doc *d, const struct pic *pc, const struct stroke *s)
 {
 	const double *p = pc->pt + 2 * s->first;
 
-	path_open(d, "tangents", s->rec, THIN_PX);
+	path_open(d, "tangents", s->rec, TANGENT_PX);
 	out(d, " stroke-dasharray=\"");
-	num(d, 3 * d->px);
+	num(d, 5 * d->px);
 	out(d, " ");
-	num(d, 2 * d->px);
+	num(d, 2.5 * d->px);
 	out(d, "\" d=\"");
 	for (size_t j = 0; j < s->n; j += 2) {
 		point(d, j ? " M" : "M", p + 2 * j);
@@ -911,13 +1064,13 @@ text(struct doc *d, const char *s)
 static void
 label_box(const struct label *l, double font, struct box *b)
 {
-	double q[2];
+	double q[2], w = CHAR_EM * font * (double)strlen(l->text);
 
 	box_empty(b);
-	q[0] = l->at[0] + font / 2;
+	q[0] = l->centred ? l->at[0] - w / 2 : l->at[0] + font / 2;
 	q[1] = l->at[1] - font / 2;
 	box_add(b, q);
-	q[0] += CHAR_EM * font * strlen(l->text);
+	q[0] += w;
 	q[1] += font;
 	box_add(b, q);
 }
@@ -1005,56 +1158,415 @@ grid_first(const struct grid *g, const struct box *b, const struct box *placed)
 	return first;
 }
 
+/* What the labels must keep clear of: the drawn lines, as segments (a
+ * marker is a segment of no length), in a grid like the labels'. */
+struct obstacles {
+	double (*seg)[4];
+	int *rec;               /* each segment's record */
+	size_t n, cap, reccap;
+	struct grid g;
+};
+
+static int
+add_segment(struct obstacles *o, const double *a, const double *b, int rec)
+{
+	if (grow((void **)&o->seg, &o->cap, o->n + 1, sizeof *o->seg) != 0 ||
+	    grow((void **)&o->rec, &o->reccap, o->n + 1, sizeof *o->rec) != 0)
+		return -1;
+	o->rec[o->n] = rec;
+	o->seg[o->n][0] = a[0];
+	o->seg[o->n][1] = a[1];
+	o->seg[o->n][2] = b[0];
+	o->seg[o->n][3] = b[1];
+	o->n++;
+	return 0;
+}
+
 /*
- * Place the labels: each at its record's rightmost point, moved down a
- * line at a time while it overlaps a label placed before it, below the
- * first (in input order) it overlaps (records that share their rightmost
- * point get their labels one under another).  Adds their boxes to frame.
+ * The segments of every stroke drawn, but the comb's teeth (a comb's
+ * envelope is a line to keep clear of; its teeth fill an area a label
+ * may sit on).  A cubic piece is cut into BEZIER_CHORDS chords: its
+ * distance from them is far below the gap a label keeps.
+ */
+#define BEZIER_CHORDS 16
+static int
+collect_segments(const struct pic *pc, double scale, struct obstacles *o)
+{
+	for (size_t i = 0; i < pc->nst; i++) {
+		const struct stroke *s = &pc->st[i];
+		const double *p = pc->pt + 2 * s->first;
+		double a[2], b[2];
+		int rc = 0;
+
+		switch (s->kind) {
+		case K_COMB:
+			for (size_t j = 0; rc == 0 && j + 1 < s->n / 2; j++) {
+				tooth_tip(pc, s, j, scale, a);
+				tooth_tip(pc, s, j + 1, scale, b);
+				rc = add_segment(o, a, b, s->rec);
+			}
+			break;
+		case K_BEZIER:
+			for (size_t j = 0; rc == 0 && j < s->n / 4; j++)
+				for (int k = 0; rc == 0 && k < BEZIER_CHORDS;
+				    k++) {
+					bezier_at(p + 8 * j,
+					    (double)k / BEZIER_CHORDS, a);
+					bezier_at(p + 8 * j,
+					    (double)(k + 1) / BEZIER_CHORDS, b);
+					rc = add_segment(o, a, b, s->rec);
+				}
+			break;
+		case K_HANDLE:
+			for (size_t j = 0; rc == 0 && j + 1 < s->n; j += 2)
+				rc = add_segment(o, p + 2 * j, p + 2 * j + 2, s->rec);
+			break;
+		case K_MESH:
+		case K_LINE:
+		case K_NET:
+			for (size_t j = 0; rc == 0 && j + 1 < s->n; j++)
+				rc = add_segment(o, p + 2 * j, p + 2 * j + 2, s->rec);
+			if (rc == 0 && s->closed && s->n > 2)
+				rc = add_segment(o, p + 2 * (s->n - 1), p, s->rec);
+			break;
+		default:        /* markers */
+			for (size_t j = 0; rc == 0 && j < s->n; j++)
+				rc = add_segment(o, p + 2 * j, p + 2 * j, s->rec);
+		}
+		if (rc != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* A segment sg is looked at in n pieces no longer than a cell of g
+ * (cell_pieces), each by its box (piece_box): the cells of those boxes
+ * are the cells it passes through. */
+static size_t
+cell_pieces(const struct grid *g, const double *sg)
+{
+	double len = fmax(fabs(sg[2] - sg[0]) / g->cw,
+	    fabs(sg[3] - sg[1]) / g->ch);
+
+	return len < 1 ? 1 : (size_t)ceil(len);
+}
+
+static void
+piece_box(const double *sg, size_t i, size_t n, struct box *b)
+{
+	double q[2];
+
+	box_empty(b);
+	for (int e = 0; e < 2; e++) {
+		double t = (double)(i + e) / (double)n;
+
+		q[0] = sg[0] + t * (sg[2] - sg[0]);
+		q[1] = sg[1] + t * (sg[3] - sg[1]);
+		box_add(b, q);
+	}
+}
+
+/* File segment k in every cell it passes through. */
+static int
+grid_add_segment(struct grid *g, const double *sg, size_t k)
+{
+	size_t n = cell_pieces(g, sg);
+	struct box b;
+
+	for (size_t i = 0; i < n; i++) {
+		piece_box(sg, i, n, &b);
+		if (grid_add(g, &b, k) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* Whether the segment sg meets the box b (Liang and Barsky's clipping:
+ * the part of the segment inside each slab, intersected). */
+static int
+segment_meets(const double *sg, const struct box *b)
+{
+	double t0 = 0, t1 = 1;
+
+	for (int k = 0; k < 2; k++) {
+		double a = sg[k], d = sg[2 + k] - a, lo, hi;
+
+		if (d == 0) {
+			if (a < b->lo[k] || a > b->hi[k])
+				return 0;
+			continue;
+		}
+		lo = (b->lo[k] - a) / d;
+		hi = (b->hi[k] - a) / d;
+		if (lo > hi) {
+			double t = lo;
+
+			lo = hi;
+			hi = t;
+		}
+		t0 = fmax(t0, lo);
+		t1 = fmin(t1, hi);
+		if (t0 > t1)
+			return 0;
+	}
+	return 1;
+}
+
+/* Whether a drawn segment of record rec (own) or of another record
+ * (!own) meets b; any segment: rec = ANYREC, own = 0. */
+#define ANYREC (-2)
+static int
+grid_hits(const struct obstacles *o, const struct box *b, int rec, int own)
+{
+	long x0, x1, y0, y1;
+
+	cells(&o->g, b, 0, &x0, &x1);
+	cells(&o->g, b, 1, &y0, &y1);
+	for (long cx = x0; cx <= x1; cx++)
+		for (long cy = y0; cy <= y1; cy++)
+			for (size_t k = o->g.head[bucket(&o->g, cx, cy)];
+			    k != (size_t)-1; k = o->g.e[k].next)
+				if (o->g.e[k].cx == cx && o->g.e[k].cy == cy &&
+				    (o->rec[o->g.e[k].lb] == rec) == own &&
+				    segment_meets(o->seg[o->g.e[k].lb], b))
+					return 1;
+	return 0;
+}
+
+/* Where a label may move from a point of its curve, in half font
+ * heights across and up, nearest first: NEAR_REACH of them each way (a
+ * line and a half), near enough to read as that curve's label. */
+#define NEAR_REACH 3
+#define NSPOT ((2 * NEAR_REACH + 1) * (2 * NEAR_REACH + 1))
+/* A label tied by a leader line goes out to the right of its rightmost
+ * point, up to LEADER_REACH half heights (24 lines: past a graded set's
+ * other outlines) and LEADER_RISE up or down. */
+#define LEADER_REACH 48
+#define LEADER_RISE 6
+#define NLEADSPOT ((LEADER_REACH + 1) * (2 * LEADER_RISE + 1))
+
+static int
+nearer(const void *pa, const void *pb)
+{
+	const int *a = pa, *b = pb;
+	int da = a[0] * a[0] + a[1] * a[1], db = b[0] * b[0] + b[1] * b[1];
+
+	if (da != db)
+		return da < db ? -1 : 1;
+	if (a[1] != b[1])       /* below before above */
+		return a[1] < b[1] ? -1 : 1;
+	return a[0] > b[0] ? -1 : a[0] < b[0];  /* right before left */
+}
+
+static int
+grid_init(struct grid *g, double cw, double ch, const struct box *frame,
+    size_t n)
+{
+	g->cw = cw;
+	g->ch = ch;
+	g->x0 = frame->lo[0];
+	g->y0 = frame->lo[1];
+	for (g->nbucket = 64; g->nbucket < 2 * n; g->nbucket *= 2)
+		;
+	if ((g->head = malloc(g->nbucket * sizeof *g->head)) == NULL)
+		return -1;
+	for (size_t h = 0; h < g->nbucket; h++)
+		g->head[h] = (size_t)-1;
+	return 0;
+}
+
+/* The leader of label l, in box b: from its point to the nearest point
+ * of b. */
+static void
+leader(const struct label *l, const struct box *b, double *sg)
+{
+	for (int k = 0; k < 2; k++) {
+		sg[k] = l->anchor[k];
+		sg[2 + k] = fmin(fmax(l->anchor[k], b->lo[k]), b->hi[k]);
+	}
+}
+
+/* Whether the segment sg crosses a placed label's box, looked for in
+ * the cells it passes through. */
+static int
+crosses_label(const struct grid *g, const double *sg, const struct box *placed)
+{
+	size_t n = cell_pieces(g, sg);
+	long x0, x1, y0, y1;
+	struct box b;
+
+	for (size_t i = 0; i < n; i++) {
+		piece_box(sg, i, n, &b);
+		cells(g, &b, 0, &x0, &x1);
+		cells(g, &b, 1, &y0, &y1);
+		for (long cx = x0; cx <= x1; cx++)
+			for (long cy = y0; cy <= y1; cy++)
+				for (size_t k = g->head[bucket(g, cx, cy)];
+				    k != (size_t)-1; k = g->e[k].next)
+					if (g->e[k].cx == cx && g->e[k].cy == cy &&
+					    segment_meets(sg, &placed[g->e[k].lb]))
+						return 1;
+	}
+	return 0;
+}
+
+static void
+widen(struct box *b, const struct box *a, double by)
+{
+	*b = *a;
+	b->lo[0] -= by;
+	b->lo[1] -= by;
+	b->hi[0] += by;
+	b->hi[1] += by;
+}
+
+/*
+ * Try to put label l by one of its first nanc anchors, at a spot of
+ * spot[0..nspot) (nearest first): its box, widened by gap, must meet no
+ * drawn line and no label placed before it; with strict 1, its own
+ * record's line must come within near of it and no other record's
+ * within far (as near), so that it reads as its own record's; with
+ * strict 2, no line at all within far, for a label in the open, tied
+ * to its curve by a leader.  1: placed (box in *b).
  */
 static int
-place_labels(struct pic *pc, double font, struct box *frame)
+try_spots(struct label *l, int nanc,
+    int (*spot)[2], int nspot, double font, int strict,
+    const struct grid *g, const struct box *placed,
+    const struct obstacles *o, struct box *b)
+{
+	/* a gap of 2 pixels; the own line within a line, others not */
+	double gap = 0.15 * font, near = font, far = near, sg[4];
+	struct box w;
+
+	for (int a = 0; a < nanc; a++)
+		for (int k = 0; k < nspot; k++) {
+			l->at[0] = l->anc[a][0] + spot[k][0] * font / 2;
+			l->at[1] = l->anc[a][1] + spot[k][1] * font / 2;
+			label_box(l, font, b);
+			if (grid_first(g, b, placed) != (size_t)-1)
+				continue;
+			widen(&w, b, gap);
+			if (grid_hits(o, &w, ANYREC, 0))
+				continue;
+			if (strict == 0)
+				return 1;
+			widen(&w, b, far);
+			if (grid_hits(o, &w, strict == 1 ? l->rec : ANYREC, 0))
+				continue;
+			/* a leader must not cross an earlier label */
+			if (strict == 2 && (leader(l, b, sg),
+			    crosses_label(g, sg, placed)))
+				continue;
+			widen(&w, b, near);
+			if (strict == 1 && !grid_hits(o, &w, l->rec, 1))
+				continue;
+			return 1;
+		}
+	return 0;
+}
+
+/*
+ * Place the labels, each clear of every drawn line and of the labels
+ * placed before it, trying in turn: (1) spots within NEAR_REACH half
+ * lines of points along its record's curve (the rightmost first) that
+ * are within a line of that curve and of no other record's; (2) spots
+ * out to the right of its rightmost point a line clear of every line,
+ * tied to it by a leader line that crosses no earlier label (and that
+ * later labels keep clear of); (3) the spots of (1) without their
+ * condition; (4) where all are taken, its rightmost point, moved down a
+ * line at a time while it overlaps a label placed before it, below the
+ * first (in input order) it overlaps.  A patch's label stays at the
+ * patch's middle (over its own lines), moved as in (4) only.  Each look
+ * is at a few cells of two grids, the labels' and the lines', so the
+ * time grows with the number of labels and segments, not with their
+ * product.  Adds the labels' boxes to frame.
+ */
+static int
+place_labels(struct pic *pc, double font, double scale, struct box *frame)
 {
 	struct box *placed = malloc(pc->nlb * sizeof *placed);
 	struct grid g = { 0 };
-	double width = 0;
+	struct obstacles o = { 0 };
+	double width = 0, cw;
+	static int spot[NSPOT][2], lead[NLEADSPOT][2];
+	int nspot = 0, nlead = 0;
 	size_t n = 0;
-	int rc = 0;
+	int rc = -1;
 
 	for (size_t i = 0; i < pc->nlb; i++) {
 		struct label *l = &pc->lb[i];
 
 		l->at[0] = l->anchor[0];
 		l->at[1] = l->anchor[1];
+		l->leader = 0;
 		width += CHAR_EM * font * (double)strlen(l->text);
 		n++;
 	}
-	g.ch = font;
-	g.cw = fmax(font, width / (double)(n > 0 ? n : 1));
-	g.x0 = frame->lo[0];
-	g.y0 = frame->lo[1];
-	for (g.nbucket = 64; g.nbucket < 2 * n; g.nbucket *= 2)
-		;
-	g.head = malloc(g.nbucket * sizeof *g.head);
-	if (placed == NULL || g.head == NULL || !(g.cw > 0 && g.ch > 0)) {
-		rc = placed == NULL || g.head == NULL ? -1 : 0;
+	cw = fmax(font, width / (double)(n > 0 ? n : 1));
+	if (!(cw > 0 && font > 0) || !isfinite(cw)) {
+		rc = 0;
 		goto done;
 	}
-	for (size_t h = 0; h < g.nbucket; h++)
-		g.head[h] = (size_t)-1;
+	if (placed == NULL || grid_init(&g, cw, font, frame, n) != 0 ||
+	    collect_segments(pc, scale, &o) != 0 ||
+	    grid_init(&o.g, font, font, frame, o.n) != 0)
+		goto done;
+	for (size_t k = 0; k < o.n; k++)
+		if (grid_add_segment(&o.g, o.seg[k], k) != 0)
+			goto done;
+	for (int i = -NEAR_REACH; i <= NEAR_REACH; i++)
+		for (int j = -NEAR_REACH; j <= NEAR_REACH; j++) {
+			spot[nspot][0] = i;
+			spot[nspot++][1] = j;
+		}
+	qsort(spot, NSPOT, sizeof spot[0], nearer);
+	for (int i = 0; i <= LEADER_REACH; i++)
+		for (int j = -LEADER_RISE; j <= LEADER_RISE; j++) {
+			lead[nlead][0] = i;
+			lead[nlead++][1] = j;
+		}
+	qsort(lead, NLEADSPOT, sizeof lead[0], nearer);
+	rc = 0;
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
+		struct label *l = &pc->lb[i];
 		size_t j;
 
-		label_box(&pc->lb[i], font, &placed[i]);
-		while ((j = grid_first(&g, &placed[i], placed)) != (size_t)-1) {
-			pc->lb[i].at[1] = placed[j].lo[1] - 0.6 * font;
-			label_box(&pc->lb[i], font, &placed[i]);
+		if (l->centred || !(try_spots(l, l->rec_anchors, spot, NSPOT,
+		    font, 1, &g, placed, &o, &placed[i]) ||
+		    (l->leader = try_spots(l, 1, lead, NLEADSPOT, font, 2, &g,
+		    placed, &o, &placed[i])) ||
+		    try_spots(l, l->rec_anchors, spot, NSPOT, font, 0, &g,
+		    placed, &o, &placed[i]))) {
+			l->at[0] = l->anchor[0];
+			l->at[1] = l->anchor[1];
+			label_box(l, font, &placed[i]);
+			while ((j = grid_first(&g, &placed[i], placed)) !=
+			    (size_t)-1) {
+				l->at[1] = placed[j].lo[1] - 0.6 * font;
+				label_box(l, font, &placed[i]);
+			}
 		}
 		box_join(frame, &placed[i]);
 		rc = grid_add(&g, &placed[i], i);
+		/* later labels keep clear of its leader too */
+		if (rc == 0 && l->leader) {
+			double sg[4];
+
+			leader(l, &placed[i], sg);
+			rc = add_segment(&o, sg, sg + 2, l->rec);
+			if (rc == 0)
+				rc = grid_add_segment(&o.g, o.seg[o.n - 1],
+				    o.n - 1);
+		}
 	}
 done:
 	free(g.head);
 	free(g.e);
+	free(o.g.head);
+	free(o.g.e);
+	free(o.seg);
+	free(o.rec);
 	free(placed);
 	return rc;
 }
@@ -1074,6 +1586,7 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
 	if (scale == 0 && kmax > 0)
 		scale = COMB_LENGTH * big / kmax;
+	pc->comb_cap = COMB_CAP * big;
 	for (size_t i = 0; i < pc->nst; i++)
 		for (size_t j = 0; pc->st[i].kind == K_COMB &&
 		    j < pc->st[i].n / 2; j++) {
@@ -1092,7 +1605,7 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	margin = MARGIN * big;
 	if (pc->nlb > 0) {
 		font = FONT_PX * (big + 2 * margin) / PICTURE_PX;
-		if (place_labels(pc, font, &b) != 0)
+		if (place_labels(pc, font, scale, &b) != 0)
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	}
 	vb[0] = b.lo[0] - margin;
@@ -1123,11 +1636,26 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	    "stroke-linejoin=\"round\" stroke-width=\"");
 	num(d, CURVE_PX * d->px);
 	out(d, "\">\n");
+	if (pc->background != NULL) {
+		out(d, "<rect class=\"background\" fill=\"%s\" stroke=\"none\" "
+		    "x=\"", pc->background);
+		num(d, vb[0]);
+		out(d, "\" y=\"");
+		num(d, vb[1]);
+		out(d, "\" width=\"");
+		num(d, vb[2]);
+		out(d, "\" height=\"");
+		num(d, vb[3]);
+		out(d, "\"/>\n");
+	}
+	/* curves and polylines in one pass, in the order of their records,
+	 * so that a later record lies on an earlier one, drawn thinner */
 	for (int kind = 0; kind < NKIND; kind++)
 		for (size_t i = 0; i < pc->nst; i++) {
 			const struct stroke *s = &pc->st[i];
+			int k = s->kind == K_BEZIER ? K_LINE : (int)s->kind;
 
-			if ((int)s->kind != kind || s->n == 0)
+			if (k != kind || s->n == 0)
 				continue;
 			switch (s->kind) {
 			case K_COMB: draw_comb(d, pc, s, scale); break;
@@ -1139,18 +1667,44 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 			default: draw_marks(d, pc, s); break;
 			}
 		}
+	for (size_t i = 0; i < pc->nlb; i++) {
+		const struct label *l = &pc->lb[i];
+		struct box lb;
+		double sg[4];
+
+		if (!l->leader)
+			continue;
+		label_box(l, font, &lb);
+		leader(l, &lb, sg);
+		path_open(d, "leader", l->rec, THIN_PX);
+		point(d, " d=\"M", sg);
+		point(d, " L", sg + 2);
+		out(d, "\"/>\n");
+	}
 	out(d, "</g>\n");
 	if (pc->nlb > 0) {
 		/* font sizes of a small fraction of a unit do not render
 		 * everywhere: the text is set at FONT_PX and scaled */
-		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\">\n",
-		    FONT_PX);
+		/* a halo of the background's colour under each letter keeps
+		 * a label over a line (a patch's id) legible */
+		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\" "
+		    "stroke=\"%s\" stroke-width=\"3\" stroke-linejoin=\"round\" "
+		    "paint-order=\"stroke\">\n", FONT_PX,
+		    pc->background ? pc->background : "#fff");
 		for (size_t i = 0; i < pc->nlb; i++) {
-			double q[2] = { pc->lb[i].at[0] + font / 2,
-			    pc->lb[i].at[1] - 0.35 * font };
+			const struct label *l = &pc->lb[i];
+			double q[2] = { l->at[0] + font / 2,
+			    l->at[1] - 0.35 * font };
 
-			out(d, "<text class=\"label\" fill=\"%s\" "
-			    "transform=\"translate(", colour(pc->lb[i].rec));
+			/* a patch's id: centred on its point, exactly */
+			if (l->centred) {
+				q[0] = l->at[0];
+				q[1] = l->at[1];
+			}
+			out(d, "<text class=\"label\" fill=\"%s\"%s "
+			    "transform=\"translate(", colour(l->rec),
+			    l->centred ? " text-anchor=\"middle\" dy=\"0.35em\"" :
+			    "");
 			point(d, "", q);
 			out(d, ") scale(%.6g)\">", font / FONT_PX);
 			text(d, pc->lb[i].text);
@@ -1234,6 +1788,20 @@ take_out_farthest(struct pic *pc)
 	}
 }
 
+/* -B: a colour name of letters, or # and 3 or 6 hexadecimal digits:
+ * nothing that could end the attribute it is written into. */
+static int
+colour_ok(const char *s)
+{
+	size_t n = strlen(s);
+
+	if (s[0] == '#')
+		return (n == 4 || n == 7) && strspn(s + 1,
+		    "0123456789abcdefABCDEF") == n - 1;
+	return n > 0 && n < 40 && strspn(s, "abcdefghijklmnopqrstuvwxyz"
+	    "ABCDEFGHIJKLMNOPQRSTUVWXYZ") == n;
+}
+
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
@@ -1247,9 +1815,15 @@ main(int argc, char *argv[])
 	char *knots = NULL;
 	int c, rc = 0, word, status;
 
-	while ((c = getopt(argc, argv, "bcmtC:g:K:l:n:v:h")) != -1) {
+	while ((c = getopt(argc, argv, "bcmtB:C:g:K:l:n:v:h")) != -1) {
 		switch (c) {
 		case 'b': pc.control = 1; break;
+		case 'B': pc.background = optarg;
+		    if (!colour_ok(optarg))
+			    rc = loft_fail(&err, LOFT_EINPUT, -1, "'%s': a colour "
+				"is a name (white) or #rgb or #rrggbb",
+				optarg);
+		    break;
 		case 'c': pc.comb = 1; break;
 		case 'm': pc.marks = 1; break;
 		case 't': pc.handles = 1; break;

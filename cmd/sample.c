@@ -16,6 +16,7 @@ struct opts {
 	long per;               /* points per segment */
 	int param, tangent, curvature;
 	int obj;                /* -f obj */
+	int attrs;              /* -a: each record's header as a comment */
 	long nvert;             /* OBJ vertices written so far */
 	double spacing;         /* -s: arc length between points, or 0 */
 	double tol;             /* -t: chordal tolerance, or 0 */
@@ -36,7 +37,7 @@ struct opts {
 
 static const char usage_text[] =
     "usage: sample [-n per-segment | -s spacing | -t tolerance] "
-    "[-p digits] [-u] [-d] [-k]\n"
+    "[-p digits] [-a] [-u] [-d] [-k]\n"
     "              [-f points|obj] [file ...]\n";
 
 static void
@@ -44,6 +45,26 @@ usage(int status)
 {
 	fputs(usage_text, status ? stderr : stdout);
 	exit(status);
+}
+
+/*
+ * -a: the record's header, type and attributes, as a comment line
+ * "# TYPE key=value ..." before what it gives: the rows of a point record
+ * have no header, and so a graded set's size= would be lost.  loft's
+ * reader, GNU graph, gnuplot and OBJ readers all skip it.
+ */
+static void
+put_header_comment(struct loft_run *run, const struct loft_record *rec)
+{
+	static const char *const none[] = { NULL };
+	const struct opts *o = run->ctx;
+
+	if (!o->attrs)
+		return;
+	loft_put_type(&run->w, "# ");
+	loft_put_type(&run->w, rec->type);
+	loft_put_attrs_except(&run->w, rec, none);
+	loft_end_line(&run->w);
 }
 
 /* OBJ: "o NAME", the record's type and its id= if it has one. */
@@ -197,6 +218,7 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 	if ((o->spacing > 0 || o->tol > 0) &&
 	    (rc = chosen_params(o, &c, &n, err)) != 0)
 		return rc;
+	put_header_comment(run, rec);
 	if (o->obj)
 		put_object(run, rec);
 	if (n > 0) {
@@ -331,6 +353,7 @@ sample_record(struct loft_run *run, const struct loft_record *rec,
 	if (o->tangent || o->curvature)
 		return loft_fail(err, LOFT_EINPUT, -1, "-d and -k need a curve; "
 		    "a %s record has no tangent or curvature", rec->type);
+	put_header_comment(run, rec);
 	return o->obj ? mesh(run, rec, &s, err) : wireframe(run, &s, err);
 }
 
@@ -351,14 +374,14 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const formats[] = { "points", "obj", NULL };
-	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, NULL, 0, MAX_POINTS };
+	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, 0, NULL, 0, MAX_POINTS };
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
 	long digits;
 	int c, rc, ways = 0;
 
-	while ((c = getopt(argc, argv, "n:s:t:p:udkf:h")) != -1) {
+	while ((c = getopt(argc, argv, "n:s:t:p:audkf:h")) != -1) {
 		switch (c) {
 		case 'n':
 			if (loft_parse_int(optarg, 1, 1000000, &o.per, &err))
@@ -380,6 +403,7 @@ main(int argc, char *argv[])
 				goto bad;
 			run.w.digits = digits;
 			break;
+		case 'a': o.attrs = 1; break;
 		case 'u': o.param = 1; break;
 		case 'd': o.tangent = 1; break;
 		case 'k': o.curvature = 1; break;

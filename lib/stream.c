@@ -212,6 +212,11 @@ bad_line(struct loft_reader *rd, struct loft_error *err, const char *fmt,
 	return LOFT_EINPUT;
 }
 
+/* The hint for a line with a comma where a number or a type should be:
+ * CSV, most likely, from a spreadsheet or a CAD export. */
+#define CSV_HINT(what) what "? loft streams are whitespace-separated; " \
+	"fromcad reads CSV"
+
 /* Parse the header in rd->line into rec. */
 static int
 parse_header(struct loft_reader *rd, struct loft_record *rec,
@@ -227,8 +232,9 @@ parse_header(struct loft_reader *rd, struct loft_record *rec,
 	t = rec->text;
 	wl = next_word(t, len, &pos, &w);
 	if (!is_name(w, wl))
-		return bad_line(rd, err, "bad record type '%.*s'", w,
-		    (int)(wl > 40 ? 40 : wl));
+		return bad_line(rd, err, memchr(w, ',', wl) != NULL ?
+		    "bad record type '%.*s': " CSV_HINT("a CSV header") :
+		    "bad record type '%.*s'", w, (int)(wl > 40 ? 40 : wl));
 	rec->type = (char *)w;
 	rec->type[wl] = '\0';   /* the word's end was white space or the end */
 	pos = pos < len ? pos + 1 : pos;
@@ -269,14 +275,19 @@ parse_row(struct loft_reader *rd, struct loft_record *rec,
     struct loft_error *err)
 {
 	size_t len = rd->linelen, pos = 0, wl, base = rec->nrows * rec->ncols;
-	int k = 0;
+	int k = 0, rc;
 	const char *w;
 
 	while ((wl = next_word(rd->line, len, &pos, &w)) > 0) {
 		if (loft__grow((void **)&rec->num, &rec->numcap, base + k + 1,
 		    sizeof *rec->num) != 0)
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-		if (loft_parse_num(w, wl, &rec->num[base + k], err) != 0) {
+		if ((rc = loft_parse_num(w, wl, &rec->num[base + k], err)) !=
+		    0) {
+			if (rc == LOFT_EINPUT && memchr(w, ',', wl) != NULL)
+				loft_fail(err, LOFT_EINPUT, -1, "'%.*s' is not a "
+				    "number: " CSV_HINT("comma-separated"),
+				    (int)(wl > 40 ? 40 : wl), w);
 			err->line = rd->lineno;
 			return LOFT_EINPUT;
 		}

@@ -54,6 +54,7 @@ valid() {
 	[ -z "$(tail -c 1 "$1")" ] || { echo "no final newline"; return 1; }
 	awk '
 	function bad(what) { print "line " NR ": " what; failed = 1; exit 1 }
+	/^#/ { next }   # a comment line, as sample -a writes
 	/^$/ { if (!inrec || !rows) bad("blank line where no record"); inrec = 0; next }
 	{
 		if (!inrec) { inrec = 1; rows = 0; cols = -1; if ($1 ~ /^[A-Za-z]/) next }
@@ -317,6 +318,11 @@ stream_cases() {
 		mutate "$tok"
 		bad "number '$tok'" "$n1" "is not a number"
 	done
+	# issue 18: a comma where a number or a type is wanted gets a hint
+	printf '1,2\n3,4\n' >"$T/case"
+	bad "comma-separated rows" 1 "'1,2' is not a number: comma-separated? loft streams are whitespace-separated; fromcad reads CSV"
+	printf 'x,y\n1,2\n' >"$T/case"
+	bad "a CSV header line" 1 "bad record type 'x,y': a CSV header? loft streams are whitespace-separated; fromcad reads CSV"
 	for tok in 1e400 -1e400 1e99999999999999999999 \
 	    179769313486231580793728971405303415079934132710037826936173778980444968292764750946649017977587207096330286416692887910946555547851940402630657488671505820681908902000708383676273854845817711531764475730270069855571366959622842914819860834936475292719074168444365510704342711559699508093042880177904174497792; do
 		mutate "$tok"
@@ -949,6 +955,7 @@ sample_good() {
 }
 
 sample_cases() {
+	opts -a
 	opts
 	# issue 12: sample -d took its own plain norm, so the unit tangent of
 	# a curve of size 1e160 was 0 0 (the sum of squares overflowed), and
@@ -1716,7 +1723,8 @@ plot_run() { "$B/plot" "$@"; }
 plot_good() {
 	case $1 in
 	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
-	2) printf 'points id=2\n0 1 2\n1 1 1\n2 1 0\n' ;;
+	# plane, as record 1: plot refuses wider points after it (sample -k)
+	2) printf 'points id=2\n0 1\n1 1\n2 1\n' ;;
 	esac
 }
 

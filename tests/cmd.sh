@@ -40,6 +40,25 @@ out_is "0 0
 0.5 0.5
 1 0
 "
+# -a: the header, as written above, as a comment before the same rows;
+# a surface's before its lines.  loft's reader skips it: plot draws the
+# same picture with and without it.
+run "$B/sample -a -n 2 $T/seg.cubic"
+out_is "# cubic closed=0
+0 0
+0.5 0.5
+1 0
+"
+printf 'cubic closed=0 size=+1 id=a=b\n0 0 1 0 0 2 0 -2\n' >"$T/attr.cubic"
+run "$B/sample -a -n 1 $T/attr.cubic"
+[ "$(head -1 "$T/out")" = "# cubic closed=0 size=+1 id=a=b" ] && ok ||
+    no "sample -a: $(head -1 "$T/out")"
+$B/sample -n 4 $T/seg.cubic | $B/plot >"$T/plain.svg"
+$B/sample -a -n 4 $T/seg.cubic | $B/plot >"$T/attr.svg"
+cmp -s "$T/plain.svg" "$T/attr.svg" && ok || no "sample -a: plot reads it otherwise"
+run "$B/patchnew -i 7 -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/sample -a -n 1"
+[ "$(grep -n '^#' "$T/out")" = "1:# patch id=7" ] && ok ||
+    no "sample -a of a patch: $(grep -n '#' "$T/out")"
 # With R2 = 3(P_B-P_A) - 2P'_A - P'_B = (3,-2), R3 = (-2,0):
 # P' = (0,2), (1.5,0), (0,-2) and P'' = (6,-4), (0,-4), (-6,-4) at
 # u = 0, 1/2, 1, so the curvature (x'y''-y'x'')/|P'|^3 is -12/8, -6/3.375,
