@@ -192,6 +192,8 @@ main(int argc, char *argv[])
 	if (in.n == 0 || out.n == 0) {
 		fprintf(stderr, "offsetref: no segments in %s\n",
 		    in.n ? argv[2] : argv[1]);
+		free(in.s);
+		free(out.s);
 		return 1;
 	}
 	/* twice the area, by the trapezium rule on 256 steps a segment */
@@ -229,5 +231,7 @@ main(int argc, char *argv[])
 		}
 	printf("offsetref: %zu segments, %zu out; forward %.3g, reverse %.3g "
 	    "(%ld points), tol %.3g\n", in.n, out.n, fwd, rev, nrev, tol);
+	free(in.s);
+	free(out.s);
 	return fwd <= tol && rev <= tol && nrev > 0 ? 0 : 1;
 }
