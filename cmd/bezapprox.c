@@ -330,7 +330,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "bezapprox", .out = stdout,
 	    .msg = stderr, .handle = approx_record, .ctx = &o };
 	struct loft_error err;
-	long digits;
 	int c;
 
 	while ((c = getopt(argc, argv, "cvn:p:x:y:z:h")) != -1) {
@@ -339,9 +338,8 @@ main(int argc, char *argv[])
 		case 'v': o.verbose = 1; break;
 		case 'n': parse_degrees(optarg, &o); break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				bad_option(c, err.msg);
-			run.w.digits = digits;
 			break;
 		case 'x': o.src[0] = optarg; break;
 		case 'y': o.src[1] = optarg; break;

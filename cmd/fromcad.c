@@ -20,13 +20,6 @@ static const char usage_text[] =
     "usage: fromcad [-f dxf|svg|csv] [-t tolerance] [-p digits] "
     "[file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
 static void
 complain(void *ctx, long line, const char *msg)
@@ -123,7 +116,6 @@ main(int argc, char *argv[])
 	struct loft_cadin cad = { 0, &run.w, complain, &o, 0 };
 	struct loft_error err;
 	char *stdin_only[] = { "-" };
-	long digits;
 	int c;
 
 	o.run = &run;
@@ -140,12 +132,11 @@ main(int argc, char *argv[])
 				goto bad;
 			break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = digits;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	argc -= optind;
@@ -163,5 +154,5 @@ main(int argc, char *argv[])
 	return run.status;
 bad:
 	fprintf(stderr, "fromcad: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }

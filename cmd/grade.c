@@ -42,13 +42,6 @@ static const char usage_text[] =
     "[-b base] [-l step] [-w step] [-u mm|cm|m|in] [-a x|y] [-o x,y] [-m] "
     "[-O pattern] [-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* A whole or half number, |v| <= MAX_SIZE, from s[0..len): 0 or -1. */
 static int
 parse_half(const char *s, size_t len, double *v)
@@ -445,12 +438,12 @@ finish_options(struct opts *o, int sizes)
 {
 	if (!sizes) {
 		fputs("grade: -s sizes or -r steps is needed\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if ((o->to - o->from) / (o->step > 0 ? o->step : o->sys->interval) >=
 	    MAX_SIZES) {
 		fprintf(stderr, "grade: more than %d sizes\n", MAX_SIZES);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (!o->have_lstep)
 		o->lstep = o->sys->length / o->unit;
@@ -470,9 +463,9 @@ main(int argc, char *argv[])
 
 	while ((c = getopt(argc, argv, "s:r:S:b:l:w:u:a:o:mO:p:h")) != -1) {
 		if (c == 'h')
-			usage(0);
+			loft_usage(usage_text, 0);
 		if (c == '?')
-			usage(2);
+			loft_usage(usage_text, 2);
 		if (set_option(c, optarg, &o, &run, &sizes, &err) != 0)
 			goto bad;
 	}
@@ -488,6 +481,6 @@ main(int argc, char *argv[])
 	return status;
 bad:
 	fprintf(stderr, "grade: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

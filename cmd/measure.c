@@ -43,13 +43,6 @@ static const int space_fields[] = {
 static const char usage_text[] =
     "usage: measure [-f field,...] [-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* What one record's row needs, computed once when first asked. */
 struct sums {
 	const struct loft_curve *c;
@@ -200,7 +193,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "measure", .out = stdout,
 	    .msg = stderr, .handle = measure_record, .ctx = &o };
 	struct loft_error err;
-	long digits;
 	int c;
 
 	while ((c = getopt(argc, argv, "f:p:h")) != -1) {
@@ -210,17 +202,16 @@ main(int argc, char *argv[])
 				goto bad;
 			break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = digits;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	return loft_run_files(&run, argc - optind, argv + optind);
 bad:
 	fprintf(stderr, "measure: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

@@ -23,13 +23,6 @@ static const char usage_text[] =
     "usage: offset -d dist [-d dist ...] [-t tol] [-j round|miter|bevel] "
     "[-p digits] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* Attributes of the input that no longer hold for its offset. */
 static const char *const dropped[] = { "closed", "offset", "error", "corners",
     "start", "end", NULL };
@@ -100,7 +93,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "offset", .out = stdout, .msg = stderr,
 	    .handle = offset_record, .ctx = &o };
 	struct loft_error err;
-	long digits;
 	int c, status;
 
 	while ((c = getopt(argc, argv, "d:t:j:p:h")) != -1) {
@@ -134,23 +126,22 @@ main(int argc, char *argv[])
 				goto bad;
 			break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = digits;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.ndist == 0) {
 		fputs("offset: -d is missing: give the distance\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	loft_offset_free(&o.off);
 	return status;
 bad:
 	fprintf(stderr, "offset: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

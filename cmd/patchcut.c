@@ -34,17 +34,10 @@ static const char usage_text[] =
     "                [-p a,b,c,d] [-t tol] [-c] [-P digits] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const char *what)
 {
 	fprintf(stderr, "patchcut: -%c %s\n", c, what);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 static void
@@ -301,7 +294,6 @@ main(int argc, char *argv[])
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
 	double v[4];
-	long digits;
 	int c, nv;
 
 	while ((c = getopt(argc, argv, "x:y:z:p:t:cP:h")) != -1) {
@@ -323,17 +315,16 @@ main(int argc, char *argv[])
 			break;
 		case 'c': o.cubic = 1; break;
 		case 'P':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				bad_option(c, err.msg);
-			run.w.digits = digits;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.npl == 0) {
 		fputs("patchcut: give a plane: -x, -y, -z or -p\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	c = loft_run_design(&run, argc - optind, argv + optind, cut_design);
 	free(o.pl);

@@ -18,13 +18,6 @@ static const char usage_text[] =
     "usage: patchloft [-c] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-p digits] "
     "[file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /* The sections' curves, checked one by one; 0, or 1 after reporting. */
 static int
 read_sections(struct loft_run *run, const struct loft_record *recs, size_t n,
@@ -111,14 +104,14 @@ parse_slope(int c, const char *arg, double *v, int *have, int *dim)
 
 	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0) {
 		fprintf(stderr, "patchloft: -%c %s\n", c, err.msg);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	for (int k = 0; k < *dim; k++)
 		len += v[k] * v[k];
 	if (*dim < 2 || !(len > 0)) {
 		fprintf(stderr, "patchloft: -%c '%s': want a direction of 2 or "
 		    "3 numbers, not zero\n", c, arg);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	*have = 1;
 }
@@ -131,7 +124,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "patchloft", .out = stdout,
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
-	long digits;
 	int c;
 
 	memset(&o, 0, sizeof o);
@@ -143,23 +135,22 @@ main(int argc, char *argv[])
 		case 'E': parse_slope(c, optarg, o.skin.end, &o.skin.have_end,
 		    &o.end_dim); break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = digits;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.skin.closed && (o.skin.have_start || o.skin.have_end)) {
 		fputs("patchloft: -S and -E are for an open loft; -c closes it\n",
 		    stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    skin_sections);
 bad:
 	fprintf(stderr, "patchloft: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

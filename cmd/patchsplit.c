@@ -96,7 +96,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "patchsplit", .out = stdout,
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
-	long whole;
 	int c;
 
 	while ((c = getopt(argc, argv, "u:v:i:p:h")) != -1) {
@@ -109,9 +108,8 @@ main(int argc, char *argv[])
 			o.have_id = 1;
 			break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &whole, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = whole;
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);

@@ -40,13 +40,6 @@ static const char usage_text[] =
     "[-p digits] [-a] [-u] [-d] [-k]\n"
     "              [-f points|obj] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 /*
  * -a: the record's header, type and attributes, as a comment line
  * "# TYPE key=value ..." before what it gives: the rows of a point record
@@ -378,7 +371,6 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
-	long digits;
 	int c, rc, ways = 0;
 
 	while ((c = getopt(argc, argv, "n:s:t:p:audkf:h")) != -1) {
@@ -399,9 +391,8 @@ main(int argc, char *argv[])
 			ways |= 4;
 			break;
 		case 'p':
-			if (loft_parse_int(optarg, 1, 17, &digits, &err))
+			if (loft_opt_digits(optarg, &run.w, &err))
 				goto bad;
-			run.w.digits = digits;
 			break;
 		case 'a': o.attrs = 1; break;
 		case 'u': o.param = 1; break;
@@ -411,25 +402,25 @@ main(int argc, char *argv[])
 			if (loft_parse_word(optarg, formats, &o.obj, &err))
 				goto bad;
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.obj && (o.param || o.tangent || o.curvature)) {
 		fputs("sample: -u, -d and -k add columns to points; "
 		    "-f obj has none\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	if (ways != 0 && (ways & (ways - 1)) != 0) {
 		fputs("sample: -n, -s and -t are three ways of choosing the "
 		    "points: give one\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	rc = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.u);
 	return rc;
 bad:
 	fprintf(stderr, "sample: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 #endif

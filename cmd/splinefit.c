@@ -33,17 +33,10 @@ static const char usage_text[] =
     "                 [-v] [-d dist] [file ...]\n";
 
 static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
-static void
 bad_option(int c, const struct loft_error *err)
 {
 	fprintf(stderr, "splinefit: -%c %s\n", c, err->msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }
 
 /*
@@ -369,8 +362,8 @@ main(int argc, char *argv[])
 		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
 		    &err); break;
 		case 'v': o.verbose = 1; break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
 			bad_option(c, &err);
@@ -378,7 +371,7 @@ main(int argc, char *argv[])
 	if (o.fit.closed && (o.fit.have_start || o.fit.have_end)) {
 		fputs("splinefit: -S and -E give the ends of an open curve: "
 		    "use them with -o\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);

@@ -13,13 +13,6 @@ static const char usage_text[] =
     "usage: tocad -f dxf|svg|step|iges|stl [-s] [-b] [-t tolerance] "
     "[-n steps] [-u mm|cm|m|in] [file ...]\n";
 
-static void
-usage(int status)
-{
-	fputs(usage_text, status ? stderr : stdout);
-	exit(status);
-}
-
 static int
 tocad_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
@@ -108,18 +101,18 @@ main(int argc, char *argv[])
 			o.unit_name = unit_words[u];
 			o.unit_mm = unit_mm[u];
 			break;
-		case 'h': usage(0); break;
-		default: usage(2);
+		case 'h': loft_usage(usage_text, 0); break;
+		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (f == NULL) {
 		fputs("tocad: -f names the format\n", stderr);
-		usage(2);
+		loft_usage(usage_text, 2);
 	}
 	loft_cad_init(&d, f, &o);
 	loft_run_files(&run, argc - optind, argv + optind);
 	return finish(&run, &d);
 bad:
 	fprintf(stderr, "tocad: -%c %s\n", c, err.msg);
-	usage(2);
+	loft_usage(usage_text, 2);
 }

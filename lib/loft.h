@@ -235,6 +235,14 @@ void loft_usage(const char *text, int status)
 #endif
 	;
 
+/*
+ * The option -p DIGITS of every program that writes numbers: a whole
+ * number 1 to 17, the significant digits w writes (loft_put_num).
+ * Returns 0, or LOFT_EINPUT with err saying why (w unchanged).
+ */
+int loft_opt_digits(const char *arg, struct loft_writer *w,
+    struct loft_error *err);
+
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
     const struct loft_error *err);

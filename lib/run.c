@@ -95,6 +95,18 @@ write_failed(struct loft_run *run)
 	return 1;
 }
 
+int
+loft_opt_digits(const char *arg, struct loft_writer *w,
+    struct loft_error *err)
+{
+	long digits;
+
+	if (loft_parse_int(arg, 1, 17, &digits, err) != 0)
+		return LOFT_EINPUT;
+	w->digits = (int)digits;
+	return 0;
+}
+
 void
 loft_usage(const char *text, int status)
 {

@@ -125,7 +125,7 @@ out_valid() {
 }
 
 # help_full: P -h into a full disk: a write error, exit 1 (issue 12: -h
-# ignored it and exited 0); for the programs on loft_usage
+# ignored it and exited 0); every program, each on loft_usage
 help_full() {
 	tc="$P -h >/dev/full"
 	what=$tc
@@ -1107,7 +1107,6 @@ scaled_by() {
 }
 
 bezapprox_cases() {
-	help_full
 	opts
 	# not finite: log(0) at the end, poles at a panel's end and at a t_i
 	expr "log(t)" 1 "the curve is not finite at t = 0" -x 'log(t)' -y t
@@ -1399,7 +1398,6 @@ patchnew_good() {
 }
 
 patchnew_cases() {
-	help_full
 	opts
 	tc="three curves"
 	sed '$d' "$T/g12" | sed '$d' | sed '$d' >"$T/in"
@@ -1486,7 +1484,6 @@ patchsplit_good() {
 }
 
 patchsplit_cases() {
-	help_full
 	opts -u 0.4
 	design_cases
 	opts -v 0.5 -i 1
@@ -1542,7 +1539,6 @@ patchdrag_run() { "$B/patchdrag" "$@"; }
 patchdrag_good() { patchsplit_good "$@"; }
 
 patchdrag_cases() {
-	help_full
 	opts -i 1 -u 0.5 -v 0.5 -b 0,0,1
 	design_cases
 	opts -i 1 -u 0.9 -v 0.1 -t 3,0,2
@@ -1678,7 +1674,6 @@ pieces() {
 }
 
 patchjoin_cases() {
-	help_full
 	opts -P 1 -S 2
 	design_cases
 	for a in "-P 1 -S 1" "-P 1 -S 99" "-P 1 -S 9"; do
@@ -1729,7 +1724,6 @@ plot_good() {
 }
 
 plot_cases() {
-	help_full
 	opts
 	# issue 12: one far-out record among good ones emptied the picture
 	# and named no line; it is left out, named, and the rest drawn as if
@@ -2078,6 +2072,7 @@ patchcut_cases() {
 
 for P in $PROGS; do
 	eval "KIND=\${${P}_kind:-records}"
+	help_full
 	stream_cases
 	output_cases
 	"${P}_cases"
