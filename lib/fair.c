@@ -84,54 +84,77 @@ static const double gauss_w[GAUSS] = {
 /*
  * The bending energy of segment s (a row P_A P_B P'_A P'_B) and, unless g
  * is NULL, its gradient with respect to P'_A and P'_B into g (2 dim); the
- * largest curvature at the quadrature points raises *kmax.  With V =
- * |P'|^2, W = |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2)
- * V^-5/2.  HUGE_VAL where the tangent vanishes.
+ * largest squared curvature at the quadrature points raises *k2max, the
+ * least (|P'| / chord)^2 there lowers *slow.  With V = |P'|^2, W =
+ * |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2) V^-5/2.
+ * HUGE_VAL where the tangent vanishes.  P' = D0 + u (B + u C) and P'' =
+ * B + 2 u C in powers of u: fewer products a point than the Hermite
+ * basis, and one root and one quotient a point.
  */
 static double
-segment_energy(const double *s, int dim, int pieces, double *g, double *kmax,
+segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
     double *slow)
 {
-	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
-	double c[LOFT_MAXDIM], e = 0, cc;
+	const double *d0 = s + 2 * dim, *d1 = s + 3 * dim;
+	double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM], e = 0, cc = 0, vmin = HUGE_VAL;
+	double kk = *k2max, step = 1.0 / pieces;
 
-	vsub(c, b, a, dim);
-	cc = vdot(c, c, dim);
+	for (int k = 0; k < dim; k++) {
+		double c = s[dim + k] - s[k];
+
+		cc += c * c;
+		bq[k] = 6 * c - 4 * d0[k] - 2 * d1[k];
+		cq[k] = 3 * (d0[k] + d1[k]) - 6 * c;
+	}
 	if (g != NULL)
 		memset(g, 0, 2 * dim * sizeof *g);
-	for (int q = 0; q < GAUSS * pieces; q++) {
-		double u = (q / GAUSS + gauss_u[q % GAUSS]) / pieces;
-		double wq = gauss_w[q % GAUSS] / pieces, a0 = 1 - 4 * u + 3 * u * u;
-		double a1 = -2 * u + 3 * u * u, gc = 6 * u - 6 * u * u;
-		double b0 = -4 + 6 * u, b1 = -2 + 6 * u, dc = 6 - 12 * u;
-		double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v, w, x, num, r;
+	for (int part = 0; part < pieces; part++)
+		for (int j = 0; j < GAUSS; j++) {
+			double u = (part + gauss_u[j]) * step, wq = gauss_w[j] * step;
+			double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v = 0, w = 0, x = 0;
+			double num, sv, t, r, k2;
 
-		for (int k = 0; k < dim; k++) {
-			p1[k] = a0 * d0[k] + a1 * d1[k] + gc * c[k];
-			p2[k] = b0 * d0[k] + b1 * d1[k] + dc * c[k];
-		}
-		v = vdot(p1, p1, dim);
-		w = vdot(p2, p2, dim);
-		x = vdot(p1, p2, dim);
-		num = fmax(v * w - x * x, 0);
-		if (!(v > 0))
-			return HUGE_VAL;
-		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
-		e += wq * num * r;
-		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
-		if (slow != NULL)
-			*slow = fmin(*slow, v / cc);
-		if (g == NULL)
-			continue;
-		for (int k = 0; k < dim; k++) {
-			double f1 = (2 * w * p1[k] - 2 * x * p2[k]) * r -
-			    5 * num * r / v * p1[k];
-			double f2 = (2 * v * p2[k] - 2 * x * p1[k]) * r;
+			for (int k = 0; k < dim; k++) {
+				p2[k] = bq[k] + 2 * u * cq[k];
+				p1[k] = d0[k] + u * (bq[k] + u * cq[k]);
+				v += p1[k] * p1[k];
+				w += p2[k] * p2[k];
+				x += p1[k] * p2[k];
+			}
+			if (!(v > 0))
+				return HUGE_VAL;
+			num = v * w - x * x;
+			if (num < 0)
+				num = 0;
+			sv = sqrt(v);
+			t = 1 / (v * sv);               /* V^-3/2 */
+			r = t * t * sv;                 /* V^-5/2 */
+			k2 = num * t * t;
+			e += wq * num * r;
+			if (k2 > kk)
+				kk = k2;
+			if (v < vmin)
+				vmin = v;
+			if (g == NULL)
+				continue;
+			{
+				double a0 = 1 - 4 * u + 3 * u * u, a1 = -2 * u +
+				    3 * u * u, b0 = -4 + 6 * u, b1 = -2 + 6 * u;
+				double c5 = 5 * num * r * t * sv;       /* 5 num V^-7/2 */
 
-			g[k] += wq * (f1 * a0 + f2 * b0);
-			g[dim + k] += wq * (f1 * a1 + f2 * b1);
+				for (int k = 0; k < dim; k++) {
+					double f1 = 2 * (w * p1[k] - x * p2[k]) * r -
+					    c5 * p1[k];
+					double f2 = 2 * (v * p2[k] - x * p1[k]) * r;
+
+					g[k] += wq * (f1 * a0 + f2 * b0);
+					g[dim + k] += wq * (f1 * a1 + f2 * b1);
+				}
+			}
 		}
-	}
+	*k2max = kk;
+	if (slow != NULL && vmin / cc < *slow)
+		*slow = vmin / cc;
 	return e;
 }
 
@@ -154,6 +177,7 @@ tame(const double *seg, size_t nseg, int dim)
  * The largest curvature of the segments at FAIR_KSAMPLES + 1 even
  * points of each, ends included: the cap of the descent (which checks
  * it at the quadrature points) and the final check of its result.
+ * Squares are compared, one root at the end.
  */
 #define FAIR_KSAMPLES 8
 static double
@@ -162,55 +186,85 @@ max_curvature(const double *seg, size_t nseg, int dim)
 	double big = 0;
 
 	for (size_t s = 0; s < nseg; s++) {
-		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
-			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], v, x, w;
+		const double *q = seg + s * 4 * dim, *d0 = q + 2 * dim;
+		double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM];
 
-			loft_cubic_eval(seg + s * 4 * dim, dim,
-			    (double)j / FAIR_KSAMPLES, NULL, d1, d2);
-			v = vdot(d1, d1, dim);
-			w = vdot(d2, d2, dim);
-			x = vdot(d1, d2, dim);
+		for (int k = 0; k < dim; k++) {
+			double c = q[dim + k] - q[k];
+
+			bq[k] = 6 * c - 4 * d0[k] - 2 * q[3 * dim + k];
+			cq[k] = 3 * (d0[k] + q[3 * dim + k]) - 6 * c;
+		}
+		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
+			double u = (double)j / FAIR_KSAMPLES, v = 0, w = 0, x = 0;
+			double num, k2;
+
+			for (int k = 0; k < dim; k++) {
+				double p1 = d0[k] + u * (bq[k] + u * cq[k]);
+				double p2 = bq[k] + 2 * u * cq[k];
+
+				v += p1 * p1;
+				w += p2 * p2;
+				x += p1 * p2;
+			}
 			if (!(v > 0))
 				return HUGE_VAL;
-			big = fmax(big, sqrt(fmax(v * w - x * x, 0) / (v * v * v)));
+			num = v * w - x * x;
+			k2 = num / (v * v * v);
+			if (k2 > big)
+				big = k2;
 		}
 	}
-	return big;
+	return sqrt(big);
 }
 
 /* The energy of all nseg segments, gradients into g unless NULL; each
- * segment in parts[s] parts, or pieces where parts is NULL. */
+ * segment in parts[s] parts, or pieces where parts is NULL.  *kmax: the
+ * largest curvature at the quadrature points. */
 static double
 curve_energy(const double *seg, size_t nseg, int dim, int pieces,
     const unsigned char *parts, double *g, double *kmax, double *slow)
 {
-	double e = 0;
+	double e = 0, k2 = 0;
 
-	*kmax = 0;
 	if (slow != NULL)
 		*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++)
 		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
-		    pieces, g ? g + s * 2 * dim : NULL, kmax, slow);
+		    pieces, g ? g + s * 2 * dim : NULL, &k2, slow);
+	*kmax = sqrt(k2);
 	return e;
 }
 
-/* The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
+/*
+ * The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
  * where the two rules differ by more than 1e-4 of its energy.  Returns
- * the start's energy by FAIR_CHECK parts. */
+ * the start's energy by FAIR_CHECK parts; its energy by the parts chosen
+ * into *e, the largest curvature and least speed by them into *kmax and
+ * *slow (as curve_energy).
+ */
 static double
-choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts)
+choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts,
+    double *e, double *kmax, double *slow)
 {
-	double fine = 0;
+	double fine = 0, k2 = 0;
 
+	*e = 0;
+	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
-		double k, a = segment_energy(seg + s * 4 * dim, dim,
-		    FAIR_PIECES, NULL, &k, NULL), b = segment_energy(seg + s *
-		    4 * dim, dim, FAIR_CHECK, NULL, &k, NULL);
+		double ka = 0, kb = 0, sa = HUGE_VAL, sb = HUGE_VAL;
+		double a = segment_energy(seg + s * 4 * dim, dim, FAIR_PIECES,
+		    NULL, &ka, &sa), b = segment_energy(seg + s * 4 * dim, dim,
+		    FAIR_CHECK, NULL, &kb, &sb);
+		int coarse = fabs(a - b) <= 1e-4 * b;
 
-		parts[s] = fabs(a - b) <= 1e-4 * b ? FAIR_PIECES : FAIR_CHECK;
+		parts[s] = coarse ? FAIR_PIECES : FAIR_CHECK;
+		*e += coarse ? a : b;
+		k2 = fmax(k2, coarse ? ka : kb);
+		*slow = fmin(*slow, coarse ? sa : sb);
 		fine += b;
 	}
+	*kmax = sqrt(k2);
 	return fine;
 }
 
@@ -506,7 +560,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	size_t nseg = o->closed ? n : n - 1;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
 	double *mem, *x, *h, e, kmax, slow, fine;
-	int rc, loops;
+	int rc, loops, keep;
 
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
@@ -530,25 +584,36 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0) {
 		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
-		fine = choose_parts(seg, nseg, dim, f.parts);
-		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax, &slow);
+		fine = choose_parts(seg, nseg, dim, f.parts, &e, &kmax, &slow);
 		/* the chord spline's largest curvature, less rounding */
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
-		loops = dim == 2 ? loft_fit_crosses(seg, nseg, o->closed) : 0;
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
 		/* not fairer by the finer rule, more bent, or crossing itself
-		 * where the start does not: the chord spline after all */
-		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
-		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
-		    (loops == 0 && loft_fit_crosses(seg, nseg, o->closed) == 1)) {
+		 * where the start does not: the chord spline after all (the
+		 * start's crossings are looked for only where the result
+		 * crosses: the start is rebuilt, and the result again if the
+		 * start crosses too) */
+		keep = info->iterations > 0 && curve_energy(seg, nseg, dim,
+		    FAIR_CHECK, NULL, NULL, &kmax, NULL) < fine &&
+		    max_curvature(seg, nseg, dim) <= f.kcap;
+		loops = keep && dim == 2 ? loft_fit_crosses(seg, nseg,
+		    o->closed) : 0;
+		if (!keep || loops == 1) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);
 			rc = loft__cspline_h(o, p, n, dim, h, NULL, seg, f.work,
 			    err);
+		}
+		if (rc == 0 && keep && loops == 1 && loft_fit_crosses(seg, nseg,
+		    o->closed) != 0) {
+			for (size_t s = 0; s < nseg; s++)
+				h[s] = exp(x[s]);
+			rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg,
+			    f.work, err);
 		}
 		info->converged = 1;
 	}
