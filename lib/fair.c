@@ -91,8 +91,8 @@ static const double gauss_w[GAUSS] = {
  * B + 2 u C in powers of u: fewer products a point than the Hermite
  * basis, and one root and one quotient a point.
  */
-static double
-segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
+static inline double
+energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
     double *slow)
 {
 	const double *d0 = s + 2 * dim, *d1 = s + 3 * dim;
@@ -156,6 +156,16 @@ segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
 	if (slow != NULL && vmin / cc < *slow)
 		*slow = vmin / cc;
 	return e;
+}
+
+/* energy_body, compiled apart for the plane, where the loops over the
+ * coordinates unroll: most records are plane outlines. */
+static double
+segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
+    double *slow)
+{
+	return dim == 2 ? energy_body(s, 2, pieces, g, k2max, slow) :
+	    energy_body(s, dim, pieces, g, k2max, slow);
 }
 
 /* Whether every tangent vector of the segments is within FAIR_MAXMAG
@@ -282,7 +292,9 @@ struct fair {
 };
 
 /* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
- * into f->seg, its energy (HUGE_VAL where a curvature passes the cap). */
+ * into f->seg, its energy (HUGE_VAL where a curvature passes the cap),
+ * and dE/dP' into f->gseg in the same pass: most tries are kept, and
+ * the gradient then needs only the adjoint. */
 static double
 try_intervals(struct fair *f, const double *x, double *h)
 {
@@ -296,21 +308,18 @@ try_intervals(struct fair *f, const double *x, double *h)
 		return HUGE_VAL;
 	if (!tame(f->seg, f->nseg, f->dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax,
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
 	    &slow) / f->e0;
 	if (!(kmax <= f->kcap) || !(slow >= f->slow))
 		return HUGE_VAL;
 	return isfinite(e) ? e : HUGE_VAL;
 }
 
-/* dE/dx at the x last solved (h = exp(x)), into g. */
+/* dE/dx at the x last tried (h = exp(x)), into g, from the f->gseg of
+ * the try. */
 static void
 gradient(struct fair *f, const double *x, const double *h, double *g)
 {
-	double kmax;
-
-	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
-	    NULL);
 	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
@@ -373,12 +382,15 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 	size_t m = f->nseg + f->n;
 	double *g = v, *d = g + m, *xp = d + m, *sv[FAIR_MEMORY],
 	    *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
-	int it, k = 0, k0 = 0;
+	int it, k = 0, k0 = 0, stale = 0;
+	double kmax;
 
 	for (int j = 0; j < FAIR_MEMORY; j++) {
 		sv[j] = xp + m + 2 * j * m;
 		yv[j] = sv[j] + m;
 	}
+	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
+	    NULL);
 	gradient(f, x, h, g);
 	for (it = 0; it < FAIR_STEPS; it++) {
 		double gd = 0, big = 0, t = 1, en = HUGE_VAL;
@@ -407,6 +419,7 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		if (!(en <= e + FAIR_ARMIJO * t * gd)) {
 			memcpy(x, xp, m * sizeof *x);
+			stale = 1;
 			break;
 		}
 		if (e - en < FAIR_SETTLED * e) {
@@ -441,8 +454,10 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		e = en;
 	}
-	/* the spline of the best x, in f->seg */
-	try_intervals(f, x, h);
+	/* the spline of the best x, in f->seg (already, unless the last
+	 * try failed) */
+	if (stale)
+		try_intervals(f, x, h);
 	return it;
 }
 
