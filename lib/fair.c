@@ -477,19 +477,32 @@ edges_cross(const double *a, const double *b, const double *c, const double *d)
 	    ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0));
 }
 
-/* The cells of a grid of g x g over [lo, lo + g w) that edge e covers. */
+/* The cell of each of the np points of pt in a grid of g x g over [lo,
+ * lo + g w), column and row, into cell (2 np numbers). */
 static void
-edge_cells(const double *pt, size_t np, size_t e, const double *lo, double w,
-    size_t g, size_t *c0, size_t *c1)
+point_cells(const double *pt, size_t np, const double *lo, double w, size_t g,
+    size_t *cell)
 {
-	const double *a = pt + 2 * e, *b = pt + 2 * ((e + 1) % np);
+	double iw = 1 / w;
+
+	for (size_t i = 0; i < 2 * np; i++) {
+		double x = (pt[i] - lo[i % 2]) * iw;
+
+		cell[i] = x < 0 ? 0 : x >= g ? g - 1 : (size_t)x;
+	}
+}
+
+/* The cells edge e covers, from its ends' cells: the cell of a point is
+ * monotonic in each coordinate, so the box of an edge's ends covers the
+ * cells of all its points. */
+static void
+edge_cells(const size_t *cell, size_t np, size_t e, size_t *c0, size_t *c1)
+{
+	const size_t *a = cell + 2 * e, *b = cell + 2 * (e + 1 == np ? 0 : e + 1);
 
 	for (int k = 0; k < 2; k++) {
-		double x0 = (fmin(a[k], b[k]) - lo[k]) / w;
-		double x1 = (fmax(a[k], b[k]) - lo[k]) / w;
-
-		c0[k] = x0 < 0 ? 0 : x0 >= g ? g - 1 : (size_t)x0;
-		c1[k] = x1 < 0 ? 0 : x1 >= g ? g - 1 : (size_t)x1;
+		c0[k] = a[k] < b[k] ? a[k] : b[k];
+		c1[k] = a[k] < b[k] ? b[k] : a[k];
 	}
 }
 
@@ -499,7 +512,7 @@ int
 loft_fit_crosses(const double *seg, size_t nseg, int closed)
 {
 	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
-	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, total = 0;
+	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, *cell, total = 0;
 	double *pt = calloc(2 * np, sizeof *pt), lo[2], hi[2], w;
 	int found = 0;
 
@@ -515,31 +528,41 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 	lo[1] = hi[1] = pt[1];
 	for (size_t i = 1; i < np; i++)
 		for (int k = 0; k < 2; k++) {
-			lo[k] = fmin(lo[k], pt[2 * i + k]);
-			hi[k] = fmax(hi[k], pt[2 * i + k]);
+			double z = pt[2 * i + k];
+
+			lo[k] = z < lo[k] ? z : lo[k];
+			hi[k] = z > hi[k] ? z : hi[k];
 		}
 	w = fmax(hi[0] - lo[0], hi[1] - lo[1]) / g * (1 + 1e-9);
-	cnt = calloc(g * g + 1, sizeof *cnt);
+	if (!(w > 0)) {                 /* all at one point */
+		free(pt);
+		return 0;
+	}
+	cell = malloc(2 * np * sizeof *cell);
+	cnt = cell != NULL ? calloc(g * g + 1, sizeof *cnt) : NULL;
+	if (cnt != NULL)
+		point_cells(pt, np, lo, w, g, cell);
 	for (size_t e = 0; cnt != NULL && e < ne; e++) {
 		size_t c0[2], c1[2];
 
-		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		edge_cells(cell, np, e, c0, c1);
 		for (size_t y = c0[1]; y <= c1[1]; y++)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				cnt[y * g + x + 1]++, total++;
 	}
-	list = cnt != NULL && w > 0 ? malloc((total + 1) * sizeof *list) : NULL;
+	list = cnt != NULL ? malloc((total + 1) * sizeof *list) : NULL;
 	if (list == NULL) {
 		free(pt);
+		free(cell);
 		free(cnt);
-		return w > 0 ? -1 : 0;
+		return -1;
 	}
 	for (size_t c = 1; c <= g * g; c++)
 		cnt[c] += cnt[c - 1];
 	for (size_t e = 0; e < ne; e++) {
 		size_t c0[2], c1[2];
 
-		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		edge_cells(cell, np, e, c0, c1);
 		for (size_t y = c0[1]; y <= c1[1]; y++)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				list[cnt[y * g + x]++] = e;
@@ -563,6 +586,7 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 			}
 	}
 	free(pt);
+	free(cell);
 	free(cnt);
 	free(list);
 	return found;
