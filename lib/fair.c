@@ -65,12 +65,14 @@
 /* Armijo's fraction of the first-order decrease a step must achieve. */
 #define FAIR_ARMIJO 1e-4
 
-/* 4-point Gauss-Legendre on [0, 1], on each of FAIR_PIECES equal parts
- * of a segment: within 1e-5 relative of the energy of the segments of a
- * fair curve.  A segment that turns sharply in a small part of it needs
- * more: FAIR_CHECK parts where the two differ on the start, and the
- * descent's result is checked against the start with FAIR_CHECK parts
- * (see loft__fit_fair). */
+/* 4-point Gauss-Legendre on [0, 1], on each of 1 to FAIR_PIECES equal
+ * parts of a segment: within 1e-5 relative of the energy of the
+ * segments of a fair curve at 2.  Each segment of the start takes the
+ * fewest parts that agree with FAIR_CHECK parts to 1e-4 of its energy,
+ * or FAIR_CHECK where none does (a segment that turns sharply in a
+ * small part of it); most of an outline's take 1, half the points of 2.
+ * The descent's result is checked against the start with FAIR_CHECK
+ * parts (see loft__fit_fair). */
 #define FAIR_PIECES 2
 #define FAIR_CHECK 8
 #define GAUSS 4
@@ -247,8 +249,8 @@ curve_energy(const double *seg, size_t nseg, int dim, int pieces,
 }
 
 /*
- * The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
- * where the two rules differ by more than 1e-4 of its energy.  Returns
+ * The parts of each segment of the start: the fewest up to FAIR_PIECES
+ * within 1e-4 of its energy by FAIR_CHECK, or FAIR_CHECK.  Returns
  * the start's energy by FAIR_CHECK parts; its energy by the parts chosen
  * into *e, the largest curvature and least speed by them into *kmax and
  * *slow (as curve_energy).
@@ -262,16 +264,26 @@ choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts,
 	*e = 0;
 	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
-		double ka = 0, kb = 0, sa = HUGE_VAL, sb = HUGE_VAL;
-		double a = segment_energy(seg + s * 4 * dim, dim, FAIR_PIECES,
-		    NULL, &ka, &sa), b = segment_energy(seg + s * 4 * dim, dim,
-		    FAIR_CHECK, NULL, &kb, &sb);
-		int coarse = fabs(a - b) <= 1e-4 * b;
+		double kb = 0, sb = HUGE_VAL, b = segment_energy(seg + s * 4 *
+		    dim, dim, FAIR_CHECK, NULL, &kb, &sb), a = b, ka = kb, sa = sb;
+		int pc = FAIR_CHECK;
 
-		parts[s] = coarse ? FAIR_PIECES : FAIR_CHECK;
-		*e += coarse ? a : b;
-		k2 = fmax(k2, coarse ? ka : kb);
-		*slow = fmin(*slow, coarse ? sa : sb);
+		for (int pieces = 1; pieces <= FAIR_PIECES; pieces++) {
+			ka = 0;
+			sa = HUGE_VAL;
+			a = segment_energy(seg + s * 4 * dim, dim, pieces, NULL,
+			    &ka, &sa);
+			if (fabs(a - b) <= 1e-4 * b) {
+				pc = pieces;
+				break;
+			}
+		}
+		if (pc == FAIR_CHECK)
+			a = b, ka = kb, sa = sb;
+		parts[s] = (unsigned char)pc;
+		*e += a;
+		k2 = fmax(k2, ka);
+		*slow = fmin(*slow, sa);
 		fine += b;
 	}
 	*kmax = sqrt(k2);
