@@ -518,6 +518,45 @@ edge_cells(const size_t *cell, size_t np, size_t e, size_t *c0, size_t *c1)
 	}
 }
 
+/*
+ * Whether the closed polyline of the np points pt is shown simple by
+ * being star-shaped: seen from the mean of its points every edge turns
+ * the same way, by less than half a turn, and the edges cross the ray
+ * to the right of that centre once, so the polyline goes round it once
+ * with its angle always rising: each ray from the centre meets it once.
+ * 0 when not shown (it may still be simple): the grid decides then.  An
+ * outline's is nearly always shown, in one pass.
+ */
+static int
+star_simple(const double *pt, size_t np)
+{
+	double c[2] = { 0, 0 };
+	size_t up = 0, down = 0;
+	int turn = 0;
+
+	for (size_t i = 0; i < np; i++) {
+		c[0] += pt[2 * i];
+		c[1] += pt[2 * i + 1];
+	}
+	c[0] /= np;
+	c[1] /= np;
+	for (size_t i = 0; i < np; i++) {
+		const double *a = pt + 2 * i, *b = pt + 2 * (i + 1 == np ? 0 : i + 1);
+		double ax = a[0] - c[0], ay = a[1] - c[1], bx = b[0] - c[0];
+		double by = b[1] - c[1], cr = ax * by - ay * bx;
+		int t = cr > 0 ? 1 : cr < 0 ? -1 : 0;
+
+		if (t == 0 || (turn != 0 && t != turn))
+			return 0;
+		turn = t;
+		up += ay < 0 && by >= 0;
+		down += ay >= 0 && by < 0;
+	}
+	/* rising (falling) angles cross y = c upwards (downwards) only to
+	 * the right of c: once for one turn */
+	return turn > 0 ? up == 1 : down == 1;
+}
+
 /* Edges sorted into a grid of about one cell an edge, pairs tested
  * within cells: O(n) for a curve of even speed. */
 int
@@ -535,6 +574,10 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 
 		loft_cubic_eval(seg + 8 * s, 2, (double)(i - s * FAIR_POLY) /
 		    FAIR_POLY, pt + 2 * i, NULL, NULL);
+	}
+	if (closed && star_simple(pt, np)) {
+		free(pt);
+		return 0;
 	}
 	lo[0] = hi[0] = pt[0];
 	lo[1] = hi[1] = pt[1];
