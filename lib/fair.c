@@ -93,7 +93,15 @@ static const double gauss_w[GAUSS] = {
  * B + 2 u C in powers of u: fewer products a point than the Hermite
  * basis, and one root and one quotient a point.
  */
-static inline double
+/* energy_body is written once for any dim and compiled into
+ * segment_energy twice, once with dim = 2; GCC and Clang are told to
+ * (others may call it, the same numbers either way). */
+#if defined(__GNUC__)
+#define FAIR_INLINE inline __attribute__((always_inline))
+#else
+#define FAIR_INLINE inline
+#endif
+static FAIR_INLINE double
 energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
     double *slow)
 {
@@ -436,6 +444,10 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		if (e - en < FAIR_SETTLED * e) {
 			e = en;
+			it++;
+			break;
+		}
+		if (it + 1 == FAIR_STEPS) {     /* no step follows to use g */
 			it++;
 			break;
 		}
