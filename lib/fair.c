@@ -65,15 +65,16 @@
 /* Armijo's fraction of the first-order decrease a step must achieve. */
 #define FAIR_ARMIJO 1e-4
 
-/* 4-point Gauss-Legendre on [0, 1], on each of 1 to FAIR_PIECES equal
+/* 4-point Gauss-Legendre on [0, 1], on each of 1, 2 or FAIR_CHECK equal
  * parts of a segment: within 1e-5 relative of the energy of the
- * segments of a fair curve at 2.  Each segment of the start takes the
- * fewest parts that agree with FAIR_CHECK parts to 1e-4 of its energy,
- * or FAIR_CHECK where none does (a segment that turns sharply in a
- * small part of it); most of an outline's take 1, half the points of 2.
- * The descent's result is checked against the start with FAIR_CHECK
- * parts (see loft__fit_fair). */
-#define FAIR_PIECES 2
+ * segments of a fair curve at 2.  Each segment of the start takes 1
+ * part where 1 agrees with 2 to 1e-4 of its energy (4-point Gauss on
+ * 2 parts is some 2^8 times closer than on 1, so the difference is the
+ * error of 1), else 2 where 2 agree so with FAIR_CHECK, else FAIR_CHECK
+ * (a segment that turns sharply in a small part of it); most of an
+ * outline's take 1.  The descent's result is checked against the start
+ * by the next finer rule of each segment, 2 parts or FAIR_CHECK, the
+ * same for both (see loft__fit_fair). */
 #define FAIR_CHECK 8
 #define GAUSS 4
 static const double gauss_u[GAUSS] = {
@@ -257,44 +258,39 @@ curve_energy(const double *seg, size_t nseg, int dim, int pieces,
 }
 
 /*
- * The parts of each segment of the start: the fewest up to FAIR_PIECES
- * within 1e-4 of its energy by FAIR_CHECK, or FAIR_CHECK.  Returns
- * the start's energy by FAIR_CHECK parts; its energy by the parts chosen
- * into *e, the largest curvature and least speed by them into *kmax and
- * *slow (as curve_energy).
+ * The parts of each segment of the start into parts, and those of the
+ * final check into check (see FAIR_CHECK).  Returns the start's energy
+ * by the check's parts; its energy by the parts chosen into *e, the
+ * largest curvature and least speed by them into *kmax and *slow (as
+ * curve_energy).
  */
 static double
 choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts,
-    double *e, double *kmax, double *slow)
+    unsigned char *check, double *e, double *kmax, double *slow)
 {
-	double fine = 0, k2 = 0;
+	double fine = 0, kk = 0;
 
 	*e = 0;
 	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
-		double kb = 0, sb = HUGE_VAL, b = segment_energy(seg + s * 4 *
-		    dim, dim, FAIR_CHECK, NULL, &kb, &sb), a = b, ka = kb, sa = sb;
-		int pc = FAIR_CHECK;
+		const double *q = seg + s * 4 * dim;
+		double k1 = 0, k2 = 0, k8 = 0, s1 = HUGE_VAL, s2 = HUGE_VAL;
+		double s8 = HUGE_VAL, a1 = segment_energy(q, dim, 1, NULL, &k1,
+		    &s1), a2 = segment_energy(q, dim, 2, NULL, &k2, &s2), b = a2;
 
-		for (int pieces = 1; pieces <= FAIR_PIECES; pieces++) {
-			ka = 0;
-			sa = HUGE_VAL;
-			a = segment_energy(seg + s * 4 * dim, dim, pieces, NULL,
-			    &ka, &sa);
-			if (fabs(a - b) <= 1e-4 * b) {
-				pc = pieces;
-				break;
-			}
+		parts[s] = 1;
+		check[s] = 2;
+		if (!(fabs(a1 - a2) <= 1e-4 * a2)) {
+			b = segment_energy(q, dim, FAIR_CHECK, NULL, &k8, &s8);
+			check[s] = FAIR_CHECK;
+			parts[s] = fabs(a2 - b) <= 1e-4 * b ? 2 : FAIR_CHECK;
 		}
-		if (pc == FAIR_CHECK)
-			a = b, ka = kb, sa = sb;
-		parts[s] = (unsigned char)pc;
-		*e += a;
-		k2 = fmax(k2, ka);
-		*slow = fmin(*slow, sa);
+		*e += parts[s] == 1 ? a1 : parts[s] == 2 ? a2 : b;
+		kk = fmax(kk, parts[s] == 1 ? k1 : parts[s] == 2 ? k2 : k8);
+		*slow = fmin(*slow, parts[s] == 1 ? s1 : parts[s] == 2 ? s2 : s8);
 		fine += b;
 	}
-	*kmax = sqrt(k2);
+	*kmax = sqrt(kk);
 	return fine;
 }
 
@@ -307,6 +303,7 @@ struct fair {
 	double kcap;
 	double slow;            /* the least (|P'| / chord)^2 allowed */
 	unsigned char *parts;   /* the quadrature's parts of each segment */
+	unsigned char *check;   /* and the final check's */
 	double e0;              /* the start's energy: E / e0 is descended,
 	                         * so steps do not depend on the units */
 };
@@ -664,7 +661,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	size_t nseg = o->closed ? n : n - 1;
-	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, NULL,
+	    1 };
 	double *mem, *x, *h, e, kmax, slow, fine;
 	int rc, loops, keep;
 
@@ -676,7 +674,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
 	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
-	    n / sizeof *mem + 1, sizeof *mem);
+	    2 * n / sizeof *mem + 1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	f.work = mem;
@@ -690,7 +688,9 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0) {
 		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
-		fine = choose_parts(seg, nseg, dim, f.parts, &e, &kmax, &slow);
+		f.check = f.parts + n;
+		fine = choose_parts(seg, nseg, dim, f.parts, f.check, &e, &kmax,
+		    &slow);
 		/* the chord spline's largest curvature, less rounding */
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
@@ -702,8 +702,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		 * start's crossings are looked for only where the result
 		 * crosses: the start is rebuilt, and the result again if the
 		 * start crosses too) */
-		keep = info->iterations > 0 && curve_energy(seg, nseg, dim,
-		    FAIR_CHECK, NULL, NULL, &kmax, NULL) < fine &&
+		keep = info->iterations > 0 && curve_energy(seg, nseg, dim, 0,
+		    f.check, NULL, &kmax, NULL) < fine &&
 		    max_curvature(seg, nseg, dim) <= f.kcap;
 		loops = keep && dim == 2 ? loft_fit_crosses(seg, nseg,
 		    o->closed) : 0;
