@@ -201,8 +201,8 @@ tame(const double *seg, size_t nseg, int dim)
  * Squares are compared, one root at the end.
  */
 #define FAIR_KSAMPLES 8
-static double
-max_curvature(const double *seg, size_t nseg, int dim)
+static FAIR_INLINE double
+curvature_body(const double *seg, size_t nseg, int dim)
 {
 	double big = 0;
 
@@ -237,6 +237,14 @@ max_curvature(const double *seg, size_t nseg, int dim)
 		}
 	}
 	return sqrt(big);
+}
+
+/* curvature_body, compiled apart for the plane as energy_body is. */
+static double
+max_curvature(const double *seg, size_t nseg, int dim)
+{
+	return dim == 2 ? curvature_body(seg, nseg, 2) :
+	    curvature_body(seg, nseg, dim);
 }
 
 /* The energy of all nseg segments, gradients into g unless NULL; each
