@@ -65,13 +65,16 @@
 /* Armijo's fraction of the first-order decrease a step must achieve. */
 #define FAIR_ARMIJO 1e-4
 
-/* 4-point Gauss-Legendre on [0, 1], on each of FAIR_PIECES equal parts
- * of a segment: within 1e-5 relative of the energy of the segments of a
- * fair curve.  A segment that turns sharply in a small part of it needs
- * more: FAIR_CHECK parts where the two differ on the start, and the
- * descent's result is checked against the start with FAIR_CHECK parts
- * (see loft__fit_fair). */
-#define FAIR_PIECES 2
+/* 4-point Gauss-Legendre on [0, 1], on each of 1, 2 or FAIR_CHECK equal
+ * parts of a segment: within 1e-5 relative of the energy of the
+ * segments of a fair curve at 2.  Each segment of the start takes 1
+ * part where 1 agrees with 2 to 1e-4 of its energy (4-point Gauss on
+ * 2 parts is some 2^8 times closer than on 1, so the difference is the
+ * error of 1), else 2 where 2 agree so with FAIR_CHECK, else FAIR_CHECK
+ * (a segment that turns sharply in a small part of it); most of an
+ * outline's take 1.  The descent's result is checked against the start
+ * by the next finer rule of each segment, 2 parts or FAIR_CHECK, the
+ * same for both (see loft__fit_fair). */
 #define FAIR_CHECK 8
 #define GAUSS 4
 static const double gauss_u[GAUSS] = {
@@ -84,55 +87,96 @@ static const double gauss_w[GAUSS] = {
 /*
  * The bending energy of segment s (a row P_A P_B P'_A P'_B) and, unless g
  * is NULL, its gradient with respect to P'_A and P'_B into g (2 dim); the
- * largest curvature at the quadrature points raises *kmax.  With V =
- * |P'|^2, W = |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2)
- * V^-5/2.  HUGE_VAL where the tangent vanishes.
+ * largest squared curvature at the quadrature points raises *k2max, the
+ * least (|P'| / chord)^2 there lowers *slow.  With V = |P'|^2, W =
+ * |P''|^2, U = P'.P'', the integrand k^2 |P'| is (VW - U^2) V^-5/2.
+ * HUGE_VAL where the tangent vanishes.  P' = D0 + u (B + u C) and P'' =
+ * B + 2 u C in powers of u: fewer products a point than the Hermite
+ * basis, and one root and one quotient a point.
  */
-static double
-segment_energy(const double *s, int dim, int pieces, double *g, double *kmax,
+/* energy_body is written once for any dim and compiled into
+ * segment_energy twice, once with dim = 2; GCC and Clang are told to
+ * (others may call it, the same numbers either way). */
+#if defined(__GNUC__)
+#define FAIR_INLINE inline __attribute__((always_inline))
+#else
+#define FAIR_INLINE inline
+#endif
+static FAIR_INLINE double
+energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
     double *slow)
 {
-	const double *a = s, *b = s + dim, *d0 = s + 2 * dim, *d1 = s + 3 * dim;
-	double c[LOFT_MAXDIM], e = 0, cc;
+	const double *d0 = s + 2 * dim, *d1 = s + 3 * dim;
+	double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM], e = 0, cc = 0, vmin = HUGE_VAL;
+	double kk = *k2max, step = 1.0 / pieces;
 
-	vsub(c, b, a, dim);
-	cc = vdot(c, c, dim);
+	for (int k = 0; k < dim; k++) {
+		double c = s[dim + k] - s[k];
+
+		cc += c * c;
+		bq[k] = 6 * c - 4 * d0[k] - 2 * d1[k];
+		cq[k] = 3 * (d0[k] + d1[k]) - 6 * c;
+	}
 	if (g != NULL)
 		memset(g, 0, 2 * dim * sizeof *g);
-	for (int q = 0; q < GAUSS * pieces; q++) {
-		double u = (q / GAUSS + gauss_u[q % GAUSS]) / pieces;
-		double wq = gauss_w[q % GAUSS] / pieces, a0 = 1 - 4 * u + 3 * u * u;
-		double a1 = -2 * u + 3 * u * u, gc = 6 * u - 6 * u * u;
-		double b0 = -4 + 6 * u, b1 = -2 + 6 * u, dc = 6 - 12 * u;
-		double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v, w, x, num, r;
+	for (int part = 0; part < pieces; part++)
+		for (int j = 0; j < GAUSS; j++) {
+			double u = (part + gauss_u[j]) * step, wq = gauss_w[j] * step;
+			double p1[LOFT_MAXDIM], p2[LOFT_MAXDIM], v = 0, w = 0, x = 0;
+			double num, sv, t, r, k2;
 
-		for (int k = 0; k < dim; k++) {
-			p1[k] = a0 * d0[k] + a1 * d1[k] + gc * c[k];
-			p2[k] = b0 * d0[k] + b1 * d1[k] + dc * c[k];
-		}
-		v = vdot(p1, p1, dim);
-		w = vdot(p2, p2, dim);
-		x = vdot(p1, p2, dim);
-		num = fmax(v * w - x * x, 0);
-		if (!(v > 0))
-			return HUGE_VAL;
-		r = 1 / (v * v * sqrt(v));              /* V^-5/2 */
-		e += wq * num * r;
-		*kmax = fmax(*kmax, sqrt(num / (v * v * v)));
-		if (slow != NULL)
-			*slow = fmin(*slow, v / cc);
-		if (g == NULL)
-			continue;
-		for (int k = 0; k < dim; k++) {
-			double f1 = (2 * w * p1[k] - 2 * x * p2[k]) * r -
-			    5 * num * r / v * p1[k];
-			double f2 = (2 * v * p2[k] - 2 * x * p1[k]) * r;
+			for (int k = 0; k < dim; k++) {
+				p2[k] = bq[k] + 2 * u * cq[k];
+				p1[k] = d0[k] + u * (bq[k] + u * cq[k]);
+				v += p1[k] * p1[k];
+				w += p2[k] * p2[k];
+				x += p1[k] * p2[k];
+			}
+			if (!(v > 0))
+				return HUGE_VAL;
+			num = v * w - x * x;
+			if (num < 0)
+				num = 0;
+			sv = sqrt(v);
+			t = 1 / (v * sv);               /* V^-3/2 */
+			r = t * t * sv;                 /* V^-5/2 */
+			k2 = num * t * t;
+			e += wq * num * r;
+			if (k2 > kk)
+				kk = k2;
+			if (v < vmin)
+				vmin = v;
+			if (g == NULL)
+				continue;
+			{
+				double a0 = 1 - 4 * u + 3 * u * u, a1 = -2 * u +
+				    3 * u * u, b0 = -4 + 6 * u, b1 = -2 + 6 * u;
+				double c5 = 5 * num * r * t * sv;       /* 5 num V^-7/2 */
 
-			g[k] += wq * (f1 * a0 + f2 * b0);
-			g[dim + k] += wq * (f1 * a1 + f2 * b1);
+				for (int k = 0; k < dim; k++) {
+					double f1 = 2 * (w * p1[k] - x * p2[k]) * r -
+					    c5 * p1[k];
+					double f2 = 2 * (v * p2[k] - x * p1[k]) * r;
+
+					g[k] += wq * (f1 * a0 + f2 * b0);
+					g[dim + k] += wq * (f1 * a1 + f2 * b1);
+				}
+			}
 		}
-	}
+	*k2max = kk;
+	if (slow != NULL && vmin / cc < *slow)
+		*slow = vmin / cc;
 	return e;
+}
+
+/* energy_body, compiled apart for the plane, where the loops over the
+ * coordinates unroll: most records are plane outlines. */
+static double
+segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
+    double *slow)
+{
+	return dim == 2 ? energy_body(s, 2, pieces, g, k2max, slow) :
+	    energy_body(s, dim, pieces, g, k2max, slow);
 }
 
 /* Whether every tangent vector of the segments is within FAIR_MAXMAG
@@ -154,63 +198,107 @@ tame(const double *seg, size_t nseg, int dim)
  * The largest curvature of the segments at FAIR_KSAMPLES + 1 even
  * points of each, ends included: the cap of the descent (which checks
  * it at the quadrature points) and the final check of its result.
+ * Squares are compared, one root at the end.
  */
 #define FAIR_KSAMPLES 8
-static double
-max_curvature(const double *seg, size_t nseg, int dim)
+static FAIR_INLINE double
+curvature_body(const double *seg, size_t nseg, int dim)
 {
 	double big = 0;
 
 	for (size_t s = 0; s < nseg; s++) {
-		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
-			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], v, x, w;
+		const double *q = seg + s * 4 * dim, *d0 = q + 2 * dim;
+		double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM];
 
-			loft_cubic_eval(seg + s * 4 * dim, dim,
-			    (double)j / FAIR_KSAMPLES, NULL, d1, d2);
-			v = vdot(d1, d1, dim);
-			w = vdot(d2, d2, dim);
-			x = vdot(d1, d2, dim);
+		for (int k = 0; k < dim; k++) {
+			double c = q[dim + k] - q[k];
+
+			bq[k] = 6 * c - 4 * d0[k] - 2 * q[3 * dim + k];
+			cq[k] = 3 * (d0[k] + q[3 * dim + k]) - 6 * c;
+		}
+		for (int j = 0; j <= FAIR_KSAMPLES; j++) {
+			double u = (double)j / FAIR_KSAMPLES, v = 0, w = 0, x = 0;
+			double num, k2;
+
+			for (int k = 0; k < dim; k++) {
+				double p1 = d0[k] + u * (bq[k] + u * cq[k]);
+				double p2 = bq[k] + 2 * u * cq[k];
+
+				v += p1 * p1;
+				w += p2 * p2;
+				x += p1 * p2;
+			}
 			if (!(v > 0))
 				return HUGE_VAL;
-			big = fmax(big, sqrt(fmax(v * w - x * x, 0) / (v * v * v)));
+			num = v * w - x * x;
+			k2 = num / (v * v * v);
+			if (k2 > big)
+				big = k2;
 		}
 	}
-	return big;
+	return sqrt(big);
+}
+
+/* curvature_body, compiled apart for the plane as energy_body is. */
+static double
+max_curvature(const double *seg, size_t nseg, int dim)
+{
+	return dim == 2 ? curvature_body(seg, nseg, 2) :
+	    curvature_body(seg, nseg, dim);
 }
 
 /* The energy of all nseg segments, gradients into g unless NULL; each
- * segment in parts[s] parts, or pieces where parts is NULL. */
+ * segment in parts[s] parts, or pieces where parts is NULL.  *kmax: the
+ * largest curvature at the quadrature points. */
 static double
 curve_energy(const double *seg, size_t nseg, int dim, int pieces,
     const unsigned char *parts, double *g, double *kmax, double *slow)
 {
-	double e = 0;
+	double e = 0, k2 = 0;
 
-	*kmax = 0;
 	if (slow != NULL)
 		*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++)
 		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
-		    pieces, g ? g + s * 2 * dim : NULL, kmax, slow);
+		    pieces, g ? g + s * 2 * dim : NULL, &k2, slow);
+	*kmax = sqrt(k2);
 	return e;
 }
 
-/* The parts of each segment of the start: FAIR_PIECES, or FAIR_CHECK
- * where the two rules differ by more than 1e-4 of its energy.  Returns
- * the start's energy by FAIR_CHECK parts. */
+/*
+ * The parts of each segment of the start into parts, and those of the
+ * final check into check (see FAIR_CHECK).  Returns the start's energy
+ * by the check's parts; its energy by the parts chosen into *e, the
+ * largest curvature and least speed by them into *kmax and *slow (as
+ * curve_energy).
+ */
 static double
-choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts)
+choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts,
+    unsigned char *check, double *e, double *kmax, double *slow)
 {
-	double fine = 0;
+	double fine = 0, kk = 0;
 
+	*e = 0;
+	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
-		double k, a = segment_energy(seg + s * 4 * dim, dim,
-		    FAIR_PIECES, NULL, &k, NULL), b = segment_energy(seg + s *
-		    4 * dim, dim, FAIR_CHECK, NULL, &k, NULL);
+		const double *q = seg + s * 4 * dim;
+		double k1 = 0, k2 = 0, k8 = 0, s1 = HUGE_VAL, s2 = HUGE_VAL;
+		double s8 = HUGE_VAL, a1 = segment_energy(q, dim, 1, NULL, &k1,
+		    &s1), a2 = segment_energy(q, dim, 2, NULL, &k2, &s2), b = a2;
 
-		parts[s] = fabs(a - b) <= 1e-4 * b ? FAIR_PIECES : FAIR_CHECK;
+		parts[s] = 1;
+		check[s] = 2;
+		if (!(fabs(a1 - a2) <= 1e-4 * a2)) {
+			b = segment_energy(q, dim, FAIR_CHECK, NULL, &k8, &s8);
+			check[s] = FAIR_CHECK;
+			parts[s] = fabs(a2 - b) <= 1e-4 * b ? 2 : FAIR_CHECK;
+		}
+		*e += parts[s] == 1 ? a1 : parts[s] == 2 ? a2 : b;
+		kk = fmax(kk, parts[s] == 1 ? k1 : parts[s] == 2 ? k2 : k8);
+		*slow = fmin(*slow, parts[s] == 1 ? s1 : parts[s] == 2 ? s2 : s8);
 		fine += b;
 	}
+	*kmax = sqrt(kk);
 	return fine;
 }
 
@@ -223,12 +311,15 @@ struct fair {
 	double kcap;
 	double slow;            /* the least (|P'| / chord)^2 allowed */
 	unsigned char *parts;   /* the quadrature's parts of each segment */
+	unsigned char *check;   /* and the final check's */
 	double e0;              /* the start's energy: E / e0 is descended,
 	                         * so steps do not depend on the units */
 };
 
 /* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
- * into f->seg, its energy (HUGE_VAL where a curvature passes the cap). */
+ * into f->seg, its energy (HUGE_VAL where a curvature passes the cap),
+ * and dE/dP' into f->gseg in the same pass: most tries are kept, and
+ * the gradient then needs only the adjoint. */
 static double
 try_intervals(struct fair *f, const double *x, double *h)
 {
@@ -242,21 +333,18 @@ try_intervals(struct fair *f, const double *x, double *h)
 		return HUGE_VAL;
 	if (!tame(f->seg, f->nseg, f->dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &kmax,
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
 	    &slow) / f->e0;
 	if (!(kmax <= f->kcap) || !(slow >= f->slow))
 		return HUGE_VAL;
 	return isfinite(e) ? e : HUGE_VAL;
 }
 
-/* dE/dx at the x last solved (h = exp(x)), into g. */
+/* dE/dx at the x last tried (h = exp(x)), into g, from the f->gseg of
+ * the try. */
 static void
 gradient(struct fair *f, const double *x, const double *h, double *g)
 {
-	double kmax;
-
-	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
-	    NULL);
 	loft__cspline_adjoint(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
@@ -319,12 +407,15 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 	size_t m = f->nseg + f->n;
 	double *g = v, *d = g + m, *xp = d + m, *sv[FAIR_MEMORY],
 	    *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
-	int it, k = 0, k0 = 0;
+	int it, k = 0, k0 = 0, stale = 0;
+	double kmax;
 
 	for (int j = 0; j < FAIR_MEMORY; j++) {
 		sv[j] = xp + m + 2 * j * m;
 		yv[j] = sv[j] + m;
 	}
+	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
+	    NULL);
 	gradient(f, x, h, g);
 	for (it = 0; it < FAIR_STEPS; it++) {
 		double gd = 0, big = 0, t = 1, en = HUGE_VAL;
@@ -353,10 +444,15 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		if (!(en <= e + FAIR_ARMIJO * t * gd)) {
 			memcpy(x, xp, m * sizeof *x);
+			stale = 1;
 			break;
 		}
 		if (e - en < FAIR_SETTLED * e) {
 			e = en;
+			it++;
+			break;
+		}
+		if (it + 1 == FAIR_STEPS) {     /* no step follows to use g */
 			it++;
 			break;
 		}
@@ -387,8 +483,10 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 		}
 		e = en;
 	}
-	/* the spline of the best x, in f->seg */
-	try_intervals(f, x, h);
+	/* the spline of the best x, in f->seg (already, unless the last
+	 * try failed) */
+	if (stale)
+		try_intervals(f, x, h);
 	return it;
 }
 
@@ -408,20 +506,72 @@ edges_cross(const double *a, const double *b, const double *c, const double *d)
 	    ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0));
 }
 
-/* The cells of a grid of g x g over [lo, lo + g w) that edge e covers. */
+/* The cell of each of the np points of pt in a grid of g x g over [lo,
+ * lo + g w), column and row, into cell (2 np numbers). */
 static void
-edge_cells(const double *pt, size_t np, size_t e, const double *lo, double w,
-    size_t g, size_t *c0, size_t *c1)
+point_cells(const double *pt, size_t np, const double *lo, double w, size_t g,
+    size_t *cell)
 {
-	const double *a = pt + 2 * e, *b = pt + 2 * ((e + 1) % np);
+	double iw = 1 / w;
+
+	for (size_t i = 0; i < 2 * np; i++) {
+		double x = (pt[i] - lo[i % 2]) * iw;
+
+		cell[i] = x < 0 ? 0 : x >= g ? g - 1 : (size_t)x;
+	}
+}
+
+/* The cells edge e covers, from its ends' cells: the cell of a point is
+ * monotonic in each coordinate, so the box of an edge's ends covers the
+ * cells of all its points. */
+static void
+edge_cells(const size_t *cell, size_t np, size_t e, size_t *c0, size_t *c1)
+{
+	const size_t *a = cell + 2 * e, *b = cell + 2 * (e + 1 == np ? 0 : e + 1);
 
 	for (int k = 0; k < 2; k++) {
-		double x0 = (fmin(a[k], b[k]) - lo[k]) / w;
-		double x1 = (fmax(a[k], b[k]) - lo[k]) / w;
-
-		c0[k] = x0 < 0 ? 0 : x0 >= g ? g - 1 : (size_t)x0;
-		c1[k] = x1 < 0 ? 0 : x1 >= g ? g - 1 : (size_t)x1;
+		c0[k] = a[k] < b[k] ? a[k] : b[k];
+		c1[k] = a[k] < b[k] ? b[k] : a[k];
 	}
+}
+
+/*
+ * Whether the closed polyline of the np points pt is shown simple by
+ * being star-shaped: seen from the mean of its points every edge turns
+ * the same way, by less than half a turn, and the edges cross the ray
+ * to the right of that centre once, so the polyline goes round it once
+ * with its angle always rising: each ray from the centre meets it once.
+ * 0 when not shown (it may still be simple): the grid decides then.  An
+ * outline's is nearly always shown, in one pass.
+ */
+static int
+star_simple(const double *pt, size_t np)
+{
+	double c[2] = { 0, 0 };
+	size_t up = 0, down = 0;
+	int turn = 0;
+
+	for (size_t i = 0; i < np; i++) {
+		c[0] += pt[2 * i];
+		c[1] += pt[2 * i + 1];
+	}
+	c[0] /= np;
+	c[1] /= np;
+	for (size_t i = 0; i < np; i++) {
+		const double *a = pt + 2 * i, *b = pt + 2 * (i + 1 == np ? 0 : i + 1);
+		double ax = a[0] - c[0], ay = a[1] - c[1], bx = b[0] - c[0];
+		double by = b[1] - c[1], cr = ax * by - ay * bx;
+		int t = cr > 0 ? 1 : cr < 0 ? -1 : 0;
+
+		if (t == 0 || (turn != 0 && t != turn))
+			return 0;
+		turn = t;
+		up += ay < 0 && by >= 0;
+		down += ay >= 0 && by < 0;
+	}
+	/* rising (falling) angles cross y = c upwards (downwards) only to
+	 * the right of c: once for one turn */
+	return turn > 0 ? up == 1 : down == 1;
 }
 
 /* Edges sorted into a grid of about one cell an edge, pairs tested
@@ -430,7 +580,7 @@ int
 loft_fit_crosses(const double *seg, size_t nseg, int closed)
 {
 	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
-	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, total = 0;
+	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, *cell, total = 0;
 	double *pt = calloc(2 * np, sizeof *pt), lo[2], hi[2], w;
 	int found = 0;
 
@@ -442,35 +592,49 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 		loft_cubic_eval(seg + 8 * s, 2, (double)(i - s * FAIR_POLY) /
 		    FAIR_POLY, pt + 2 * i, NULL, NULL);
 	}
+	if (closed && star_simple(pt, np)) {
+		free(pt);
+		return 0;
+	}
 	lo[0] = hi[0] = pt[0];
 	lo[1] = hi[1] = pt[1];
 	for (size_t i = 1; i < np; i++)
 		for (int k = 0; k < 2; k++) {
-			lo[k] = fmin(lo[k], pt[2 * i + k]);
-			hi[k] = fmax(hi[k], pt[2 * i + k]);
+			double z = pt[2 * i + k];
+
+			lo[k] = z < lo[k] ? z : lo[k];
+			hi[k] = z > hi[k] ? z : hi[k];
 		}
 	w = fmax(hi[0] - lo[0], hi[1] - lo[1]) / g * (1 + 1e-9);
-	cnt = calloc(g * g + 1, sizeof *cnt);
+	if (!(w > 0)) {                 /* all at one point */
+		free(pt);
+		return 0;
+	}
+	cell = malloc(2 * np * sizeof *cell);
+	cnt = cell != NULL ? calloc(g * g + 1, sizeof *cnt) : NULL;
+	if (cnt != NULL)
+		point_cells(pt, np, lo, w, g, cell);
 	for (size_t e = 0; cnt != NULL && e < ne; e++) {
 		size_t c0[2], c1[2];
 
-		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		edge_cells(cell, np, e, c0, c1);
 		for (size_t y = c0[1]; y <= c1[1]; y++)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				cnt[y * g + x + 1]++, total++;
 	}
-	list = cnt != NULL && w > 0 ? malloc((total + 1) * sizeof *list) : NULL;
+	list = cnt != NULL ? malloc((total + 1) * sizeof *list) : NULL;
 	if (list == NULL) {
 		free(pt);
+		free(cell);
 		free(cnt);
-		return w > 0 ? -1 : 0;
+		return -1;
 	}
 	for (size_t c = 1; c <= g * g; c++)
 		cnt[c] += cnt[c - 1];
 	for (size_t e = 0; e < ne; e++) {
 		size_t c0[2], c1[2];
 
-		edge_cells(pt, np, e, lo, w, g, c0, c1);
+		edge_cells(cell, np, e, c0, c1);
 		for (size_t y = c0[1]; y <= c1[1]; y++)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				list[cnt[y * g + x]++] = e;
@@ -494,6 +658,7 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 			}
 	}
 	free(pt);
+	free(cell);
 	free(cnt);
 	free(list);
 	return found;
@@ -504,9 +669,10 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	size_t nseg = o->closed ? n : n - 1;
-	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, 1 };
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, NULL,
+	    1 };
 	double *mem, *x, *h, e, kmax, slow, fine;
-	int rc, loops;
+	int rc, loops, keep;
 
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
@@ -516,7 +682,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
 	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
-	    n / sizeof *mem + 1, sizeof *mem);
+	    2 * n / sizeof *mem + 1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	f.work = mem;
@@ -530,26 +696,38 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0) {
 		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
-		fine = choose_parts(seg, nseg, dim, f.parts);
-		e = curve_energy(seg, nseg, dim, 0, f.parts, NULL, &kmax, &slow);
+		f.check = f.parts + n;
+		fine = choose_parts(seg, nseg, dim, f.parts, f.check, &e, &kmax,
+		    &slow);
 		/* the chord spline's largest curvature, less rounding */
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
-		loops = dim == 2 ? loft_fit_crosses(seg, nseg, o->closed) : 0;
 		if (isfinite(e) && e > 0)
 			info->iterations = descend(&f, x, h, h + n, 1);
 		/* not fairer by the finer rule, more bent, or crossing itself
-		 * where the start does not: the chord spline after all */
-		if (!(curve_energy(seg, nseg, dim, FAIR_CHECK, NULL, NULL, &kmax,
-		    NULL) < fine) || !(max_curvature(seg, nseg, dim) <= f.kcap) ||
-		    (dim == 2 && loops == 0 &&
-		    loft_fit_crosses(seg, nseg, o->closed) == 1)) {
+		 * where the start does not: the chord spline after all (the
+		 * start's crossings are looked for only where the result
+		 * crosses: the start is rebuilt, and the result again if the
+		 * start crosses too) */
+		keep = info->iterations > 0 && curve_energy(seg, nseg, dim, 0,
+		    f.check, NULL, &kmax, NULL) < fine &&
+		    max_curvature(seg, nseg, dim) <= f.kcap;
+		loops = keep && dim == 2 ? loft_fit_crosses(seg, nseg,
+		    o->closed) : 0;
+		if (!keep || loops == 1) {
 			for (size_t s = 0; s < nseg; s++)
 				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
 				    dim);
 			rc = loft__cspline_h(o, p, n, dim, h, NULL, seg, f.work,
 			    err);
+		}
+		if (rc == 0 && keep && loops == 1 && loft_fit_crosses(seg, nseg,
+		    o->closed) != 0) {
+			for (size_t s = 0; s < nseg; s++)
+				h[s] = exp(x[s]);
+			rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg,
+			    f.work, err);
 		}
 		info->converged = 1;
 	}

@@ -412,6 +412,57 @@ test_baselines_open(void)
 }
 
 /*
+ * loft_fit_crosses on polygons drawn as straight cubic pieces, whose
+ * crossings are known by construction: a pentagon either way round
+ * (star-shaped, none), the pentagram through the same points (round its
+ * centre twice with its angle always rising, five crossings), a bow tie
+ * (its sides cross at 0.4 and 0.6 of them), and a U that is simple but
+ * not star-shaped about its centre.
+ */
+static void
+polygon_segments(const double (*v)[2], const int *order, int n, double *seg)
+{
+	for (int i = 0; i < n; i++) {
+		const double *a = v[order[i]], *b = v[order[(i + 1) % n]];
+		double *s = seg + 8 * i;
+
+		for (int k = 0; k < 2; k++) {
+			s[k] = a[k];
+			s[2 + k] = b[k];
+			s[4 + k] = s[6 + k] = b[k] - a[k];
+		}
+	}
+}
+
+static void
+test_crosses(void)
+{
+	static const double u[8][2] = { { 0, 0 }, { 3, 0 }, { 3, 3 }, { 2, 3 },
+	    { 2, 1 }, { 1, 1 }, { 1, 3 }, { 0, 3 } };
+	static const double tie[4][2] = { { 0, 0 }, { 2, 3 }, { 2, 0 },
+	    { 0, 2 } };
+	static const int ccw[5] = { 0, 1, 2, 3, 4 }, cw[5] = { 4, 3, 2, 1, 0 };
+	static const int star[5] = { 0, 2, 4, 1, 3 };
+	static const int seq[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+	double v[5][2], seg[8 * 8];
+
+	for (int i = 0; i < 5; i++) {
+		v[i][0] = 10 + 3 * cos(2 * M_PI * i / 5);
+		v[i][1] = -4 + 3 * sin(2 * M_PI * i / 5);
+	}
+	polygon_segments((const double (*)[2])v, ccw, 5, seg);
+	CHECK(loft_fit_crosses(seg, 5, 1) == 0, "pentagon: no crossing");
+	polygon_segments((const double (*)[2])v, cw, 5, seg);
+	CHECK(loft_fit_crosses(seg, 5, 1) == 0, "pentagon clockwise");
+	polygon_segments((const double (*)[2])v, star, 5, seg);
+	CHECK(loft_fit_crosses(seg, 5, 1) == 1, "pentagram: crossings");
+	polygon_segments(tie, seq, 4, seg);
+	CHECK(loft_fit_crosses(seg, 4, 1) == 1, "bow tie");
+	polygon_segments(u, seq, 8, seg);
+	CHECK(loft_fit_crosses(seg, 8, 1) == 0, "U: no crossing");
+}
+
+/*
  * Grading (grade.c): the systems against their definitions (three
  * English sizes are an inch, 25.4 mm; three Paris points 2 cm), and a
  * 10 by 4 rectangle graded and mirrored by hand.
@@ -472,5 +523,6 @@ main(void)
 	test_ferguson_polygon();
 	test_baselines_open();
 	test_grade();
+	test_crosses();
 	return check_done("unit");
 }
