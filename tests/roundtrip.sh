@@ -93,4 +93,18 @@ $B/sample -n 4 "$T/insole.cubic" >"$T/s.pts"
 $B/fromcad "$T/s.csv" >"$T/back"
 e=$(same_rows "$T/s.pts" "$T/back" 0) && ok || no "$what: $e"
 
+# a hull lofted through its stations is a design tocad takes as it is
+# (issue 17): one exact surface a patch in STEP and IGES (an IGES entity
+# is two lines of the D section), a mesh in STL
+what="a lofted hull through tocad"
+$B/splinefit -o man/figures/hull.knots | $B/patchloft >"$T/hull.design"
+np=$(grep -c '^patch' "$T/hull.design")
+ns=$($B/tocad -f step "$T/hull.design" | grep -c 'B_SPLINE_SURFACE_WITH_KNOTS')
+ni=$($B/tocad -f iges "$T/hull.design" |
+    awk 'substr($0, 73, 1) == "D" && substr($0, 1, 8) + 0 == 128' | wc -l)
+nt=$($B/tocad -f stl -n 4 "$T/hull.design" | grep -c 'facet normal')
+[ "$np" -gt 1 ] && [ "$ns" -eq "$np" ] && [ "$ni" -eq $((2 * np)) ] &&
+    [ "$nt" -eq $((np * 4 * 4 * 2)) ] && ok ||
+    no "$what: $np patches; $ns STEP surfaces, $ni IGES lines, $nt STL facets"
+
 finish roundtrip
