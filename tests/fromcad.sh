@@ -331,23 +331,18 @@ out_is "points closed=0
 0 0
 25.4 0
 "
-# A path of 10^6 segments (and 10^5) in linear time: the larger may
-# take at most 25 times as long as the smaller (quadratic: 100).
-# (make check-valgrind asks for fewer through LOFT_BIG_KNOTS.)
+# A path of 10^6 segments (and 10^5) read whole: every segment a row.
+# (Its time, linear in the segments, is make bench's case fromcad-path;
+# make check-valgrind asks for fewer through LOFT_BIG_KNOTS.)
 BIG=${LOFT_BIG_KNOTS:-1000000}
 SMALL=$((BIG / 10))
 for n in $SMALL $BIG; do
 	awk -v n=$n 'BEGIN { printf "<svg><path d=\"M0 0"; for (i = 0; i < n; i++) printf "c1 0 1 1 1 1"; printf "\"/></svg>\n" }' >"$T/long$n.svg"
 done
-t0=$(date +%s%N)
 $F "$T/long$SMALL.svg" | wc -l >"$T/nsmall"
-t1=$(date +%s%N)
 $F "$T/long$BIG.svg" | wc -l >"$T/nbig"
-t2=$(date +%s%N)
 [ "$(cat "$T/nsmall")" = $((SMALL + 2)) ] && [ "$(cat "$T/nbig")" = $((BIG + 2)) ] && ok ||
     no "long paths: $(cat "$T/nsmall") and $(cat "$T/nbig") lines"
-awk -v a=$((t1 - t0)) -v b=$((t2 - t1)) 'BEGIN { exit !(b < 25 * a + 2e8) }' && ok ||
-    no "$BIG segments took $(((t2 - t1) / 1000000)) ms, $SMALL $(((t1 - t0) / 1000000)) ms: not linear"
 rm -f "$T"/long*.svg
 # Text quoted in a message keeps the message one line (found by fuzzing)
 printf '<svg><path d="M0 0 L1 0 L\n\001x"/></svg>' >"$T/ctl.svg"

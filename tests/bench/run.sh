@@ -28,6 +28,11 @@ $W/gen outline 1000000 >$W/outline.knots || exit 1
 $W/gen space 20000 >$W/space.knots || exit 1
 $W/gen spline $W/space.knots >$W/space.spline || exit 1
 $B/splinefit $W/insoles.knots >$W/insoles.cubic || exit 1
+# an SVG path of 10^5 and of 10^6 cubic segments: fromcad in linear time
+for n in 100000 1000000; do
+	awk -v n=$n 'BEGIN { printf "<svg><path d=\"M0 0"; for (i = 0; i < n; i++)
+	    printf "c1 0 1 1 1 1"; printf "\"/></svg>\n" }' >$W/path$n.svg
+done
 # 20,000 labelled records crowded on a grid (plot -l placed them in cubic
 # time once), and a bezier-surface of 64 x 64 control points
 awk 'BEGIN { for (i = 0; i < 20000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
@@ -99,6 +104,8 @@ while [ "$rep" -le "$REPS" ]; do
 	    case_ gnu-spline "$SPLINE -a -d 2 -p -n 440 $W/insoles.spline"
 	[ $have_scipy = 1 ] &&
 	    case_ scipy "$PYTHON tests/bench/scipy_spline.py 20 $W/insoles.knots"
+	case_ fromcad-path "$B/fromcad $W/path1000000.svg"
+	case_ fromcad-path-small "$B/fromcad $W/path100000.svg"
 	case_ plot-labels "$B/plot -l id $W/labels.pts"
 	case_ surface-63 "$B/sample -n 100 $W/surface63.bez"
 	case_ outline-fit "$B/splinefit $W/outline.knots"
@@ -133,3 +140,6 @@ echo
 echo "bench: fromcad of a 50 MB DXF against reading its bytes as numbers" \
     "(numbers: loft's converter on every line; awk: summing them)"
 $W/timeit -r $OUT fromcad/dxf-numbers fromcad/dxf-awk
+echo "bench: fromcad of an SVG path of 10^6 segments over one of 10^5" \
+    "(linear: about 10)"
+$W/timeit -r $OUT fromcad-path/fromcad-path-small
