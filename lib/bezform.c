@@ -54,28 +54,6 @@ loft_patch_bezier(const double *b, int dim, double *ctl)
 		}
 }
 
-void
-loft_bezier_split(const double *ctl, int deg, int dim, double t,
-    double *left, double *right)
-{
-	double w[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
-	int n = deg + 1;
-
-	for (int i = 0; i < n * dim; i++)
-		w[i] = ctl[i];
-	for (int r = 0; r < n; r++) {
-		/* w[0..n-r) is the r-th level of the triangle */
-		if (left != NULL)
-			vcopy(left + r * dim, w, dim);
-		if (right != NULL)
-			vcopy(right + (deg - r) * dim, w + (deg - r) * dim, dim);
-		for (int i = 0; i < deg - r; i++)
-			for (int k = 0; k < dim; k++)
-				w[i * dim + k] += t * (w[(i + 1) * dim + k] -
-				    w[i * dim + k]);
-	}
-}
-
 long
 loft_bezier_steps(const double *ctl, int deg, int dim, double tol, long max)
 {

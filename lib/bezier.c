@@ -62,6 +62,28 @@ casteljau_step(double *q, size_t npts, int dim, double t)
  * r the two points after one more step, and the point the last one.
  */
 void
+loft_bezier_split(const double *ctl, int deg, int dim, double t,
+    double *left, double *right)
+{
+	double w[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
+	int n = deg + 1;
+
+	for (int i = 0; i < n * dim; i++)
+		w[i] = ctl[i];
+	for (int r = 0; r < n; r++) {
+		/* w[0..n-r) is the r-th level of the triangle */
+		if (left != NULL)
+			vcopy(left + r * dim, w, dim);
+		if (right != NULL)
+			vcopy(right + (deg - r) * dim, w + (deg - r) * dim, dim);
+		for (int i = 0; i < deg - r; i++)
+			for (int k = 0; k < dim; k++)
+				w[i * dim + k] += t * (w[(i + 1) * dim + k] -
+				    w[i * dim + k]);
+	}
+}
+
+void
 loft_bezier_eval(const double *ctl, size_t npts, int dim, double t,
     double *p, double *d1, double *d2)
 {

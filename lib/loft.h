@@ -714,6 +714,14 @@ void loft_bezier_eval(const double *ctl, size_t npts, int dim, double t,
     double *p, double *d1, double *d2);
 
 /*
+ * Split the Bezier curve ctl of degree deg at t (de Casteljau): the
+ * control points of the parts over [0, t] and [t, 1] into left and right
+ * (deg + 1 points each; either may be NULL).  deg < LOFT_BEZIER_MAXPTS.
+ */
+void loft_bezier_split(const double *ctl, int deg, int dim, double t,
+    double *left, double *right);
+
+/*
  * The Bezier surface of degrees m in u and n in v (m, n < LOFT_BEZIER_MAXPTS)
  * with control points ctl, 3 numbers each, u-major (P_ij at
  * ctl[3 * (i * (n + 1) + j)]), at (u, v): point and the partial

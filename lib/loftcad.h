@@ -34,14 +34,6 @@
 void loft_patch_bezier(const double *b, int dim, double *ctl);
 
 /*
- * Split the Bezier curve ctl of degree deg at t (de Casteljau): the
- * control points of the parts over [0, t] and [t, 1] into left and right
- * (deg + 1 points each; either may be NULL).  deg < LOFT_BEZIER_MAXPTS.
- */
-void loft_bezier_split(const double *ctl, int deg, int dim, double t,
-    double *left, double *right);
-
-/*
  * The fewest equal parameter steps n that put the polyline through the
  * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
  * the same parameter, so every point of the curve is within tol of the

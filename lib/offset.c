@@ -227,26 +227,6 @@ bz_eval(const double *b, double t, double *p)
 		p[k] = w0 * b[k] + w1 * b[2 + k] + w2 * b[4 + k] + w3 * b[6 + k];
 }
 
-/* Split b at t into l (0 to t) and r (t to 1); either may be NULL. */
-static void
-bz_split(const double *b, double t, double *l, double *r)
-{
-	for (int k = 0; k < 2; k++) {
-		double a = b[k] + t * (b[2 + k] - b[k]);
-		double m = b[2 + k] + t * (b[4 + k] - b[2 + k]);
-		double c = b[4 + k] + t * (b[6 + k] - b[4 + k]);
-		double d = a + t * (m - a), e = m + t * (c - m);
-		double f = d + t * (e - d);
-
-		if (l != NULL) {
-			l[k] = b[k]; l[2 + k] = a; l[4 + k] = d; l[6 + k] = f;
-		}
-		if (r != NULL) {
-			r[k] = f; r[2 + k] = e; r[4 + k] = c; r[6 + k] = b[6 + k];
-		}
-	}
-}
-
 /* The part of b from ta to tb. */
 static void
 bz_sub(const double *b, double ta, double tb, double *out)
@@ -254,12 +234,12 @@ bz_sub(const double *b, double ta, double tb, double *out)
 	double r[8];
 
 	if (ta > 0) {
-		bz_split(b, ta, NULL, r);
+		loft_bezier_split(b, 3, 2, ta, NULL, r);
 		b = r;
 		tb = (tb - ta) / (1 - ta);
 	}
 	if (tb < 1)
-		bz_split(b, tb, out, NULL);
+		loft_bezier_split(b, 3, 2, tb, out, NULL);
 	else
 		memcpy(out, b, sizeof r);
 }
@@ -671,7 +651,7 @@ near_bz(const double *b, const double *q, double r2, double flat, int depth)
 		return 0;
 	if (depth >= 40 || bz_flat(b, flat))
 		return seg_dist2(b, b + 6, q) < r2;
-	bz_split(b, 0.5, l, r);
+	loft_bezier_split(b, 3, 2, 0.5, l, r);
 	return near_bz(l, q, r2, flat, depth + 1) ||
 	    near_bz(r, q, r2, flat, depth + 1);
 }
@@ -738,8 +718,8 @@ bz_isect(struct ctx *x, size_t i, const double *a, double a0, double a1,
 		return add_isect(x, i, a0 + s * (a1 - a0), j,
 		    b0 + t * (b1 - b0), e) ? -1 : 0;
 	}
-	bz_split(a, 0.5, al, ar);
-	bz_split(b, 0.5, bl, br);
+	loft_bezier_split(a, 3, 2, 0.5, al, ar);
+	loft_bezier_split(b, 3, 2, 0.5, bl, br);
 	{
 		double am = (a0 + a1) / 2, bm = (b0 + b1) / 2;
 		int r;
