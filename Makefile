@@ -12,7 +12,7 @@ PREFIX  = /usr/local
 DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          plot grade offset measure tocad patchloft patchcut fromcad
+          loftplot grade offset measure tocad patchloft patchcut fromcad
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
@@ -79,7 +79,7 @@ compare: all
 
 demo: all
 	bin/grade -r -3:4 man/figures/insole.knots | bin/splinefit | \
-	    bin/plot -l size > bin/insoles.svg
+	    bin/loftplot -l size > bin/insoles.svg
 	@echo "demo: wrote $$(pwd)/bin/insoles.svg: the insole of" \
 	    "man/figures/insole.knots graded into 8 sizes, -3 to +4, each fitted"
 
@@ -181,7 +181,7 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fsanitize=fuzzer,address,undefined,float-cast-overflow \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
-          patchjoin plot grade offset measure patchloft patchcut fromcad
+          patchjoin loftplot grade offset measure patchloft patchcut fromcad
 LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
 
 bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \

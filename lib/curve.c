@@ -1,6 +1,6 @@
 /*
  * curve.c: curve records of every type behind one interface, so that the
- * programs that evaluate curves (sample, and later plot) learn a new type
+ * programs that evaluate curves (sample, and later loftplot) learn a new type
  * in one place: a row in the table below.
  */
 #include <string.h>

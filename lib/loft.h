@@ -214,7 +214,7 @@ int loft_run_files(struct loft_run *run, int nfiles, char **files);
 int loft_run_made(struct loft_run *run);
 
 /*
- * For programs that write one document from all the records (plot):
+ * For programs that write one document from all the records (loftplot):
  * after loft_run_files has handed every record to a handler that kept
  * what it needs and wrote nothing, write doc[0..len) to run->out and
  * flush it, with loft_run_files' manners for a failed write (a message

@@ -1,6 +1,6 @@
 /*
  * surface.c: surface records of every type behind one interface, so
- * that the programs that evaluate surfaces (sample, and later plot)
+ * that the programs that evaluate surfaces (sample, and later loftplot)
  * learn a new type in one place: a row in the table below.
  */
 #include <string.h>

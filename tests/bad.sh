@@ -19,7 +19,7 @@
 #                    good ones leaves standard output empty.  P_good 1
 #                    and 2 need only be good together; a good case takes
 #                    record 1's place, before record 2.
-#   P_kind=document  P writes one document of all its input (plot): a
+#   P_kind=document  P writes one document of all its input (loftplot): a
 #                    bad record among good ones leaves the picture of the
 #                    good ones.
 #   P_empty=MESSAGE  an input with no records is an error: exit 1 and
@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin plot offset measure tocad patchloft patchcut"}
+    patchjoin loftplot offset measure tocad patchloft patchcut"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -99,7 +99,7 @@ quiet() {
 	[ ! -s "$T/err" ] && ok || no "$what: stderr: $(head -3 "$T/err" | cut -c1-200)"
 }
 # notes: standard error without the closing notes of a design program
-# (it wrote nothing) and of plot (nothing left to draw)
+# (it wrote nothing) and of loftplot (nothing left to draw)
 notes() {
 	case $KIND in
 	design) grep -a -v -F -x "$P: $DESIGN_NOTE" ;;
@@ -1710,20 +1710,20 @@ patchjoin_cases() {
 	UNITS_TR=tr_points
 }
 
-# ---- plot ------------------------------------------------------------------------
+# ---- loftplot ------------------------------------------------------------------------
 
-plot_kind=document
-plot_empty="plot: nothing to draw"
-plot_run() { "$B/plot" "$@"; }
-plot_good() {
+loftplot_kind=document
+loftplot_empty="loftplot: nothing to draw"
+loftplot_run() { "$B/loftplot" "$@"; }
+loftplot_good() {
 	case $1 in
 	1) printf 'cubic closed=0 id=1\n0 0 1 0 0 2 0 -2\n1 0 2 0 0 -2 0 2\n' ;;
-	# plane, as record 1: plot refuses wider points after it (sample -k)
+	# plane, as record 1: loftplot refuses wider points after it (sample -k)
 	2) printf 'points id=2\n0 1\n1 1\n2 1\n' ;;
 	esac
 }
 
-plot_cases() {
+loftplot_cases() {
 	opts
 	# issue 12: one far-out record among good ones emptied the picture
 	# and named no line; it is left out, named, and the rest drawn as if
@@ -1744,8 +1744,8 @@ plot_cases() {
 	what=$tc
 	awk 'BEGIN { for (i = 0; i < 6000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
 	    i, i % 60, int(i / 60), i % 60 + 1, int(i / 60) }' >"$T/case"
-	# (its speed is measured by make bench, case plot-labels)
-	"$B/plot" -l id "$T/case" >"$T/out" 2>"$T/err"
+	# (its speed is measured by make bench, case loftplot-labels)
+	"$B/loftplot" -l id "$T/case" >"$T/out" 2>"$T/err"
 	echo $? >"$T/rc"
 	status 0
 	[ "$(grep -c '^<text' "$T/out")" -eq 6000 ] && ok || no "$what: not 6000 labels"
@@ -1755,7 +1755,7 @@ plot_cases() {
 	knots '1e308 0\n-1e308 0\n'
 	run "$T/case"
 	status 1
-	[ "$(cat "$T/err")" = "plot: the drawing is too large to frame" ] && ok ||
+	[ "$(cat "$T/err")" = "loftplot: the drawing is too large to frame" ] && ok ||
 	    no "$what: $(head -2 "$T/err")"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
 	# found by fuzzing: one point near the largest double, its margin
@@ -1764,7 +1764,7 @@ plot_cases() {
 	knots '0 1.7976931348623157e308\n'
 	run "$T/case"
 	status 1
-	[ "$(cat "$T/err")" = "plot: the drawing is too large to frame" ] && ok ||
+	[ "$(cat "$T/err")" = "loftplot: the drawing is too large to frame" ] && ok ||
 	    no "$what: $(head -2 "$T/err")"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
 	knots '0 0\n1e-320 0\n'
@@ -1789,7 +1789,7 @@ plot_cases() {
 	printf 'cubic\n0 0 nan 0\n' >"$T/case"
 	run "$T/case"
 	status 1
-	[ "$(tail -n 1 "$T/err")" = "plot: nothing to draw" ] && ok ||
+	[ "$(tail -n 1 "$T/err")" = "loftplot: nothing to draw" ] && ok ||
 	    no "$what: $(cat "$T/err")"
 	[ ! -s "$T/out" ] && ok || no "$what: output"
 	tc="-K of a curve record"
@@ -1912,7 +1912,7 @@ measure_cases() {
 
 # ---- tocad -----------------------------------------------------------------------
 
-# tocad writes one document; as SVG it is checked as plot's is (tests/
+# tocad writes one document; as SVG it is checked as loftplot's is (tests/
 # tocad.sh reads every format back)
 tocad_kind=document
 tocad_empty="tocad: nothing to draw"

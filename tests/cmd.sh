@@ -41,7 +41,7 @@ out_is "0 0
 1 0
 "
 # -a: the header, as written above, as a comment before the same rows;
-# a surface's before its lines.  loft's reader skips it: plot draws the
+# a surface's before its lines.  loft's reader skips it: loftplot draws the
 # same picture with and without it.
 run "$B/sample -a -n 2 $T/seg.cubic"
 out_is "# cubic closed=0
@@ -53,9 +53,9 @@ printf 'cubic closed=0 size=+1 id=a=b\n0 0 1 0 0 2 0 -2\n' >"$T/attr.cubic"
 run "$B/sample -a -n 1 $T/attr.cubic"
 [ "$(head -1 "$T/out")" = "# cubic closed=0 size=+1 id=a=b" ] && ok ||
     no "sample -a: $(head -1 "$T/out")"
-$B/sample -n 4 $T/seg.cubic | $B/plot >"$T/plain.svg"
-$B/sample -a -n 4 $T/seg.cubic | $B/plot >"$T/attr.svg"
-cmp -s "$T/plain.svg" "$T/attr.svg" && ok || no "sample -a: plot reads it otherwise"
+$B/sample -n 4 $T/seg.cubic | $B/loftplot >"$T/plain.svg"
+$B/sample -a -n 4 $T/seg.cubic | $B/loftplot >"$T/attr.svg"
+cmp -s "$T/plain.svg" "$T/attr.svg" && ok || no "sample -a: loftplot reads it otherwise"
 run "$B/patchnew -i 7 -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/sample -a -n 1"
 [ "$(grep -n '^#' "$T/out")" = "1:# patch id=7" ] && ok ||
     no "sample -a of a patch: $(grep -n '#' "$T/out")"

@@ -14,7 +14,7 @@ P="$(pwd)/$T/prefix"
 rm -rf "$P"
 mkdir -p "$P/bin"
 echo "not loft's" >"$P/bin/other"
-# (without the caller's MAKEFLAGS, as tests/plot.sh runs make)
+# (without the caller's MAKEFLAGS, as tests/loftplot.sh runs make)
 if MAKEFLAGS= MFLAGS= make -s install PREFIX="$P" >"$T/out" 2>"$T/err"; then
 	ok
 else

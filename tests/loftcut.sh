@@ -189,7 +189,7 @@ awk -v w="$1" -v g="$2" -v n="$3" 'BEGIN { exit !(w <= 1e-12 && g <= 1e-14 && n 
 
 # ---- the design is one the other programs take -------------------------
 for c in "patchsplit -u 0.3" "patchsplit -v 0.5 -i 5" \
-    "patchdrag -i 5 -u 0.5 -v 0.5 -b 0,0.1,0" "sample -n 4" "plot" \
+    "patchdrag -i 5 -u 0.5 -v 0.5 -b 0,0.1,0" "sample -n 4" "loftplot" \
     "patchcut -x 3"; do
 	run "$B/$c $T/hull.design"
 	status 0

@@ -4,7 +4,7 @@
 # after SQLite's out-of-memory loops).  Each run that met its failure
 # must end in exit 1 with a message "PROG: ..." on standard error and
 # standard output holding only whole records of the run without the
-# failure (a filter: any of them; a design: all or none; plot: a whole
+# failure (a filter: any of them; a design: all or none; loftplot: a whole
 # SVG document, of the records it could read),
 # or, where the program or the C library could do without that memory
 # (a stdio buffer, say), exactly the output of that run and exit 0.
@@ -29,8 +29,8 @@ skip() {
 	exit 0
 }
 [ -n "$LOFT_BIN" ] && skip "the programs are wrappers (LOFT_BIN)"
-grep -q __asan_init "$B/plot" 2>/dev/null && skip "a sanitized build"
-LD_PRELOAD=$SHIM "$B/plot" -h >/dev/null 2>&1 ||
+grep -q __asan_init "$B/loftplot" 2>/dev/null && skip "a sanitized build"
+LD_PRELOAD=$SHIM "$B/loftplot" -h >/dev/null 2>&1 ||
     skip "the shim does not load here (it needs glibc)"
 command -v timeout >/dev/null 2>&1 && TO="timeout $TIMEOUT" || TO=
 
@@ -124,13 +124,13 @@ oom design patchnew -b "$T/bounds"
 oom design patchsplit -u 0.4 "$T/design"
 oom design patchdrag -i 1 -u 0.9 -v 0.5 -b 0,0,1 "$T/design"
 oom design patchjoin -P 1 -S 2 "$T/pieces"
-oom document plot -l id "$T/insole.cubic" "$T/design"
+oom document loftplot -l id "$T/insole.cubic" "$T/design"
 # the other paths: surfaces, OBJ, every layer of a picture
 "$B/bezapprox" -n 3,3 -x u -y v -z 'u*v' >"$T/net" || exit 2
 oom records sample -f obj "$T/net"
 oom records sample -d -k -u "$T/insole.cubic"
 oom records bezapprox -n 3,3 "$T/p1"
-oom document plot -c -b -m -t -K $F/insole.knots "$T/insole.cubic" "$T/net" \
+oom document loftplot -c -b -m -t -K $F/insole.knots "$T/insole.cubic" "$T/net" \
     "$T/p1"
 
 # issue 12: a record too large for memory (made so by failing every

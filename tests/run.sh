@@ -32,7 +32,7 @@ suite bin/test/bezier
 suite sh tests/bezapprox.sh
 suite bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
-suite sh tests/plot.sh
+suite sh tests/loftplot.sh
 suite sh tests/grade.sh
 suite sh tests/offset.sh
 suite bin/test/cad

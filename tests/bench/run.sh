@@ -33,7 +33,7 @@ for n in 100000 1000000; do
 	awk -v n=$n 'BEGIN { printf "<svg><path d=\"M0 0"; for (i = 0; i < n; i++)
 	    printf "c1 0 1 1 1 1"; printf "\"/></svg>\n" }' >$W/path$n.svg
 done
-# 20,000 labelled records crowded on a grid (plot -l placed them in cubic
+# 20,000 labelled records crowded on a grid (loftplot -l placed them in cubic
 # time once), and a bezier-surface of 64 x 64 control points
 awk 'BEGIN { for (i = 0; i < 20000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
     i, i % 140, int(i / 140), i % 140 + 1, int(i / 140) }' >$W/labels.pts
@@ -106,7 +106,7 @@ while [ "$rep" -le "$REPS" ]; do
 	    case_ scipy "$PYTHON tests/bench/scipy_spline.py 20 $W/insoles.knots"
 	case_ fromcad-path "$B/fromcad $W/path1000000.svg"
 	case_ fromcad-path-small "$B/fromcad $W/path100000.svg"
-	case_ plot-labels "$B/plot -l id $W/labels.pts"
+	case_ loftplot-labels "$B/loftplot -l id $W/labels.pts"
 	case_ surface-63 "$B/sample -n 100 $W/surface63.bez"
 	case_ outline-fit "$B/splinefit $W/outline.knots"
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"

@@ -1,5 +1,5 @@
 /*
- * plot.c: libFuzzer harness of plot's record handler and its writer of
+ * loftplot.c: libFuzzer harness of loftplot's record handler and its writer of
  * the picture.  Byte 0 chooses the options, byte 1 the steps; the rest
  * is the stream.  The picture of what was kept must be one SVG document
  * with no NaN or infinity in it.
@@ -7,7 +7,7 @@
  *           bits 4-5  -v xy, yz, xz, iso   bit 6  -l id   bit 7  -C 1
  *   byte 1: bits 0-2  -n 1..8   bits 3-5  -g 1..8
  */
-#include "../../cmd/plot.c"
+#include "../../cmd/loftplot.c"
 #include <strings.h>
 
 #include "fuzz.h"
@@ -45,7 +45,7 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	struct pic pc = { 0 };
-	struct loft_run run = { .prog = "plot", .msg = fuzz_null(),
+	struct loft_run run = { .prog = "loftplot", .msg = fuzz_null(),
 	    .handle = keep_record, .ctx = &pc };
 	struct doc d = { 0 };
 	struct loft_error err;

@@ -1,14 +1,14 @@
 /*
- * plot: draw every record of the input as one SVG picture: curves as
+ * loftplot: draw every record of the input as one SVG picture: curves as
  * paths (exact cubic Bezier segments for cubic records, sampled
  * polylines for other curve types), surfaces as wireframes of
  * iso-parameter lines, point records as polylines, knots as markers,
  * and on request curvature combs, end tangents and Bezier control
  * polygons.
  *
- * plot reads all its input before it writes: the picture's frame depends
+ * loftplot reads all its input before it writes: the picture's frame depends
  * on every record.  Bad records are reported and left out; the picture
- * of the good ones is written whole, and plot exits 1.
+ * of the good ones is written whole, and loftplot exits 1.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -144,7 +144,7 @@ struct doc {
 };
 
 static const char usage_text[] =
-    "usage: plot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
+    "usage: loftplot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
     "[-l key]\n            [-n steps] [-v xy|yz|xz|iso] [file ...]\n";
 
 /* Colours of records 0, 1, ... in turn; the -K knots are black. */
@@ -311,7 +311,7 @@ check_points(const struct loft_record *rec, struct loft_error *err)
 		return loft_fail(err, LOFT_EINPUT, -1, "record has no points");
 	if (rec->ncols < 2 || rec->ncols > LOFT_MAXDIM)
 		return loft_fail(err, LOFT_EINPUT, 0, "points have %d number%s; "
-		    "plot reads 2 or 3 coordinates (no extra columns)",
+		    "loftplot reads 2 or 3 coordinates (no extra columns)",
 		    rec->ncols, rec->ncols == 1 ? "" : "s");
 	return 0;
 }
@@ -734,7 +734,7 @@ check_dim(struct pic *pc, int dim, int points, struct loft_error *err)
 	else if (points && dim > pc->dim)
 		return loft_fail(err, LOFT_EINPUT, -1, "%d coordinates, where "
 		    "the first record has %d: rows of sample -k, -d, -s or -t? "
-		    "plot draws coordinates alone", dim, pc->dim);
+		    "loftplot draws coordinates alone", dim, pc->dim);
 	return 0;
 }
 
@@ -1752,7 +1752,7 @@ take_out_farthest(struct pic *pc)
 			far = r;
 		}
 	}
-	fprintf(stderr, "plot: %s:%ld: too far out to be framed with the "
+	fprintf(stderr, "loftplot: %s:%ld: too far out to be framed with the "
 	    "other records: left out\n", pc->rec[far].file,
 	    pc->rec[far].line);
 	/* its strokes and label go; those after it move up a number */
@@ -1808,7 +1808,7 @@ main(int argc, char *argv[])
 {
 	static const char *const views[] = { "xy", "yz", "xz", "iso", NULL };
 	struct pic pc = { .steps = 16, .grid = 8 };
-	struct loft_run run = { .prog = "plot", .out = stdout, .msg = stderr,
+	struct loft_run run = { .prog = "loftplot", .out = stdout, .msg = stderr,
 	    .handle = keep_record, .ctx = &pc };
 	struct doc d = { 0 };
 	struct loft_error err;
@@ -1841,7 +1841,7 @@ main(int argc, char *argv[])
 		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0) {
-			fprintf(stderr, "plot: -%c %s\n", c, err.msg);
+			fprintf(stderr, "loftplot: -%c %s\n", c, err.msg);
 			loft_usage(usage_text, 2);
 		}
 	}
@@ -1854,7 +1854,7 @@ main(int argc, char *argv[])
 	}
 	loft_run_files(&run, argc - optind, argv + optind);
 	if (pc.nst == 0) {
-		fputs("plot: nothing to draw\n", stderr);
+		fputs("loftplot: nothing to draw\n", stderr);
 		status = 1;
 	} else if ((rc = write_svg(&d, &pc, &err)) != 0) {
 		/* one far-out record must not empty the whole picture */
@@ -1865,7 +1865,7 @@ main(int argc, char *argv[])
 			rc = write_svg(&d, &pc, &err);
 		}
 		if (rc != 0)
-			fprintf(stderr, "plot: %s\n", err.msg);
+			fprintf(stderr, "loftplot: %s\n", err.msg);
 		else
 			loft_run_write(&run, d.buf, d.len);
 		status = 1;     /* a record was left out, or nothing drawn */

@@ -1,17 +1,17 @@
 #!/bin/sh
-# plot.sh: command tests of plot and grade, and the figures of
+# loftplot.sh: command tests of loftplot and grade, and the figures of
 # man/figures, run from the top of the tree.  Expected values are
 # derived by hand in the comments; the last line is
-# "plot: N passed, M failed".
+# "loftplot: N passed, M failed".
 
 B=bin
-T=bin/test/plot
+T=bin/test/loftplot
 . tests/lib.sh
 
-# ---- an XML well-formedness checker, independent of plot --------------
+# ---- an XML well-formedness checker, independent of loftplot --------------
 # Elements nest and close, one root, attributes name="value" given once,
 # '&' only in entities, no text outside the root.  Stricter than XML
-# (no single quotes, no CDATA), which plot never needs.
+# (no single quotes, no CDATA), which loftplot never needs.
 XMLCHECK='
 function bad(m) { print FILENAME ": " m > "/dev/stderr"; failed = 1; exit 1 }
 function entities(s,   t) {
@@ -121,12 +121,12 @@ printf 'points name=rect\n0 0\n0 -20\n100 -20\n100 20\n0 20\n' \
     >"$T/rect.knots"
 
 # ---- usage -------------------------------------------------------------
-for p in plot grade; do
+for p in loftplot grade; do
 	usage_ok "$p"
 done
-fails 2 "-v 'zx': want xy, yz, xz or iso" "$B/plot -v zx $T/seg.cubic"
-fails 2 "-n '0'" "$B/plot -n 0 $T/seg.cubic"
-fails 2 "-C '0'" "$B/plot -C 0 $T/seg.cubic"
+fails 2 "-v 'zx': want xy, yz, xz or iso" "$B/loftplot -v zx $T/seg.cubic"
+fails 2 "-n '0'" "$B/loftplot -n 0 $T/seg.cubic"
+fails 2 "-C '0'" "$B/loftplot -C 0 $T/seg.cubic"
 fails 2 "-s sizes or -r steps is needed" "$B/grade $T/rect.knots"
 fails 2 "-r '3:1': want SIZE or FROM:TO[:STEP]" "$B/grade -r 3:1 $T/rect.knots"
 fails 2 "-r '-1:x'" "$B/grade -r -1:x $T/rect.knots"
@@ -134,7 +134,7 @@ fails 2 "-r '0:1001'" "$B/grade -r 0:1001 $T/rect.knots"
 fails 2 "-l '-1'" "$B/grade -r 0:1 -l -1 $T/rect.knots"
 fails 2 "-o '1': want 2 numbers" "$B/grade -r 0:1 -o 1 $T/rect.knots"
 
-# ---- plot: the Bezier conversion and the frame, by hand ---------------
+# ---- loftplot: the Bezier conversion and the frame, by hand ---------------
 # The segment P_A = (0,0), P_B = (1,0), P'_A = (0,2), P'_B = (0,-2):
 # B1 = P_A + P'_A/3 = (0, 2/3), B2 = P_B - P'_B/3 = (1, 2/3); SVG's y
 # runs down, so y is written negated.  The curve's top is P(1/2) =
@@ -142,7 +142,7 @@ fails 2 "-o '1': want 2 numbers" "$B/grade -r 0:1 -o 1 $T/rect.knots"
 # the frame is [0,1] x [0,0.5] with a margin of 4% of 1: viewBox
 # -0.04 -0.54 1.08 0.58, coordinates to 1e-6 of 1.08, 6 decimals; the
 # picture is 640 wide and 640 x 0.58/1.08 = 343.7 high (equal scales).
-run "$B/plot $T/seg.cubic"
+run "$B/loftplot $T/seg.cubic"
 status 0
 cp "$T/out" "$T/seg.svg"
 svg_ok "$T/seg.svg"
@@ -157,31 +157,31 @@ svg_ok "$T/seg.svg"
 # P'_A = (3,0,0), P'_B = (0,3,0): B1 = (1,0,0), B2 = (0,-1,3).
 # -v xz: (0,0) (1,0) (0,3) (0,3); -v yz: (0,0) (0,0) (-1,3) (0,3).
 printf 'cubic\n0 0 0 0 0 3 3 0 0 0 3 0\n' >"$T/space.cubic"
-run "$B/plot -v xz $T/space.cubic"
+run "$B/loftplot -v xz $T/space.cubic"
 [ "$(path_d curve "$T/out")" = "M0 0 C1 0 0 -3 0 -3" ] && ok ||
     no "-v xz: $(path_d curve "$T/out")"
-run "$B/plot -v yz $T/space.cubic"
+run "$B/loftplot -v yz $T/space.cubic"
 [ "$(path_d curve "$T/out")" = "M0 0 C0 0 -1 -3 0 -3" ] && ok ||
     no "-v yz: $(path_d curve "$T/out")"
 # Points at the origin and on the axes, -v iso (the view from (1,1,1)):
 # (x,y,z) -> ((y-x)/sqrt 2, (2z-x-y)/sqrt 6): (0,0), (-0.707107,
 # -0.408248), (0.707107, -0.408248), (0, 0.816497); y negated.
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$T/axes.pts"
-run "$B/plot -v iso $T/axes.pts"
+run "$B/loftplot -v iso $T/axes.pts"
 status 0
 [ "$(path_d curve "$T/out")" = \
     "M0 0 L-0.707107 0.408248 L0.707107 0.408248 L0 -0.816497" ] && ok ||
     no "-v iso: $(path_d curve "$T/out")"
-run "$B/plot $T/axes.pts"
+run "$B/loftplot $T/axes.pts"
 [ "$(path_d curve "$T/out")" = "M0 0 L1 0 L0 -1 L0 0" ] && ok ||
     no "3-D points, default xy: $(path_d curve "$T/out")"
 
-# ---- plot's Bezier curve is sample's curve ------------------------------
+# ---- loftplot's Bezier curve is sample's curve ------------------------------
 # Evaluate every Bezier segment of the insole's path at u = j/8 by the
 # Bernstein form and compare with sample -n 8 (the same parameters).
 # Coordinates are written to 1e-6 of the 356 mm frame: within 1e-3 mm.
 $B/splinefit man/figures/insole.knots >"$T/insole.cubic"
-$B/plot -K man/figures/insole.knots "$T/insole.cubic" >"$T/insole.svg"
+$B/loftplot -K man/figures/insole.knots "$T/insole.cubic" >"$T/insole.svg"
 svg_ok "$T/insole.svg"
 $B/sample -n 8 "$T/insole.cubic" >"$T/insole.pts"
 path_d curve "$T/insole.svg" | awk -v n=8 '
@@ -254,7 +254,7 @@ awk -v vb="$(svg_attr viewBox "$T/insole.svg")" \
 # is -0.2 kn, away from the centre of curvature: (0,0)-(-0.3,0),
 # (0.5,0.5)-(0.5,0.855556), (1,0)-(1.3,0).  The frame, [-0.3,1.3] x
 # [0,0.86] and 4% of 1.6, is 1.73 wide: 6 decimals.
-run "$B/plot -C 0.2 -n 2 $T/seg.cubic"
+run "$B/loftplot -C 0.2 -n 2 $T/seg.cubic"
 status 0
 [ "$(path_d comb "$T/out")" = \
     "M0 0 L-0.3 0 M0.5 -0.5 L0.5 -0.855556 M1 0 L1.3 0" ] && ok ||
@@ -265,7 +265,7 @@ status 0
 # curve 1 wide; each is cut to half the curve's larger side, 0.5, along
 # its own direction: (0,0)-(-0.5,0), (0.5,0.5)-(0.5,1), (1,0)-(1.5,0),
 # and the frame stays [-0.5,1.5] x [0,1] and its margin, 2.16 x 1.16.
-run "$B/plot -C 1 -n 2 $T/seg.cubic"
+run "$B/loftplot -C 1 -n 2 $T/seg.cubic"
 status 0
 [ "$(path_d comb "$T/out")" = "M0 0 L-0.5 0 M0.5 -0.5 L0.5 -1 M1 0 L1.5 0" ] &&
     ok || no "comb cap: $(path_d comb "$T/out")"
@@ -276,7 +276,7 @@ grep -q 'viewBox="-0.58 -1.08 2.16 1.16"' "$T/out" && ok ||
 # the sign of sample -k's curvature), and 600 times the curvature long.
 # Teeth come at u = j/8, j = 0..8, per segment; sample's rows at
 # j = 0..7.  Coordinates are good to 1e-4 mm.
-$B/plot -C 600 -n 8 "$T/insole.cubic" >"$T/comb.svg"
+$B/loftplot -C 600 -n 8 "$T/insole.cubic" >"$T/comb.svg"
 svg_ok "$T/comb.svg"
 $B/sample -n 8 -d -k "$T/insole.cubic" >"$T/insole.dk"
 path_d comb "$T/comb.svg" | awk '
@@ -308,7 +308,7 @@ END { if (n != 22 * 8) { print n " teeth checked"; exit 1 } }
 ' - "$T/insole.dk" >"$T/msg" && ok || no "comb on the insole: $(cat "$T/msg")"
 # a 3-D curve's comb: Fig. 14's seam in each view, well-formed
 for v in xy yz xz iso; do
-	run "$B/splinefit man/figures/manning-fig14.knots | $B/plot -c -v $v"
+	run "$B/splinefit man/figures/manning-fig14.knots | $B/loftplot -c -v $v"
 	status 0
 	cp "$T/out" "$T/seam-$v.svg"
 	svg_ok "$T/seam-$v.svg"
@@ -319,7 +319,7 @@ done
 # line (the polylines of class curve, mesh, control-polygon, tangents,
 # comb-envelope: M and L only) or another label's box, and a leader line
 # ends on a label's box and crosses no other.  A label's box is
-# the estimate plot promises in plot(1): 0.62 em a character wide, from
+# the estimate loftplot promises in loftplot(1): 0.62 em a character wide, from
 # its point (or centred on it with text-anchor), 1 em high with the
 # baseline 0.15 em above its foot; em = 12 times the scale.  Each line
 # is walked in steps of a tenth of an em, so a line crossing a box is
@@ -423,7 +423,7 @@ awk 'BEGIN { for (k = 0; k < 8; k++) { print "points size=" k - 3
 	print "points size=across"; print 8, 0; print 20, 0; print ""
 	for (k = 0; k < 5; k++) printf "points size=f%d\n0 -20\n%d %d\n\n", k, 18 - k, k - 16 }' \
     >"$T/rings.pts"
-run "$B/plot -l size $T/rings.pts"
+run "$B/loftplot -l size $T/rings.pts"
 status 0
 cp "$T/out" "$T/rings.svg"
 svg_ok "$T/rings.svg"
@@ -435,7 +435,7 @@ svg_ok "$T/rings.svg"
 # outlines crowd, out to the right with leaders that cross no label
 # (the curves are cubic paths, not polylines: the labels and leaders
 # alone are checked here).
-run "$B/grade -r -3:4 man/figures/insole.knots | $B/splinefit | $B/plot -l size"
+run "$B/grade -r -3:4 man/figures/insole.knots | $B/splinefit | $B/loftplot -l size"
 status 0
 [ "$(grep -c '<text' "$T/out")" = 8 ] && grep -v 'class="curve"' "$T/out" |
     awk "$LABELS_CLEAR" >"$T/clear" && ok || no "graded labels: $(head -3 "$T/clear")"
@@ -449,12 +449,12 @@ cat "$T/rings.svg" "$T/hatch" | awk "$LABELS_CLEAR" >/dev/null &&
 
 # -t: the segment's tangents / 3, from the ends: (0,0)-(0,2/3) and
 # (1,0)-(1,2/3).
-run "$B/plot -t $T/seg.cubic"
+run "$B/loftplot -t $T/seg.cubic"
 [ "$(path_d tangents "$T/out")" = "M0 0 L0 -0.666667 M1 0 L1 -0.666667" ] &&
     ok || no "-t: $(path_d tangents "$T/out")"
 # Labels: the attribute's value, escaped, or the record's number.
 run "{ printf 'points name=a<b&\"c\"\n0 0\n1 1\n\npoints\n0 1\n1 0\n'; } |
-    $B/plot -l name"
+    $B/loftplot -l name"
 status 0
 cp "$T/out" "$T/labels.svg"
 svg_ok "$T/labels.svg"
@@ -463,7 +463,7 @@ svg_ok "$T/labels.svg"
     no "labels: $(grep '<text' "$T/labels.svg")"
 # Two records share their rightmost point (1,1): their labels do not
 # overlap, and neither meets a line (LABELS_CLEAR below).
-run "printf '0 0\n1 1\n\n0 1\n1 1\n' | $B/plot -l n"
+run "printf '0 0\n1 1\n\n0 1\n1 1\n' | $B/loftplot -l n"
 [ "$(grep -c '<text' "$T/out")" = 2 ] && awk "$LABELS_CLEAR" "$T/out" &&
     ok || no "labels at one point overlap: $(grep '<text' "$T/out")"
 # Patch ids at the patch's middle, f(1/2, 1/2), not at a corner: the
@@ -473,7 +473,7 @@ run "printf '0 0\n1 1\n\n0 1\n1 1\n' | $B/plot -l n"
 # the iso view a point goes to ((y - x)/sqrt 2, (2z - x - y)/sqrt 6),
 # y up; the label is centred there (text-anchor middle).
 run "$B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/patchsplit -u 0.5 |
-    $B/plot -v iso -l id"
+    $B/loftplot -v iso -l id"
 status 0
 sed -n 's/.*text-anchor="middle".*translate(\([^ ]*\) \([^)]*\)).*>\([0-9]*\)<.*/\3 \1 \2/p' \
     "$T/out" | awk 'function want(id, x, y, z) {
@@ -485,23 +485,23 @@ sed -n 's/.*text-anchor="middle".*translate(\([^ ]*\) \([^)]*\)).*>\([0-9]*\)<.*
     no "patch ids not at f(1/2,1/2): $(grep '<text' "$T/out")"
 # -B: a rectangle of that colour under everything, the size of the
 # frame; a colour that is neither a name nor #rgb/#rrggbb is refused.
-run "$B/plot -B '#102030' $T/seg.cubic"
+run "$B/loftplot -B '#102030' $T/seg.cubic"
 status 0
 [ "$(sed -n 's/.*viewBox="\([^"]*\)".*/\1/p' "$T/out")" = \
     "$(sed -n 's/<rect class="background" fill="#102030" stroke="none" x="\([^"]*\)" y="\([^"]*\)" width="\([^"]*\)" height="\([^"]*\)"\/>/\1 \2 \3 \4/p' "$T/out")" ] &&
     [ "$(grep -n '<rect' "$T/out" | cut -d: -f1)" -lt "$(grep -n '<path' "$T/out" | head -1 | cut -d: -f1)" ] &&
     ok || no "-B: $(grep '<rect\|viewBox' "$T/out")"
-run "$B/plot $T/seg.cubic"
+run "$B/loftplot $T/seg.cubic"
 grep -q '<rect' "$T/out" && no "a background without -B" || ok
-fails 2 "-B '#12': a colour is a name (white) or #rgb or #rrggbb" "$B/plot -B '#12' $T/seg.cubic"
-fails 2 "-B 'red\"/>': a colour" "$B/plot -B 'red\"/>' $T/seg.cubic"
+fails 2 "-B '#12': a colour is a name (white) or #rgb or #rrggbb" "$B/loftplot -B '#12' $T/seg.cubic"
+fails 2 "-B 'red\"/>': a colour" "$B/loftplot -B 'red\"/>' $T/seg.cubic"
 # Rows of the wrong width: sample -k of a plane curve writes x y k, which
 # drawn with the curve would be a 3-D point record: refused, named, and
 # the curve still drawn.
-run "{ $B/splinefit $T/rect.knots; $B/splinefit $T/rect.knots | $B/sample -k -n 2; } | $B/plot"
+run "{ $B/splinefit $T/rect.knots; $B/splinefit $T/rect.knots | $B/sample -k -n 2; } | $B/loftplot"
 status 1
-says "plot: <stdin>:"
-says "3 coordinates, where the first record has 2: rows of sample -k, -d, -s or -t? plot draws coordinates alone"
+says "loftplot: <stdin>:"
+says "3 coordinates, where the first record has 2: rows of sample -k, -d, -s or -t? loftplot draws coordinates alone"
 [ "$(grep -c 'class="curve"' "$T/out")" = 1 ] && ok || no "the good curve not drawn"
 # A bezier record is drawn as a polyline within a quarter pixel of it:
 # the parabola of control points (0,0) (1,2) (2,0), y = x (2 - x).  A
@@ -512,7 +512,7 @@ says "3 coordinates, where the first record has 2: rows of sample -k, -d, -s or 
 # is 0.25 px of the record's own extent, 2: 0.25 * 2 / 640.  Each vertex
 # is on the parabola, and the polyline is not needlessly fine: some
 # chord is more than a quarter of the tolerance away.
-run "printf 'bezier\n0 0\n1 2\n2 0\n' | $B/plot"
+run "printf 'bezier\n0 0\n1 2\n2 0\n' | $B/loftplot"
 status 0
 path_d curve "$T/out" | tr 'ML' '\n\n' | awk 'NF == 2 {
 	x = $1; y = -$2; n++
@@ -524,9 +524,9 @@ path_d curve "$T/out" | tr 'ML' '\n\n' | awk 'NF == 2 {
 	exit !(n > 3 && !bad && most <= tol && most > tol / 4 && px == 2) }' &&
     ok || no "bezier not flattened within 1/4 px: $(path_d curve "$T/out" | head -c 300)"
 # -m marks the rows of a point record; a graded set, labelled by size.
-run "$B/plot -m $T/rect.knots"
+run "$B/loftplot -m $T/rect.knots"
 grep -q 'class="points"' "$T/out" && ok || no "-m draws no markers"
-run "$B/grade -r -1:1 man/figures/insole.knots | $B/splinefit | $B/plot -l size"
+run "$B/grade -r -1:1 man/figures/insole.knots | $B/splinefit | $B/loftplot -l size"
 status 0
 cp "$T/out" "$T/graded.svg"
 svg_ok "$T/graded.svg"
@@ -534,53 +534,53 @@ svg_ok "$T/graded.svg"
     [ "$(sed -n 's/.*<text [^>]*>\(.*\)<\/text>/\1/p' "$T/graded.svg" |
     tr '\n' ' ')" = "-1 0 +1 " ] && ok || no "graded set: 3 curves, -1 0 +1"
 
-# ---- plot: bad input ----------------------------------------------------
+# ---- loftplot: bad input ----------------------------------------------------
 # Good records around bad ones: the bad are reported, the picture of the
 # good is written whole, exit 1.
 { cat "$T/seg.cubic"; printf '\ncubic\n1 2 3\n\n'; cat "$T/rect.knots"
   printf '\nspline\n1 2\n'; } >"$T/mixed"
-run "$B/plot $T/mixed"
+run "$B/loftplot $T/mixed"
 status 1
-says "plot: $T/mixed:5: cubic rows need 8 or 12 numbers, not 3"
-says "plot: $T/mixed:14: unknown record type 'spline'"
+says "loftplot: $T/mixed:5: cubic rows need 8 or 12 numbers, not 3"
+says "loftplot: $T/mixed:14: unknown record type 'spline'"
 cp "$T/out" "$T/mixed.svg"
 svg_ok "$T/mixed.svg"
 [ "$(grep -c 'class="curve"' "$T/mixed.svg")" = 2 ] && ok ||
     no "good records around bad ones: 2 curves"
-fails 1 "plot: nothing to draw" "$B/plot /dev/null"
-fails 1 "plot: <stdin>:2: cubic rows need" "printf 'cubic\n1 2 3\n' | $B/plot"
-fails 1 "points have 4 numbers; plot reads 2 or 3" \
-    "printf '1 2 3 4\n' | $B/plot"
-fails 1 "points have 1 number;" "printf '1\n2\n' | $B/plot"
-fails 1 "cubic record: -K reads knots" "$B/plot -K $T/seg.cubic /dev/null"
+fails 1 "loftplot: nothing to draw" "$B/loftplot /dev/null"
+fails 1 "loftplot: <stdin>:2: cubic rows need" "printf 'cubic\n1 2 3\n' | $B/loftplot"
+fails 1 "points have 4 numbers; loftplot reads 2 or 3" \
+    "printf '1 2 3 4\n' | $B/loftplot"
+fails 1 "points have 1 number;" "printf '1\n2\n' | $B/loftplot"
+fails 1 "cubic record: -K reads knots" "$B/loftplot -K $T/seg.cubic /dev/null"
 fails 1 "tangent vanishes in segment 1 at u = 0: no curvature for the comb" \
-    "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/plot -c"
-run "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/plot"
+    "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/loftplot -c"
+run "printf 'cubic\n0 0 1 0 0 0 1 0\n' | $B/loftplot"
 status 0
 # Coordinates near the largest double are drawn; a drawing wider than
 # it is not.
-run "printf 'cubic\n0 0 1e308 0 1e308 1e308 1e308 1e308\n' | $B/plot"
+run "printf 'cubic\n0 0 1e308 0 1e308 1e308 1e308 1e308\n' | $B/loftplot"
 status 0
 cp "$T/out" "$T/huge.svg"
 svg_ok "$T/huge.svg"
-fails 1 "too large to frame" "printf -- '-1e308 0\n1e308 0\n' | $B/plot"
+fails 1 "too large to frame" "printf -- '-1e308 0\n1e308 0\n' | $B/loftplot"
 fails 1 "<stdin>:2: coordinates too large to draw" \
-    "printf 'cubic\n-1e308 0 1e308 0 1 1 1 1\n' | $B/plot"
+    "printf 'cubic\n-1e308 0 1e308 0 1 1 1 1\n' | $B/loftplot"
 fails 1 "attribute closed=2: want 0 or 1" \
-    "printf 'cubic closed=2\n0 0 1 0 0 2 0 -2\n' | $B/plot"
+    "printf 'cubic closed=2\n0 0 1 0 0 2 0 -2\n' | $B/loftplot"
 # A -K file that is missing: reported; the curve is still drawn.
-run "$B/plot -K $T/nonexistent $T/seg.cubic"
+run "$B/loftplot -K $T/nonexistent $T/seg.cubic"
 status 1
-says "plot: $T/nonexistent: No such file or directory"
+says "loftplot: $T/nonexistent: No such file or directory"
 grep -q 'class="curve"' "$T/out" && ok || no "curve drawn without its -K"
-run "$B/plot $T/seg.cubic > /dev/full"
+run "$B/loftplot $T/seg.cubic > /dev/full"
 status 1
-says "plot: write error"
+says "loftplot: write error"
 # Fig. 1: knots alone
-run "$B/plot -K man/figures/insole.knots < /dev/null"
+run "$B/loftplot -K man/figures/insole.knots < /dev/null"
 status 0
 
-# ---- plot: surfaces and control points ----------------------------------
+# ---- loftplot: surfaces and control points ----------------------------------
 # The bilinear patch through (0,0,0) (4,0,0) (0,3,0) (4,3,1) is
 # f(u,v) = (4u, 3v, uv) exactly (patchnew.1).  -g 2 -n 2: the lines
 # u = 0, 1/2, 1 and v = 0, 1/2, 1, three points each.  The inner ones
@@ -588,7 +588,7 @@ status 0
 # is (0,1.5,0) (2,1.5,0.25) (4,1.5,0.5); then the edges (curve):
 # u = 0, u = 1, v = 0, v = 1.  y is written negated.
 $B/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 >"$T/bilin.patch"
-run "$B/plot -g 2 -n 2 $T/bilin.patch"
+run "$B/loftplot -g 2 -n 2 $T/bilin.patch"
 status 0
 cp "$T/out" "$T/bilin.svg"
 svg_ok "$T/bilin.svg"
@@ -599,12 +599,12 @@ svg_ok "$T/bilin.svg"
     "M0 0 L0 -1.5 L0 -3|M4 0 L4 -1.5 L4 -3|M0 0 L2 0 L4 0|M0 -3 L2 -3 L4 -3|" ] &&
     ok || no "edges of the bilinear patch: $(path_d curve "$T/bilin.svg")"
 # -v xz: (4u, uv); u = 1/2 rises from 0 to 0.5, v = 1/2 from 0 to 0.5.
-run "$B/plot -g 2 -n 2 -v xz $T/bilin.patch"
+run "$B/loftplot -g 2 -n 2 -v xz $T/bilin.patch"
 [ "$(path_d mesh "$T/out" | tr '\n' '|')" = \
     "M2 0 L2 -0.25 L2 -0.5|M0 0 L2 -0.25 L4 -0.5|" ] && ok ||
     no "mesh of the bilinear patch, -v xz: $(path_d mesh "$T/out")"
 # -g 1: the edges only.
-run "$B/plot -g 1 $T/bilin.patch"
+run "$B/loftplot -g 1 $T/bilin.patch"
 [ "$(grep -c 'class="mesh"' "$T/out") $(grep -c 'class="curve"' "$T/out")" = \
     "0 4" ] && ok || no "-g 1 draws other than the 4 edges"
 
@@ -622,7 +622,7 @@ $B/bezapprox -n 3,3 -x u -y 'cos(pi*v)' -z 'sin(pi*v)' >"$T/cyl.bez"
 for f in six.patch cyl.bez; do
 	$B/sample -n 4 "$T/$f" >"$T/$f.pts"
 	for v in xy xz; do
-		$B/plot -g 4 -n 4 -v $v "$T/$f" >"$T/$f-$v.svg"
+		$B/loftplot -g 4 -n 4 -v $v "$T/$f" >"$T/$f-$v.svg"
 		svg_ok "$T/$f-$v.svg"
 		{ path_d mesh "$T/$f-$v.svg"; path_d curve "$T/$f-$v.svg"; } |
 		    awk -v v=$v '
@@ -658,7 +658,7 @@ ctl_centres() {
 		x = $1 + substr($3, 2); y = $2 == 0 ? 0 : -$2
 		printf "%.6f %.6f\n", x, y }'
 }
-run "$B/bezapprox -n 2 -x t -y 't^2' | $B/plot -b"
+run "$B/bezapprox -n 2 -x t -y 't^2' | $B/loftplot -b"
 status 0
 cp "$T/out" "$T/parab.svg"
 svg_ok "$T/parab.svg"
@@ -668,13 +668,13 @@ svg_ok "$T/parab.svg"
 [ "$(path_d control-polygon "$T/parab.svg")" = "M0 0 L0.625 -0.125 L1 -1" ] &&
     ok || no "control polygon: $(path_d control-polygon "$T/parab.svg")"
 # without -b, none; -b leaves other records alone
-run "$B/bezapprox -n 2 -x t -y 't^2' | $B/plot"
+run "$B/bezapprox -n 2 -x t -y 't^2' | $B/loftplot"
 grep -q 'class="control' "$T/out" && no "control points without -b" || ok
-run "$B/plot -b $T/seg.cubic $T/bilin.patch"
+run "$B/loftplot -b $T/seg.cubic $T/bilin.patch"
 grep -q 'class="control' "$T/out" && no "-b draws a cubic's or patch's" || ok
 # A bezier-surface: a marker at each of its 16 rows, in order, and the
 # net: 4 lines along v (rows i fixed), then 4 along u, 4 points each.
-$B/plot -b -v xz "$T/cyl.bez" >"$T/cyl.svg"
+$B/loftplot -b -v xz "$T/cyl.bez" >"$T/cyl.svg"
 svg_ok "$T/cyl.svg"
 ctl_centres "$T/cyl.svg" | awk '
 NR == FNR { x[FNR] = $1; y[FNR] = $2; n = FNR; next }
@@ -687,16 +687,16 @@ END { exit bad || n != 8 }' && ok || no "control net of the cylinder: 8 lines"
 # Bad surfaces: reported, left out, the good ones drawn.
 { cat "$T/bilin.patch"; printf '\npatch id=2\n1 2 3 4 5 6 7 8 9 10\n\n'
   printf 'bezier-surface m=1\n0 0 0\n1 0 0\n'; } >"$T/badsurf"
-run "$B/plot $T/badsurf"
+run "$B/loftplot $T/badsurf"
 status 1
-says "plot: $T/badsurf:9: patch record has 1 row; a patch has 5"
-says "plot: $T/badsurf:12: bezier-surface record without its degree n="
+says "loftplot: $T/badsurf:9: patch record has 1 row; a patch has 5"
+says "loftplot: $T/badsurf:12: bezier-surface record without its degree n="
 [ "$(grep -c 'class="curve"' "$T/out")" = 4 ] && ok ||
     no "good patch around bad surfaces: 4 edges"
-fails 2 "-g '0'" "$B/plot -g 0 $T/bilin.patch"
+fails 2 "-g '0'" "$B/loftplot -g 0 $T/bilin.patch"
 fails 1 "coordinates too large to draw" \
     "printf 'bezier-surface m=1 n=1\n-1.7e308 1.7e308 0\n0 0 0\n0 0 0\n0 0 0\n' |
-    $B/plot -v iso"
+    $B/loftplot -v iso"
 
 # ---- grade: the formula by hand ----------------------------------------
 # The rectangle: L = 100 long (x), W = 40 wide (y), heel point (0,0), the
@@ -826,5 +826,5 @@ done
 [ "$n" -ge 42 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
     no "$n figures committed, $(ls "$T/figures/"*.svg | wc -l) made"
 
-echo "plot: $pass passed, $fail failed"
+echo "loftplot: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
