@@ -2,7 +2,8 @@
 # make demo grades and fits the bundled insole; make figures draws the
 # papers' figures; make bench times the programs against GNU spline
 # (tests/bench/run.sh); make install PREFIX=... installs, and make
-# uninstall PREFIX=... removes what it installed.
+# uninstall PREFIX=... removes what it installed; make examples makes
+# the example files of man/examples again.
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -38,6 +39,13 @@ LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
 MAN7    = man/loft.7
+# the example files the pages' EXAMPLES name, installed to
+# share/loft/examples (man/examples/README says what each is)
+EXAMPLES = $(addprefix man/examples/,README knots toe.knots insole.knots \
+          arc.knots hull.knots seam.knots insole.dxf many-insoles.knots \
+          v0.knots v1.knots u0.knots u1.knots hull.patch split.patch \
+          pieces.patch hull.design)
+EXDIR   = $(DESTDIR)$(PREFIX)/share/loft/examples
 
 all: $(BINS) $(LIB)
 
@@ -90,16 +98,18 @@ install: all
 	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
 	    $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(PREFIX)/share/man/man5 \
-	    $(DESTDIR)$(PREFIX)/share/man/man7
+	    $(DESTDIR)$(PREFIX)/share/man/man7 $(EXDIR)
 	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
 	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
 	cp lib/loft.h lib/loftcad.h $(DESTDIR)$(PREFIX)/include/
 	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
 	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/
+	cp $(EXAMPLES) $(EXDIR)/
 
 # the files install copies, by name, and nothing else (the directories
-# stay: they may hold other things, and may have been there before)
+# stay: they may hold other things, and may have been there before;
+# but share/loft/examples and share/loft are loft's, gone when empty)
 uninstall:
 	rm -f $(addprefix $(DESTDIR)$(PREFIX)/bin/,$(notdir $(BINS))) \
 	    $(DESTDIR)$(PREFIX)/lib/$(notdir $(LIB)) \
@@ -107,7 +117,32 @@ uninstall:
 	    $(DESTDIR)$(PREFIX)/include/loftcad.h \
 	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man1/,$(notdir $(MAN1))) \
 	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man5/,$(notdir $(MAN5))) \
-	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man7/,$(notdir $(MAN7)))
+	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man7/,$(notdir $(MAN7))) \
+	    $(addprefix $(EXDIR)/,$(notdir $(EXAMPLES)))
+	rmdir $(EXDIR) $(DESTDIR)$(PREFIX)/share/loft 2>/dev/null || :
+
+# make examples: the example files made again, copies of man/figures'
+# and what loft's programs make of them (the hand-written ones, which
+# man/examples/README names, are sources).  They are committed, and
+# tests/examples.sh checks them against what this makes in a scratch
+# directory (MKEX=dir).
+MKEX    = man/examples
+EXBIN   = bin
+examples: all
+	mkdir -p $(MKEX)
+	cp man/figures/insole.knots man/figures/arc.knots \
+	    man/figures/hull.knots man/figures/insole.dxf $(MKEX)/
+	cp man/figures/manning-fig14.knots $(MKEX)/seam.knots
+	$(EXBIN)/grade -r -3:4 -m man/figures/insole.knots \
+	    >$(MKEX)/many-insoles.knots
+	$(EXBIN)/patchnew -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 >$(MKEX)/hull.patch
+	$(EXBIN)/patchsplit -u 0.4 $(MKEX)/hull.patch >$(MKEX)/split.patch
+	$(EXBIN)/patchnew -i 1 -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 \
+	    >$(MKEX)/pieces.patch
+	$(EXBIN)/patchnew -i 2 -c 4.05,0,0.1 -c 8,0,0 -c 4,3.1,1 -c 8,3,2 \
+	    >>$(MKEX)/pieces.patch
+	$(EXBIN)/splinefit -o man/figures/hull.knots | $(EXBIN)/patchloft \
+	    >$(MKEX)/hull.design
 
 clean:
 	rm -rf bin
@@ -119,7 +154,7 @@ ifneq ($(filter clean,$(MAKECMDGOALS)),)
 .NOTPARALLEL:
 endif
 
-.PHONY: all check bench compare demo figures install uninstall clean
+.PHONY: all check bench compare demo figures install uninstall clean examples
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------

@@ -1,9 +1,11 @@
 #!/bin/sh
 # install.sh: make install into a temporary PREFIX puts every program,
-# the library, its header and every page where they belong, each a copy
-# of the file in the tree; make uninstall then removes exactly those
-# files: none of them is left, and a file of someone else's beside them
-# stays.  The list of what should be there is made here from the tree
+# the library, its header, every page and the example files where they
+# belong, each a copy of the file in the tree, and every installed
+# page's examples run with the installed programs in a copy of the
+# installed examples (tests/examples.sh -i); make uninstall then removes
+# exactly those files: none of them is left, nor share/loft, and a file
+# of someone else's beside them stays.  The list of what should be there is made here from the tree
 # (cmd/*.c, man/*.[157]), not from the Makefile's own variables.  The
 # last line is "install: N passed, M failed".
 
@@ -42,6 +44,26 @@ done <"$T/want"
 # file)
 got=$(find "$P/bin" "$P/lib" "$P/include" "$P/share/man" -type f | wc -l)
 [ "$got" -eq $((n + 1)) ] && ok || no "installed $got files, want $((n + 1))"
+# the example files: each a copy of the tree's, every one that
+# man/examples/README lists, and nothing else
+E=$P/share/loft/examples
+listed=$(sed -n 's/^\([A-Za-z0-9][-A-Za-z0-9._]*\)  .*/\1/p' man/examples/README)
+k=0
+for f in README $listed; do
+	k=$((k + 1))
+	cmp -s "man/examples/$f" "$E/$f" && ok ||
+	    no "share/loft/examples/$f is not a copy of man/examples/$f"
+done
+[ "$k" -ge 10 ] && ok || no "only $k example files listed"
+got=$(find "$P/share/loft" -type f | wc -l)
+[ "$got" -eq "$k" ] && ok || no "installed $got example files, want $k"
+# every installed page's examples, run with the installed programs in a
+# copy of the installed example files
+if sh tests/examples.sh -i "$P" >"$T/ex" 2>&1; then
+	ok
+else
+	no "the installed pages' examples: $(grep -v '^skip' "$T/ex" | head -5)"
+fi
 if MAKEFLAGS= MFLAGS= make -s uninstall PREFIX="$P" >"$T/out" 2>"$T/err"; then
 	ok
 else
@@ -49,6 +71,7 @@ else
 fi
 left=$(find "$P" -type f ! -path "$P/bin/other")
 [ -z "$left" ] && ok || no "left after uninstall: $(echo $left | head -c 200)"
+[ ! -d "$P/share/loft" ] && ok || no "uninstall left share/loft"
 [ "$(cat "$P/bin/other" 2>/dev/null)" = "not loft's" ] && ok ||
     no "uninstall removed a file it did not install"
 rm -rf "$P"
