@@ -88,6 +88,8 @@ struct label {
 	double anchor[2];       /* its record's rightmost point */
 	int numbered;           /* the text is the record's number */
 	int centred;            /* a patch's: centred on its anchor */
+	int oncurve;            /* centred on a point of its own curve,
+	                         * on a ground of the background's colour */
 	int rec_anchors;        /* how many of anc are set */
 	int leader;             /* placed far: a line ties it to anchor */
 	double anc[NANCHOR][2]; /* points of its curve, the rightmost first */
@@ -1067,7 +1069,8 @@ label_box(const struct label *l, double font, struct box *b)
 	double q[2], w = CHAR_EM * font * (double)strlen(l->text);
 
 	box_empty(b);
-	q[0] = l->centred ? l->at[0] - w / 2 : l->at[0] + font / 2;
+	q[0] = l->centred || l->oncurve ? l->at[0] - w / 2 :
+	    l->at[0] + font / 2;
 	q[1] = l->at[1] - font / 2;
 	box_add(b, q);
 	q[0] += w;
@@ -1164,6 +1167,7 @@ struct obstacles {
 	double (*seg)[4];
 	int *rec;               /* each segment's record */
 	size_t n, cap, reccap;
+	size_t nlines;          /* those drawn; the leaders come after */
 	struct grid g;
 };
 
@@ -1236,6 +1240,7 @@ collect_segments(const struct pic *pc, double scale, struct obstacles *o)
 		if (rc != 0)
 			return -1;
 	}
+	o->nlines = o->n;
 	return 0;
 }
 
@@ -1410,6 +1415,51 @@ crosses_label(const struct grid *g, const double *sg, const struct box *placed)
 	return 0;
 }
 
+/* The sign of the turn a -> b -> c: 1 left, -1 right, 0 in line. */
+static int
+turn(const double *a, const double *b, const double *c)
+{
+	double t = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+
+	return (t > 0) - (t < 0);
+}
+
+/* Whether the segments s and t cross: each one's ends lie on either
+ * side of the other's line (touching or in line is not crossing). */
+static int
+segments_cross(const double *s, const double *t)
+{
+	return turn(s, s + 2, t) * turn(s, s + 2, t + 2) < 0 &&
+	    turn(t, t + 2, s) * turn(t, t + 2, s + 2) < 0;
+}
+
+/* Whether the segment sg crosses a leader placed before, looked for in
+ * the cells of the lines' grid it passes through: crossed leaders
+ * tangle a row of labels out of the order of their curves. */
+static int
+crosses_leader(const struct obstacles *o, const double *sg)
+{
+	size_t n = cell_pieces(&o->g, sg);
+	long x0, x1, y0, y1;
+	struct box b;
+
+	for (size_t i = 0; i < n; i++) {
+		piece_box(sg, i, n, &b);
+		cells(&o->g, &b, 0, &x0, &x1);
+		cells(&o->g, &b, 1, &y0, &y1);
+		for (long cx = x0; cx <= x1; cx++)
+			for (long cy = y0; cy <= y1; cy++)
+				for (size_t k = o->g.head[bucket(&o->g, cx, cy)];
+				    k != (size_t)-1; k = o->g.e[k].next)
+					if (o->g.e[k].cx == cx &&
+					    o->g.e[k].cy == cy &&
+					    o->g.e[k].lb >= o->nlines &&
+					    segments_cross(sg, o->seg[o->g.e[k].lb]))
+						return 1;
+	}
+	return 0;
+}
+
 static void
 widen(struct box *b, const struct box *a, double by)
 {
@@ -1454,9 +1504,11 @@ try_spots(struct label *l, int nanc,
 			widen(&w, b, far);
 			if (grid_hits(o, &w, strict == 1 ? l->rec : ANYREC, 0))
 				continue;
-			/* a leader must not cross an earlier label */
+			/* a leader must not cross an earlier label or
+			 * leader */
 			if (strict == 2 && (leader(l, b, sg),
-			    crosses_label(g, sg, placed)))
+			    crosses_label(g, sg, placed) ||
+			    crosses_leader(o, sg)))
 				continue;
 			widen(&w, b, near);
 			if (strict == 1 && !grid_hits(o, &w, l->rec, 1))
@@ -1467,17 +1519,45 @@ try_spots(struct label *l, int nanc,
 }
 
 /*
+ * Try to put label l on its own curve, centred on one of its first nanc
+ * anchors, as a contour line's height sits in a gap of its line: its
+ * box, widened by a gap, must meet no other record's line and no label
+ * placed before it.  Its ground hides its own line under it.  1: placed
+ * (box in *b).
+ */
+static int
+try_on_curve(struct label *l, int nanc, double font, const struct grid *g,
+    const struct box *placed, const struct obstacles *o, struct box *b)
+{
+	struct box w;
+
+	l->oncurve = 1;
+	for (int a = 0; a < nanc; a++) {
+		l->at[0] = l->anc[a][0];
+		l->at[1] = l->anc[a][1];
+		label_box(l, font, b);
+		widen(&w, b, 0.15 * font);
+		if (grid_first(g, b, placed) == (size_t)-1 &&
+		    !grid_hits(o, &w, l->rec, 0))
+			return 1;
+	}
+	l->oncurve = 0;
+	return 0;
+}
+
+/*
  * Place the labels, each clear of every drawn line and of the labels
  * placed before it, trying in turn: (1) spots within NEAR_REACH half
  * lines of points along its record's curve (the rightmost first) that
- * are within a line of that curve and of no other record's; (2) spots
- * out to the right of its rightmost point a line clear of every line,
- * tied to it by a leader line that crosses no earlier label (and that
- * later labels keep clear of); (3) the spots of (1) without their
- * condition; (4) where all are taken, its rightmost point, moved down a
+ * are within a line of that curve and of no other record's; (2) on its
+ * own curve, at one of those points, clear of the others' lines
+ * (try_on_curve); (3) spots out to the right of its rightmost point a
+ * line clear of every line, tied to it by a leader line that crosses no
+ * earlier label or leader (and that later labels keep clear of); (4)
+ * the spots of (1) without their condition; (5) where all are taken, its rightmost point, moved down a
  * line at a time while it overlaps a label placed before it, below the
  * first (in input order) it overlaps.  A patch's label stays at the
- * patch's middle (over its own lines), moved as in (4) only.  Each look
+ * patch's middle (over its own lines), moved as in (5) only.  Each look
  * is at a few cells of two grids, the labels' and the lines', so the
  * time grows with the number of labels and segments, not with their
  * product.  Adds the labels' boxes to frame.
@@ -1500,6 +1580,7 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 		l->at[0] = l->anchor[0];
 		l->at[1] = l->anchor[1];
 		l->leader = 0;
+		l->oncurve = 0;
 		width += CHAR_EM * font * (double)strlen(l->text);
 		n++;
 	}
@@ -1534,6 +1615,8 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 
 		if (l->centred || !(try_spots(l, l->rec_anchors, spot, NSPOT,
 		    font, 1, &g, placed, &o, &placed[i]) ||
+		    try_on_curve(l, l->rec_anchors, font, &g, placed, &o,
+		    &placed[i]) ||
 		    (l->leader = try_spots(l, 1, lead, NLEADSPOT, font, 2, &g,
 		    placed, &o, &placed[i])) ||
 		    try_spots(l, l->rec_anchors, spot, NSPOT, font, 0, &g,
@@ -1687,6 +1770,26 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 		 * everywhere: the text is set at FONT_PX and scaled */
 		/* a halo of the background's colour under each letter keeps
 		 * a label over a line (a patch's id) legible */
+		/* a label on its curve: a ground of the background's
+		 * colour, its box, hides its line under it */
+		for (size_t i = 0; i < pc->nlb; i++) {
+			struct box lb;
+
+			if (!pc->lb[i].oncurve)
+				continue;
+			label_box(&pc->lb[i], font, &lb);
+			out(d, "<rect class=\"label-ground\" fill=\"%s\" "
+			    "stroke=\"none\" x=\"", pc->background ?
+			    pc->background : "#fff");
+			num(d, lb.lo[0]);
+			out(d, "\" y=\"");
+			num(d, -lb.hi[1]);
+			out(d, "\" width=\"");
+			num(d, lb.hi[0] - lb.lo[0]);
+			out(d, "\" height=\"");
+			num(d, lb.hi[1] - lb.lo[1]);
+			out(d, "\"/>\n");
+		}
 		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\" "
 		    "stroke=\"%s\" stroke-width=\"3\" stroke-linejoin=\"round\" "
 		    "paint-order=\"stroke\">\n", FONT_PX,
@@ -1696,14 +1799,17 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 			double q[2] = { l->at[0] + font / 2,
 			    l->at[1] - 0.35 * font };
 
-			/* a patch's id: centred on its point, exactly */
-			if (l->centred) {
+			/* a patch's id, or a label on its curve: centred on
+			 * its point, exactly */
+			if (l->centred || l->oncurve) {
 				q[0] = l->at[0];
 				q[1] = l->at[1];
 			}
-			out(d, "<text class=\"label\" fill=\"%s\"%s "
-			    "transform=\"translate(", colour(l->rec),
-			    l->centred ? " text-anchor=\"middle\" dy=\"0.35em\"" :
+			out(d, "<text class=\"label%s\" fill=\"%s\"%s "
+			    "transform=\"translate(", l->oncurve ? " on-curve" :
+			    "", colour(l->rec),
+			    l->centred || l->oncurve ?
+			    " text-anchor=\"middle\" dy=\"0.35em\"" :
 			    "");
 			point(d, "", q);
 			out(d, ") scale(%.6g)\">", font / FONT_PX);
