@@ -254,5 +254,13 @@ run "{ cat man/figures/insole.knots; echo; cat man/figures/insole.knots; } |
 status 0
 [ "$(grep -c . "$T/out")" = 706 ] && ok || no "batch: 2 x (22 x 16 + 1)"
 
+# splinefit(1)'s -v example, unfolded, is what the command says: the
+# page's text is the reference, so the page cannot drift from the program.
+sed -n '/^\$ splinefit -v -m manning man\/figures\/insole.knots/,/^\.Ed/p' man/splinefit.1 |
+    sed '1d;$d' | tr '\n' ' ' | sed 's/ $//' >"$T/want"
+$B/splinefit -v -m manning man/figures/insole.knots 2>"$T/got" >/dev/null
+[ -s "$T/want" ] && [ "$(cat "$T/want")" = "$(cat "$T/got")" ] && ok ||
+    no "splinefit(1)'s -v example: '$(cat "$T/want")', the program says '$(cat "$T/got")'"
+
 echo "cmd: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
