@@ -113,6 +113,7 @@ struct pic {
 	/* options */
 	enum view view;
 	long steps;             /* samples per piece for polylines and combs */
+	int steps_set;          /* -n given: a surface's lines take it too */
 	long grid;              /* a surface's parameter intervals each way */
 	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
@@ -603,31 +604,118 @@ draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
 }
 
 /*
+ * Without -n, each line of a wireframe gets as many equal steps as keep
+ * its chords within FLAT_PX pixels of it.  A chord over a parameter
+ * step h lies within h^2/8 max|c''| of its arc, c'' the line's second
+ * derivative (x_vv along a line u = const, x_uu along v = const; the
+ * view shortens it, never lengthens it).  max|c''| is taken at
+ * LINE_PROBES + 1 points along the line and widened by LINE_MARGIN for
+ * what lies between them: the lines are polynomials of low degree (4
+ * for a patch), so c'' varies slowly between probes.  The tolerance is
+ * FLAT_PX of the surface's own extent at those probes (at most the
+ * picture's).
+ */
+#define LINE_PROBES 64
+#define LINE_MARGIN 1.5
+/* ...and no line takes more steps than this (a 640-pixel picture
+ * shows none of them). */
+#define MAX_LINE_STEPS 20000
+
+/* The point of sf at parameter t along line a of direction dir (u = a
+ * for dir 0, v = a for dir 1), in uv; its second derivative along the
+ * line in d2 if not NULL. */
+static void
+line_point(const struct loft_surface *sf, int dir, double a, double t,
+    double *p, double *d2)
+{
+	double duu[LOFT_MAXDIM], dvv[LOFT_MAXDIM], u = dir ? t : a,
+	    v = dir ? a : t;
+
+	if (d2 == NULL) {
+		loft_surface_eval(sf, u, v, p, NULL, NULL);
+		return;
+	}
+	loft_surface_eval2(sf, u, v, p, NULL, NULL, duu, dvv);
+	memcpy(d2, dir ? duu : dvv, (size_t)sf->dim * sizeof *d2);
+}
+
+/* The steps line a of direction dir takes (see above) for the
+ * tolerance tol. */
+static long
+line_steps(const struct pic *pc, const struct loft_surface *sf, int dir,
+    double a, double tol)
+{
+	double p[LOFT_MAXDIM], d2[LOFT_MAXDIM], most = 0, n;
+
+	if (pc->steps_set)
+		return pc->steps;
+	for (int k = 0; k <= LINE_PROBES; k++) {
+		double len = 0;
+
+		line_point(sf, dir, a, (double)k / LINE_PROBES, p, d2);
+		for (int q = 0; q < sf->dim; q++)
+			len += d2[q] * d2[q];
+		most = fmax(most, sqrt(len));
+	}
+	n = ceil(sqrt(LINE_MARGIN * most / (8 * tol)));
+	return !(n < MAX_LINE_STEPS) ? MAX_LINE_STEPS : n < 1 ? 1 : (long)n;
+}
+
+/* FLAT_PX of the extent of sf's lines in the view, seen at the probes;
+ * 1 for a surface seen as a point. */
+static double
+lines_tolerance(const struct pic *pc, const struct loft_surface *sf)
+{
+	double p[LOFT_MAXDIM], q[2], size;
+	struct box b;
+
+	box_empty(&b);
+	for (int dir = 0; dir < 2; dir++)
+		for (long j = 0; j <= pc->grid; j++)
+			for (int k = 0; k <= LINE_PROBES; k++) {
+				line_point(sf, dir, (double)j / pc->grid,
+				    (double)k / LINE_PROBES, p, NULL);
+				project(pc->view, p, sf->dim, q);
+				box_add(&b, q);
+			}
+	size = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
+	return size > 0 ? FLAT_PX * size / PICTURE_PX : 1;
+}
+
+/*
  * A surface record as a wireframe: the iso-parameter lines u = j/g, then
  * v = j/g, for j = 0..g (g of -g), each a polyline through steps + 1
- * points at equal steps of the other parameter: with g = steps, the
- * points sample -n steps writes.  The lines on the four edges are drawn
- * as curves, those inside thin, so that in a design the patch boundaries
- * stand out, as in MacCallum's Fig. 4.
+ * points at equal steps of the other parameter: with -n, steps is its
+ * value, and with g = steps these are the points sample -n steps
+ * writes; without, as many as the line's bending needs (line_steps).
+ * The lines on the four edges are drawn as curves, those inside thin,
+ * so that in a design the patch boundaries stand out, as in MacCallum's
+ * Fig. 4.
  */
 static int
 draw_surface(struct pic *pc, const struct loft_surface *sf, struct extent *e,
     struct loft_error *err)
 {
-	double p[LOFT_MAXDIM], uv[2];
+	double p[LOFT_MAXDIM], uv[2], tol = pc->steps_set ? 0 :
+	    lines_tolerance(pc, sf);
 
+	if (!isfinite(tol))
+		return loft_fail(err, LOFT_EGEOM, -1, "coordinates too large "
+		    "to draw");
 	for (int dir = 0; dir < 2; dir++)
 		for (long j = 0; j <= pc->grid; j++) {
 			int edge = j == 0 || j == pc->grid;
 			struct stroke *s = new_stroke(pc, edge ? K_LINE : K_MESH,
 			    pc->nrec);
+			long steps;
 
 			if (s == NULL)
 				return loft_fail(err, LOFT_ENOMEM, -1,
 				    "out of memory");
 			uv[dir] = (double)j / pc->grid;
-			for (long k = 0; k <= pc->steps; k++) {
-				uv[1 - dir] = (double)k / pc->steps;
+			steps = line_steps(pc, sf, dir, uv[dir], tol);
+			for (long k = 0; k <= steps; k++) {
+				uv[1 - dir] = (double)k / steps;
 				loft_surface_eval(sf, uv[0], uv[1], p, NULL, NULL);
 				if (add_seen(pc, s, e, p, sf->dim, err) != 0)
 					return -1;
@@ -1940,7 +2028,7 @@ main(int argc, char *argv[])
 		case 'K': knots = optarg; break;
 		case 'l': pc.label_key = optarg; break;
 		case 'n': rc = loft_parse_int(optarg, 1, 10000, &pc.steps, &err);
-		    break;
+		    pc.steps_set = 1; break;
 		case 'v': rc = loft_parse_word(optarg, views, &word, &err);
 		    pc.view = word; break;
 		case 'h': loft_usage(usage_text, 0); break;

@@ -555,6 +555,26 @@ path_d curve "$T/out" | tr 'ML' '\n\n' | awk 'NF == 2 {
 	END { tol = 0.25 * 2 / 640
 	exit !(n > 3 && !bad && most <= tol && most > tol / 4 && px == 2) }' &&
     ok || no "bezier not flattened within 1/4 px: $(path_d curve "$T/out" | head -c 300)"
+# Without -n, a surface's lines are as fine as their bending needs: the
+# bezier-surface of degrees 1 and 2 whose line u = 0 is that parabola
+# and u = 1 the parabola 1 higher (x = 2v, y = u + 4v(1 - v)).  Its
+# extent is 2 (x 0..2, y 0..2), so each vertex of the edge u = 0 lies on
+# y = x (2 - x), each chord within 0.25 * 2 / 640 of it, some chord more
+# than a quarter of that; the straight edges v = 0, v = 1 are one chord.
+run "printf 'bezier-surface m=1 n=2\n0 0 0\n1 2 0\n2 0 0\n0 1 0\n1 3 0\n2 1 0\n' |
+    $B/loftplot -g 1"
+status 0
+path_d curve "$T/out" | sed -n 1p | tr 'ML' '\n\n' | awk 'NF == 2 {
+	x = $1; y = -$2; n++
+	if ((y - x * (2 - x)) ^ 2 > 1e-10) bad = 1
+	if (n > 1) { s = (y - py) / (x - px)
+		g = (x - px) ^ 2 / 4 / sqrt(1 + s * s); if (g > most) most = g }
+	px = x; py = y }
+	END { tol = 0.25 * 2 / 640
+	exit !(n > 3 && !bad && most <= tol && most > tol / 4 && px == 2) }' &&
+    [ "$(path_d curve "$T/out" | sed -n '3,4p' | tr '\n' '|')" = "M0 0 L0 -1|M2 0 L2 -1|" ] &&
+    ok || no "surface lines not within 1/4 px: $(path_d curve "$T/out" | head -c 300)"
+
 # -m marks the rows of a point record; a graded set, labelled by size.
 run "$B/loftplot -m $T/rect.knots"
 grep -q 'class="points"' "$T/out" && ok || no "-m draws no markers"
