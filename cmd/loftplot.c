@@ -1567,9 +1567,10 @@ widen(struct box *b, const struct box *a, double by)
  * spot[0..nspot) (nearest first): its box, widened by gap, must meet no
  * drawn line and no label placed before it; with strict 1, its own
  * record's line must come within near of it and no other record's
- * within far (as near), so that it reads as its own record's; with
- * strict 2, no line at all within far, for a label in the open, tied
- * to its curve by a leader.  1: placed (box in *b).
+ * within far (twice as far), so that it reads as its own record's even
+ * where the curves converge (a graded set at its heel); with strict 2,
+ * no line at all within far, for a label in the open, tied to its
+ * curve by a leader.  1: placed (box in *b).
  */
 static int
 try_spots(struct label *l, int nanc,
@@ -1577,8 +1578,9 @@ try_spots(struct label *l, int nanc,
     const struct grid *g, const struct box *placed,
     const struct obstacles *o, struct box *b)
 {
-	/* a gap of 2 pixels; the own line within a line, others not */
-	double gap = 0.15 * font, near = font, far = near, sg[4];
+	/* a gap of 2 pixels; the own line within a line, others not
+	 * within two */
+	double gap = 0.15 * font, near = font, far = 2 * near, sg[4];
 	struct box w;
 
 	for (int a = 0; a < nanc; a++)
@@ -1641,12 +1643,13 @@ try_on_curve(struct label *l, int nanc, double font, const struct grid *g,
  * Place the labels, each clear of every drawn line and of the labels
  * placed before it, trying in turn: (1) spots within NEAR_REACH half
  * lines of points along its record's curve (the rightmost first) that
- * are within a line of that curve and of no other record's; (2) on its
- * own curve, at one of those points, clear of the others' lines
- * (try_on_curve); (3) spots out to the right of its rightmost point a
- * line clear of every line, tied to it by a leader line that crosses no
- * earlier label or leader (and that later labels keep clear of); (4)
- * the spots of (1) without their condition; (5) where all are taken, its rightmost point, moved down a
+ * are within a line of that curve and two of no other record's; (2) on
+ * its own curve, at one of those points, clear of the others' lines
+ * (try_on_curve); (3) spots out to the right of its rightmost point two
+ * lines clear of every line, tied to it by a leader line that crosses
+ * no earlier label or leader (and that later labels keep clear of); (4)
+ * the spots of (1) without their condition; (5) where all are taken,
+ * its rightmost point, moved down a
  * line at a time while it overlaps a label placed before it, below the
  * first (in input order) it overlaps.  A patch's label stays at the
  * patch's middle (over its own lines), moved as in (5) only.  Each look
