@@ -80,6 +80,11 @@ if command -v gnuplot >/dev/null 2>&1; then
 	(cd "$T" && gnuplot -e "set table 'index1.txt'; plot 'three.pts' index 1 using 1:2 with lines") 2>"$T/err"
 	[ "$(awk '$3 == "i" { printf "%s %s|", $1, $2 }' "$T/index1.txt")" = \
 	    "0 1|0.5 1.5|1 1|" ] && ok || no "gnuplot index 1: $(cat "$T/index1.txt" "$T/err")"
+	# and with sample -a's header comments, the same data sets
+	$B/sample -a -n 2 "$T/three.cubic" >"$T/three-a.pts"
+	(cd "$T" && gnuplot -e "set table 'index1a.txt'; plot 'three-a.pts' index 1 using 1:2 with lines") 2>"$T/err"
+	[ "$(awk '$3 == "i" { printf "%s %s|", $1, $2 }' "$T/index1a.txt")" = \
+	    "0 1|0.5 1.5|1 1|" ] && ok || no "gnuplot index 1 after sample -a: $(cat "$T/index1a.txt" "$T/err")"
 else
 	echo "skip: gnuplot's index of sample's records (no gnuplot)"
 fi
