@@ -88,6 +88,8 @@ struct label {
 	double anchor[2];       /* its record's rightmost point */
 	int numbered;           /* the text is the record's number */
 	int centred;            /* a patch's: centred on its anchor */
+	int oncurve;            /* centred on a point of its own curve,
+	                         * on a ground of the background's colour */
 	int rec_anchors;        /* how many of anc are set */
 	int leader;             /* placed far: a line ties it to anchor */
 	double anc[NANCHOR][2]; /* points of its curve, the rightmost first */
@@ -111,6 +113,7 @@ struct pic {
 	/* options */
 	enum view view;
 	long steps;             /* samples per piece for polylines and combs */
+	int steps_set;          /* -n given: a surface's lines take it too */
 	long grid;              /* a surface's parameter intervals each way */
 	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
@@ -601,31 +604,118 @@ draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
 }
 
 /*
+ * Without -n, each line of a wireframe gets as many equal steps as keep
+ * its chords within FLAT_PX pixels of it.  A chord over a parameter
+ * step h lies within h^2/8 max|c''| of its arc, c'' the line's second
+ * derivative (x_vv along a line u = const, x_uu along v = const; the
+ * view shortens it, never lengthens it).  max|c''| is taken at
+ * LINE_PROBES + 1 points along the line and widened by LINE_MARGIN for
+ * what lies between them: the lines are polynomials of low degree (4
+ * for a patch), so c'' varies slowly between probes.  The tolerance is
+ * FLAT_PX of the surface's own extent at those probes (at most the
+ * picture's).
+ */
+#define LINE_PROBES 64
+#define LINE_MARGIN 1.5
+/* ...and no line takes more steps than this (a 640-pixel picture
+ * shows none of them). */
+#define MAX_LINE_STEPS 20000
+
+/* The point of sf at parameter t along line a of direction dir (u = a
+ * for dir 0, v = a for dir 1), in uv; its second derivative along the
+ * line in d2 if not NULL. */
+static void
+line_point(const struct loft_surface *sf, int dir, double a, double t,
+    double *p, double *d2)
+{
+	double duu[LOFT_MAXDIM], dvv[LOFT_MAXDIM], u = dir ? t : a,
+	    v = dir ? a : t;
+
+	if (d2 == NULL) {
+		loft_surface_eval(sf, u, v, p, NULL, NULL);
+		return;
+	}
+	loft_surface_eval2(sf, u, v, p, NULL, NULL, duu, dvv);
+	memcpy(d2, dir ? duu : dvv, (size_t)sf->dim * sizeof *d2);
+}
+
+/* The steps line a of direction dir takes (see above) for the
+ * tolerance tol. */
+static long
+line_steps(const struct pic *pc, const struct loft_surface *sf, int dir,
+    double a, double tol)
+{
+	double p[LOFT_MAXDIM], d2[LOFT_MAXDIM], most = 0, n;
+
+	if (pc->steps_set)
+		return pc->steps;
+	for (int k = 0; k <= LINE_PROBES; k++) {
+		double len = 0;
+
+		line_point(sf, dir, a, (double)k / LINE_PROBES, p, d2);
+		for (int q = 0; q < sf->dim; q++)
+			len += d2[q] * d2[q];
+		most = fmax(most, sqrt(len));
+	}
+	n = ceil(sqrt(LINE_MARGIN * most / (8 * tol)));
+	return !(n < MAX_LINE_STEPS) ? MAX_LINE_STEPS : n < 1 ? 1 : (long)n;
+}
+
+/* FLAT_PX of the extent of sf's lines in the view, seen at the probes;
+ * 1 for a surface seen as a point. */
+static double
+lines_tolerance(const struct pic *pc, const struct loft_surface *sf)
+{
+	double p[LOFT_MAXDIM], q[2], size;
+	struct box b;
+
+	box_empty(&b);
+	for (int dir = 0; dir < 2; dir++)
+		for (long j = 0; j <= pc->grid; j++)
+			for (int k = 0; k <= LINE_PROBES; k++) {
+				line_point(sf, dir, (double)j / pc->grid,
+				    (double)k / LINE_PROBES, p, NULL);
+				project(pc->view, p, sf->dim, q);
+				box_add(&b, q);
+			}
+	size = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
+	return size > 0 ? FLAT_PX * size / PICTURE_PX : 1;
+}
+
+/*
  * A surface record as a wireframe: the iso-parameter lines u = j/g, then
  * v = j/g, for j = 0..g (g of -g), each a polyline through steps + 1
- * points at equal steps of the other parameter: with g = steps, the
- * points sample -n steps writes.  The lines on the four edges are drawn
- * as curves, those inside thin, so that in a design the patch boundaries
- * stand out, as in MacCallum's Fig. 4.
+ * points at equal steps of the other parameter: with -n, steps is its
+ * value, and with g = steps these are the points sample -n steps
+ * writes; without, as many as the line's bending needs (line_steps).
+ * The lines on the four edges are drawn as curves, those inside thin,
+ * so that in a design the patch boundaries stand out, as in MacCallum's
+ * Fig. 4.
  */
 static int
 draw_surface(struct pic *pc, const struct loft_surface *sf, struct extent *e,
     struct loft_error *err)
 {
-	double p[LOFT_MAXDIM], uv[2];
+	double p[LOFT_MAXDIM], uv[2], tol = pc->steps_set ? 0 :
+	    lines_tolerance(pc, sf);
 
+	if (!isfinite(tol))
+		return loft_fail(err, LOFT_EGEOM, -1, "coordinates too large "
+		    "to draw");
 	for (int dir = 0; dir < 2; dir++)
 		for (long j = 0; j <= pc->grid; j++) {
 			int edge = j == 0 || j == pc->grid;
 			struct stroke *s = new_stroke(pc, edge ? K_LINE : K_MESH,
 			    pc->nrec);
+			long steps;
 
 			if (s == NULL)
 				return loft_fail(err, LOFT_ENOMEM, -1,
 				    "out of memory");
 			uv[dir] = (double)j / pc->grid;
-			for (long k = 0; k <= pc->steps; k++) {
-				uv[1 - dir] = (double)k / pc->steps;
+			steps = line_steps(pc, sf, dir, uv[dir], tol);
+			for (long k = 0; k <= steps; k++) {
+				uv[1 - dir] = (double)k / steps;
 				loft_surface_eval(sf, uv[0], uv[1], p, NULL, NULL);
 				if (add_seen(pc, s, e, p, sf->dim, err) != 0)
 					return -1;
@@ -950,16 +1040,20 @@ same_point(const double *a, const double *b)
 
 /*
  * A record's curve width in pixels: CURVE_PX for the last record, and
- * up to CURVE_PX more for the first, so that where two records' curves
- * run together (a fitted segment and the arc it approximates) the later,
- * drawn on top and thinner, leaves the earlier showing at both sides.
+ * up to HEAVIER times CURVE_PX more for the first, so that where two
+ * records' curves run together (a fitted segment and the arc it
+ * approximates) the later, drawn on top and thinner, leaves the earlier
+ * showing at both sides: a rim of 1.1 pixels each side, which a screen
+ * shows in its colour (a rim of 0.75 blended into one purple line).
  */
+#define HEAVIER 1.5
 static double
 curve_px(const struct pic *pc, int rec)
 {
 	if (pc->nrec < 2 || rec < 0)
 		return CURVE_PX;
-	return CURVE_PX * (1 + (double)(pc->nrec - 1 - rec) / (pc->nrec - 1));
+	return CURVE_PX * (1 + HEAVIER * (double)(pc->nrec - 1 - rec) /
+	    (pc->nrec - 1));
 }
 
 static void
@@ -1067,7 +1161,8 @@ label_box(const struct label *l, double font, struct box *b)
 	double q[2], w = CHAR_EM * font * (double)strlen(l->text);
 
 	box_empty(b);
-	q[0] = l->centred ? l->at[0] - w / 2 : l->at[0] + font / 2;
+	q[0] = l->centred || l->oncurve ? l->at[0] - w / 2 :
+	    l->at[0] + font / 2;
 	q[1] = l->at[1] - font / 2;
 	box_add(b, q);
 	q[0] += w;
@@ -1164,6 +1259,7 @@ struct obstacles {
 	double (*seg)[4];
 	int *rec;               /* each segment's record */
 	size_t n, cap, reccap;
+	size_t nlines;          /* those drawn; the leaders come after */
 	struct grid g;
 };
 
@@ -1236,6 +1332,7 @@ collect_segments(const struct pic *pc, double scale, struct obstacles *o)
 		if (rc != 0)
 			return -1;
 	}
+	o->nlines = o->n;
 	return 0;
 }
 
@@ -1410,6 +1507,51 @@ crosses_label(const struct grid *g, const double *sg, const struct box *placed)
 	return 0;
 }
 
+/* The sign of the turn a -> b -> c: 1 left, -1 right, 0 in line. */
+static int
+turn(const double *a, const double *b, const double *c)
+{
+	double t = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+
+	return (t > 0) - (t < 0);
+}
+
+/* Whether the segments s and t cross: each one's ends lie on either
+ * side of the other's line (touching or in line is not crossing). */
+static int
+segments_cross(const double *s, const double *t)
+{
+	return turn(s, s + 2, t) * turn(s, s + 2, t + 2) < 0 &&
+	    turn(t, t + 2, s) * turn(t, t + 2, s + 2) < 0;
+}
+
+/* Whether the segment sg crosses a leader placed before, looked for in
+ * the cells of the lines' grid it passes through: crossed leaders
+ * tangle a row of labels out of the order of their curves. */
+static int
+crosses_leader(const struct obstacles *o, const double *sg)
+{
+	size_t n = cell_pieces(&o->g, sg);
+	long x0, x1, y0, y1;
+	struct box b;
+
+	for (size_t i = 0; i < n; i++) {
+		piece_box(sg, i, n, &b);
+		cells(&o->g, &b, 0, &x0, &x1);
+		cells(&o->g, &b, 1, &y0, &y1);
+		for (long cx = x0; cx <= x1; cx++)
+			for (long cy = y0; cy <= y1; cy++)
+				for (size_t k = o->g.head[bucket(&o->g, cx, cy)];
+				    k != (size_t)-1; k = o->g.e[k].next)
+					if (o->g.e[k].cx == cx &&
+					    o->g.e[k].cy == cy &&
+					    o->g.e[k].lb >= o->nlines &&
+					    segments_cross(sg, o->seg[o->g.e[k].lb]))
+						return 1;
+	}
+	return 0;
+}
+
 static void
 widen(struct box *b, const struct box *a, double by)
 {
@@ -1425,9 +1567,10 @@ widen(struct box *b, const struct box *a, double by)
  * spot[0..nspot) (nearest first): its box, widened by gap, must meet no
  * drawn line and no label placed before it; with strict 1, its own
  * record's line must come within near of it and no other record's
- * within far (as near), so that it reads as its own record's; with
- * strict 2, no line at all within far, for a label in the open, tied
- * to its curve by a leader.  1: placed (box in *b).
+ * within far (twice as far), so that it reads as its own record's even
+ * where the curves converge (a graded set at its heel); with strict 2,
+ * no line at all within far, for a label in the open, tied to its
+ * curve by a leader.  1: placed (box in *b).
  */
 static int
 try_spots(struct label *l, int nanc,
@@ -1435,8 +1578,9 @@ try_spots(struct label *l, int nanc,
     const struct grid *g, const struct box *placed,
     const struct obstacles *o, struct box *b)
 {
-	/* a gap of 2 pixels; the own line within a line, others not */
-	double gap = 0.15 * font, near = font, far = near, sg[4];
+	/* a gap of 2 pixels; the own line within a line, others not
+	 * within two */
+	double gap = 0.15 * font, near = font, far = 2 * near, sg[4];
 	struct box w;
 
 	for (int a = 0; a < nanc; a++)
@@ -1454,9 +1598,11 @@ try_spots(struct label *l, int nanc,
 			widen(&w, b, far);
 			if (grid_hits(o, &w, strict == 1 ? l->rec : ANYREC, 0))
 				continue;
-			/* a leader must not cross an earlier label */
+			/* a leader must not cross an earlier label or
+			 * leader */
 			if (strict == 2 && (leader(l, b, sg),
-			    crosses_label(g, sg, placed)))
+			    crosses_label(g, sg, placed) ||
+			    crosses_leader(o, sg)))
 				continue;
 			widen(&w, b, near);
 			if (strict == 1 && !grid_hits(o, &w, l->rec, 1))
@@ -1467,17 +1613,46 @@ try_spots(struct label *l, int nanc,
 }
 
 /*
+ * Try to put label l on its own curve, centred on one of its first nanc
+ * anchors, as a contour line's height sits in a gap of its line: its
+ * box, widened by a gap, must meet no other record's line and no label
+ * placed before it.  Its ground hides its own line under it.  1: placed
+ * (box in *b).
+ */
+static int
+try_on_curve(struct label *l, int nanc, double font, const struct grid *g,
+    const struct box *placed, const struct obstacles *o, struct box *b)
+{
+	struct box w;
+
+	l->oncurve = 1;
+	for (int a = 0; a < nanc; a++) {
+		l->at[0] = l->anc[a][0];
+		l->at[1] = l->anc[a][1];
+		label_box(l, font, b);
+		widen(&w, b, 0.15 * font);
+		if (grid_first(g, b, placed) == (size_t)-1 &&
+		    !grid_hits(o, &w, l->rec, 0))
+			return 1;
+	}
+	l->oncurve = 0;
+	return 0;
+}
+
+/*
  * Place the labels, each clear of every drawn line and of the labels
  * placed before it, trying in turn: (1) spots within NEAR_REACH half
  * lines of points along its record's curve (the rightmost first) that
- * are within a line of that curve and of no other record's; (2) spots
- * out to the right of its rightmost point a line clear of every line,
- * tied to it by a leader line that crosses no earlier label (and that
- * later labels keep clear of); (3) the spots of (1) without their
- * condition; (4) where all are taken, its rightmost point, moved down a
+ * are within a line of that curve and two of no other record's; (2) on
+ * its own curve, at one of those points, clear of the others' lines
+ * (try_on_curve); (3) spots out to the right of its rightmost point two
+ * lines clear of every line, tied to it by a leader line that crosses
+ * no earlier label or leader (and that later labels keep clear of); (4)
+ * the spots of (1) without their condition; (5) where all are taken,
+ * its rightmost point, moved down a
  * line at a time while it overlaps a label placed before it, below the
  * first (in input order) it overlaps.  A patch's label stays at the
- * patch's middle (over its own lines), moved as in (4) only.  Each look
+ * patch's middle (over its own lines), moved as in (5) only.  Each look
  * is at a few cells of two grids, the labels' and the lines', so the
  * time grows with the number of labels and segments, not with their
  * product.  Adds the labels' boxes to frame.
@@ -1500,6 +1675,7 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 		l->at[0] = l->anchor[0];
 		l->at[1] = l->anchor[1];
 		l->leader = 0;
+		l->oncurve = 0;
 		width += CHAR_EM * font * (double)strlen(l->text);
 		n++;
 	}
@@ -1534,6 +1710,8 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 
 		if (l->centred || !(try_spots(l, l->rec_anchors, spot, NSPOT,
 		    font, 1, &g, placed, &o, &placed[i]) ||
+		    try_on_curve(l, l->rec_anchors, font, &g, placed, &o,
+		    &placed[i]) ||
 		    (l->leader = try_spots(l, 1, lead, NLEADSPOT, font, 2, &g,
 		    placed, &o, &placed[i])) ||
 		    try_spots(l, l->rec_anchors, spot, NSPOT, font, 0, &g,
@@ -1687,6 +1865,26 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 		 * everywhere: the text is set at FONT_PX and scaled */
 		/* a halo of the background's colour under each letter keeps
 		 * a label over a line (a patch's id) legible */
+		/* a label on its curve: a ground of the background's
+		 * colour, its box, hides its line under it */
+		for (size_t i = 0; i < pc->nlb; i++) {
+			struct box lb;
+
+			if (!pc->lb[i].oncurve)
+				continue;
+			label_box(&pc->lb[i], font, &lb);
+			out(d, "<rect class=\"label-ground\" fill=\"%s\" "
+			    "stroke=\"none\" x=\"", pc->background ?
+			    pc->background : "#fff");
+			num(d, lb.lo[0]);
+			out(d, "\" y=\"");
+			num(d, -lb.hi[1]);
+			out(d, "\" width=\"");
+			num(d, lb.hi[0] - lb.lo[0]);
+			out(d, "\" height=\"");
+			num(d, lb.hi[1] - lb.lo[1]);
+			out(d, "\"/>\n");
+		}
 		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\" "
 		    "stroke=\"%s\" stroke-width=\"3\" stroke-linejoin=\"round\" "
 		    "paint-order=\"stroke\">\n", FONT_PX,
@@ -1696,14 +1894,17 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 			double q[2] = { l->at[0] + font / 2,
 			    l->at[1] - 0.35 * font };
 
-			/* a patch's id: centred on its point, exactly */
-			if (l->centred) {
+			/* a patch's id, or a label on its curve: centred on
+			 * its point, exactly */
+			if (l->centred || l->oncurve) {
 				q[0] = l->at[0];
 				q[1] = l->at[1];
 			}
-			out(d, "<text class=\"label\" fill=\"%s\"%s "
-			    "transform=\"translate(", colour(l->rec),
-			    l->centred ? " text-anchor=\"middle\" dy=\"0.35em\"" :
+			out(d, "<text class=\"label%s\" fill=\"%s\"%s "
+			    "transform=\"translate(", l->oncurve ? " on-curve" :
+			    "", colour(l->rec),
+			    l->centred || l->oncurve ?
+			    " text-anchor=\"middle\" dy=\"0.35em\"" :
 			    "");
 			point(d, "", q);
 			out(d, ") scale(%.6g)\">", font / FONT_PX);
@@ -1834,7 +2035,7 @@ main(int argc, char *argv[])
 		case 'K': knots = optarg; break;
 		case 'l': pc.label_key = optarg; break;
 		case 'n': rc = loft_parse_int(optarg, 1, 10000, &pc.steps, &err);
-		    break;
+		    pc.steps_set = 1; break;
 		case 'v': rc = loft_parse_word(optarg, views, &word, &err);
 		    pc.view = word; break;
 		case 'h': loft_usage(usage_text, 0); break;

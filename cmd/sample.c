@@ -60,6 +60,21 @@ put_header_comment(struct loft_run *run, const struct loft_record *rec)
 	loft_end_line(&run->w);
 }
 
+/*
+ * The end of what one input record gives as points: the blank line that
+ * ends the last point record, and a second one, so that gnuplot sees
+ * each input record as a data set of its own (plot 'file' index 2 picks
+ * the third) and a surface's lines, one blank line apart, as one grid
+ * (splot).  loft's reader and GNU graph take any number of blank lines
+ * as one.
+ */
+static void
+end_data_set(struct loft_run *run)
+{
+	loft_end_record(&run->w);
+	loft_end_line(&run->w);
+}
+
 /* OBJ: "o NAME", the record's type and its id= if it has one. */
 static void
 put_object(struct loft_run *run, const struct loft_record *rec)
@@ -239,7 +254,7 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 		loft_end_line(&run->w);
 		o->nvert += nv;
 	} else {
-		loft_end_record(&run->w);
+		end_data_set(run);
 	}
 	return 0;
 }
@@ -287,7 +302,10 @@ wireframe(struct loft_run *run, const struct loft_surface *s,
 				}
 				loft_end_line(&run->w);
 			}
-			loft_end_record(&run->w);
+			if (dir == 1 && j == n)
+				end_data_set(run);
+			else
+				loft_end_record(&run->w);
 		}
 	return 0;
 }

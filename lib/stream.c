@@ -217,6 +217,15 @@ bad_line(struct loft_reader *rd, struct loft_error *err, const char *fmt,
 #define CSV_HINT(what) what "? loft streams are whitespace-separated; " \
 	"fromcad reads CSV"
 
+/* The separator of CSV in the word w[0..n), as a spreadsheet writes it
+ * (a semicolon where the decimal mark is a comma), or 0 if none. */
+static int
+csv_sep(const char *w, size_t n)
+{
+	return memchr(w, ',', n) != NULL ? ',' : memchr(w, ';', n) != NULL ?
+	    ';' : 0;
+}
+
 /* Parse the header in rd->line into rec. */
 static int
 parse_header(struct loft_reader *rd, struct loft_record *rec,
@@ -232,7 +241,7 @@ parse_header(struct loft_reader *rd, struct loft_record *rec,
 	t = rec->text;
 	wl = next_word(t, len, &pos, &w);
 	if (!is_name(w, wl))
-		return bad_line(rd, err, memchr(w, ',', wl) != NULL ?
+		return bad_line(rd, err, csv_sep(w, wl) != 0 ?
 		    "bad record type '%.*s': " CSV_HINT("a CSV header") :
 		    "bad record type '%.*s'", w, (int)(wl > 40 ? 40 : wl));
 	rec->type = (char *)w;
@@ -284,10 +293,12 @@ parse_row(struct loft_reader *rd, struct loft_record *rec,
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		if ((rc = loft_parse_num(w, wl, &rec->num[base + k], err)) !=
 		    0) {
-			if (rc == LOFT_EINPUT && memchr(w, ',', wl) != NULL)
+			if (rc == LOFT_EINPUT && csv_sep(w, wl) != 0)
 				loft_fail(err, LOFT_EINPUT, -1, "'%.*s' is not a "
-				    "number: " CSV_HINT("comma-separated"),
-				    (int)(wl > 40 ? 40 : wl), w);
+				    "number: %s-separated? loft streams are "
+				    "whitespace-separated; fromcad reads CSV",
+				    (int)(wl > 40 ? 40 : wl), w, csv_sep(w, wl) ==
+				    ',' ? "comma" : "semicolon");
 			err->line = rd->lineno;
 			return LOFT_EINPUT;
 		}

@@ -157,7 +157,9 @@ cp "$T/out" "$T/cyl.bez"
 # the wireframe: 2 (n + 1) iso-lines of n + 1 points, corners on the surface
 run "$B/sample -n 4 $T/cyl.bez"
 status 0
-[ "$(grep -c '^$' "$T/out")" = 10 ] && ok || no "10 iso-lines"
+# (a blank line after each, and one more after the surface's last)
+[ "$(grep -c '^$' "$T/out")" = 11 ] && [ "$(tail -2 "$T/out" | tr -d '\n')" = "" ] &&
+    [ "$(grep -c . "$T/out")" = 50 ] && ok || no "10 iso-lines"
 num_near 1 2 1 1e-15
 num_near 5 2 -1 1e-15
 # a bezier-surface by hand: the bilinear x = u, y = v, z = uv

@@ -39,6 +39,7 @@ run "$B/sample -n 2 $T/seg.cubic"
 out_is "0 0
 0.5 0.5
 1 0
+
 "
 # -a: the header, as written above, as a comment before the same rows;
 # a surface's before its lines.  loft's reader skips it: loftplot draws the
@@ -48,6 +49,7 @@ out_is "# cubic closed=0
 0 0
 0.5 0.5
 1 0
+
 "
 printf 'cubic closed=0 size=+1 id=a=b\n0 0 1 0 0 2 0 -2\n' >"$T/attr.cubic"
 run "$B/sample -a -n 1 $T/attr.cubic"
@@ -59,6 +61,41 @@ cmp -s "$T/plain.svg" "$T/attr.svg" && ok || no "sample -a: loftplot reads it ot
 run "$B/patchnew -i 7 -c 0,0,0 -c 4,0,0 -c 0,3,0 -c 4,3,1 | $B/sample -a -n 1"
 [ "$(grep -n '^#' "$T/out")" = "1:# patch id=7" ] && ok ||
     no "sample -a of a patch: $(grep -n '#' "$T/out")"
+# Two blank lines after each input record's points: to gnuplot each
+# record is a data set, so index 1 is the second record's rows, the
+# segment moved up by 1 (by hand: (0,1) (0.5,1.5) (1,1)); GNU graph
+# reads the same three polylines as from one blank line (with -B, which
+# keeps its line mode: an empty data set would bump it); loft's reader
+# takes both, loftplot draws the same picture.
+{ cat $T/seg.cubic; printf '\ncubic\n0 1 1 1 0 2 0 -2\n\ncubic\n0 2 1 2 0 2 0 -2\n'; } \
+    >"$T/three.cubic"
+$B/sample -n 2 "$T/three.cubic" >"$T/three.pts"
+awk 'BEGIN { RS = ""; ORS = "\n\n" } { print }' "$T/three.pts" >"$T/one.pts"
+[ "$(grep -c '^$' "$T/three.pts")" = 6 ] && [ "$(grep -c '^$' "$T/one.pts")" = 3 ] &&
+    ok || no "sample: not two blank lines a record"
+$B/loftplot "$T/three.pts" >"$T/three.svg"
+$B/loftplot "$T/one.pts" >"$T/one.svg"
+cmp -s "$T/three.svg" "$T/one.svg" && ok || no "loftplot reads two blank lines otherwise"
+if command -v gnuplot >/dev/null 2>&1; then
+	(cd "$T" && gnuplot -e "set table 'index1.txt'; plot 'three.pts' index 1 using 1:2 with lines") 2>"$T/err"
+	[ "$(awk '$3 == "i" { printf "%s %s|", $1, $2 }' "$T/index1.txt")" = \
+	    "0 1|0.5 1.5|1 1|" ] && ok || no "gnuplot index 1: $(cat "$T/index1.txt" "$T/err")"
+	# and with sample -a's header comments, the same data sets
+	$B/sample -a -n 2 "$T/three.cubic" >"$T/three-a.pts"
+	(cd "$T" && gnuplot -e "set table 'index1a.txt'; plot 'three-a.pts' index 1 using 1:2 with lines") 2>"$T/err"
+	[ "$(awk '$3 == "i" { printf "%s %s|", $1, $2 }' "$T/index1a.txt")" = \
+	    "0 1|0.5 1.5|1 1|" ] && ok || no "gnuplot index 1 after sample -a: $(cat "$T/index1a.txt" "$T/err")"
+else
+	echo "skip: gnuplot's index of sample's records (no gnuplot)"
+fi
+if command -v graph >/dev/null 2>&1 && graph --version 2>&1 | grep -q plotutils; then
+	graph -T svg -B "$T/three.pts" >"$T/g2.svg" 2>"$T/err"
+	graph -T svg -B "$T/one.pts" >"$T/g1.svg" 2>>"$T/err"
+	[ "$(grep -c '<polyline' "$T/g2.svg")" = 3 ] && cmp -s "$T/g1.svg" "$T/g2.svg" &&
+	    [ ! -s "$T/err" ] && ok || no "GNU graph reads two blank lines otherwise: $(head -2 "$T/err")"
+else
+	echo "skip: GNU graph on sample's records (no plotutils graph)"
+fi
 # With R2 = 3(P_B-P_A) - 2P'_A - P'_B = (3,-2), R3 = (-2,0):
 # P' = (0,2), (1.5,0), (0,-2) and P'' = (6,-4), (0,-4), (-6,-4) at
 # u = 0, 1/2, 1, so the curvature (x'y''-y'x'')/|P'|^3 is -12/8, -6/3.375,
@@ -67,6 +104,7 @@ run "$B/sample -n 2 -k -u -d -p 6 $T/seg.cubic"
 out_is "0 0 0 0 1 -1.5
 0.5 0.5 0.5 1 0 -1.77778
 1 0 1 0 -1 -1.5
+
 "
 # The square: tangents parallel to P_{i+1} - P_{i-1} already solve eq. 10
 # by symmetry; at 45 degrees to each chord, eq. 8 gives magnitude
@@ -220,6 +258,14 @@ run "{ cat man/figures/insole.knots; echo; cat man/figures/insole.knots; } |
     $B/splinefit | $B/sample -p 6"
 status 0
 [ "$(grep -c . "$T/out")" = 706 ] && ok || no "batch: 2 x (22 x 16 + 1)"
+
+# splinefit(1)'s -v example, unfolded, is what the command says: the
+# page's text is the reference, so the page cannot drift from the program.
+sed -n '/^\$ splinefit -v -m manning man\/figures\/insole.knots/,/^\.Ed/p' man/splinefit.1 |
+    sed '1d;$d' | tr '\n' ' ' | sed 's/ $//' >"$T/want"
+$B/splinefit -v -m manning man/figures/insole.knots 2>"$T/got" >/dev/null
+[ -s "$T/want" ] && [ "$(cat "$T/want")" = "$(cat "$T/got")" ] && ok ||
+    no "splinefit(1)'s -v example: '$(cat "$T/want")', the program says '$(cat "$T/got")'"
 
 echo "cmd: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -318,7 +318,10 @@ done
 # LABELS_CLEAR: from the SVG's own numbers, no label's box meets a drawn
 # line (the polylines of class curve, mesh, control-polygon, tangents,
 # comb-envelope: M and L only) or another label's box, and a leader line
-# ends on a label's box and crosses no other.  A label's box is
+# ends on a label's box and crosses no other.  A label of class on-curve
+# sits on its own record's line (one of its colour meets its box), on a
+# ground (a rect of class label-ground) that hides that line: lines of
+# other colours must keep clear of it.  A label's box is
 # the estimate loftplot promises in loftplot(1): 0.62 em a character wide, from
 # its point (or centred on it with text-anchor), 1 em high with the
 # baseline 0.15 em above its foot; em = 12 times the scale.  Each line
@@ -333,6 +336,9 @@ function inside(x, y, k) {
 	sub(/.* d="/, "", d)
 	sub(/".*/, "", d)
 	if (d ~ /[^-ML0-9. e]/) { print "not a polyline: " d; bad = 1 }
+	c = $0
+	sub(/.* stroke="/, "", c)
+	sub(/".*/, "", c)
 	gsub(/[ML]/, " & ", d)
 	n = split(d, w, " ")
 	for (i = 1; i <= n; i += 3) {
@@ -340,6 +346,7 @@ function inside(x, y, k) {
 			nseg++
 			sx0[nseg] = px; sy0[nseg] = py
 			sx1[nseg] = w[i + 1]; sy1[nseg] = w[i + 2]
+			scol[nseg] = c
 		}
 		px = w[i + 1]; py = w[i + 2]
 	}
@@ -365,6 +372,12 @@ function inside(x, y, k) {
 	em = 12 * sc
 	wd = 0.62 * em * length(s)
 	nl++
+	c = $0
+	sub(/.* fill="/, "", c)
+	sub(/".*/, "", c)
+	tcol[nl] = c
+	on[nl] = $0 ~ /class="label on-curve"/
+	non += on[nl]
 	bx0[nl] = $0 ~ /text-anchor="middle"/ ? tx - wd / 2 : tx
 	bx1[nl] = bx0[nl] + wd
 	by0[nl] = ty - 0.85 * em
@@ -372,7 +385,9 @@ function inside(x, y, k) {
 	if ($0 ~ /dy="0.35em"/) { by0[nl] += 0.35 * em; by1[nl] += 0.35 * em }
 	e[nl] = em
 }
+/<rect class="label-ground"/ { ngr++ }
 END {
+	if (ngr != non) { print ngr " grounds for " non " labels on curves"; bad = 1 }
 	for (k = 1; k <= nl; k++) {
 		for (j = 1; j < k; j++)
 			if (bx0[k] < bx1[j] && bx0[j] < bx1[k] &&
@@ -384,10 +399,15 @@ END {
 			m = int(sqrt(dx * dx + dy * dy) / (0.1 * e[k])) + 1
 			for (q = 0; q <= m; q++)
 				if (inside(sx0[i] + q / m * dx, sy0[i] + q / m * dy, k)) {
+					if (on[k] && scol[i] == tcol[k]) {
+						onown[k] = 1
+						break
+					}
 					print "label " k " meets segment " i; bad = 1
 					break
 				}
 		}
+		if (on[k] && !onown[k]) { print "label " k " is on no line of its own"; bad = 1 }
 	}
 	# a leader ends on its own label and crosses no other
 	for (i = 1; i <= nld; i++) {
@@ -428,16 +448,28 @@ status 0
 cp "$T/out" "$T/rings.svg"
 svg_ok "$T/rings.svg"
 [ "$(grep -c '<text' "$T/rings.svg")" = 14 ] &&
-    [ "$(grep -c 'class="leader"' "$T/rings.svg")" -ge 1 ] &&
+    [ "$(grep -c 'class="label on-curve"' "$T/rings.svg")" -ge 1 ] &&
     awk "$LABELS_CLEAR" \
     "$T/rings.svg" >"$T/clear" && ok || no "rings: $(head -3 "$T/clear")"
 # The demo's graded set of eight: labels by their curves or, where the
-# outlines crowd, out to the right with leaders that cross no label
-# (the curves are cubic paths, not polylines: the labels and leaders
-# alone are checked here).
+# outlines crowd, on them.  The curves are cubic paths, not polylines:
+# in their place the checker gets the outlines as sample -n 64 writes
+# them (within a thousandth of a label of the cubics), in the colours
+# of the curves in the picture, in order.
 run "$B/grade -r -3:4 man/figures/insole.knots | $B/splinefit | $B/loftplot -l size"
 status 0
-[ "$(grep -c '<text' "$T/out")" = 8 ] && grep -v 'class="curve"' "$T/out" |
+cp "$T/out" "$T/nest.svg"
+$B/grade -r -3:4 man/figures/insole.knots | $B/splinefit | $B/sample -n 64 |
+    awk -v cols="$(sed -n 's/.*class="curve" stroke="\([^"]*\)".*/\1/p' "$T/nest.svg" | tr '\n' ' ')" '
+function flush() { if (d != "") printf "<path class=\"curve\" stroke=\"%s\" d=\"%s\"/>\n", c[++r], d; d = "" }
+BEGIN { split(cols, c, " ") }
+NF == 0 { flush(); next }
+{ d = d (d == "" ? "M" : " L") $1 " " (-$2) }
+END { flush() }' >"$T/nest.lines"
+[ "$(grep -c '<text' "$T/nest.svg")" = 8 ] &&
+    [ "$(grep -c 'class="label on-curve"' "$T/nest.svg")" -ge 1 ] &&
+    [ "$(wc -l <"$T/nest.lines")" = 8 ] &&
+    grep -v 'class="curve"' "$T/nest.svg" | cat - "$T/nest.lines" |
     awk "$LABELS_CLEAR" >"$T/clear" && ok || no "graded labels: $(head -3 "$T/clear")"
 # The same awk sees labels struck through, by lines 0.4 apart across the
 # picture (narrower than any label): the check can fail.
@@ -523,6 +555,26 @@ path_d curve "$T/out" | tr 'ML' '\n\n' | awk 'NF == 2 {
 	END { tol = 0.25 * 2 / 640
 	exit !(n > 3 && !bad && most <= tol && most > tol / 4 && px == 2) }' &&
     ok || no "bezier not flattened within 1/4 px: $(path_d curve "$T/out" | head -c 300)"
+# Without -n, a surface's lines are as fine as their bending needs: the
+# bezier-surface of degrees 1 and 2 whose line u = 0 is that parabola
+# and u = 1 the parabola 1 higher (x = 2v, y = u + 4v(1 - v)).  Its
+# extent is 2 (x 0..2, y 0..2), so each vertex of the edge u = 0 lies on
+# y = x (2 - x), each chord within 0.25 * 2 / 640 of it, some chord more
+# than a quarter of that; the straight edges v = 0, v = 1 are one chord.
+run "printf 'bezier-surface m=1 n=2\n0 0 0\n1 2 0\n2 0 0\n0 1 0\n1 3 0\n2 1 0\n' |
+    $B/loftplot -g 1"
+status 0
+path_d curve "$T/out" | sed -n 1p | tr 'ML' '\n\n' | awk 'NF == 2 {
+	x = $1; y = -$2; n++
+	if ((y - x * (2 - x)) ^ 2 > 1e-10) bad = 1
+	if (n > 1) { s = (y - py) / (x - px)
+		g = (x - px) ^ 2 / 4 / sqrt(1 + s * s); if (g > most) most = g }
+	px = x; py = y }
+	END { tol = 0.25 * 2 / 640
+	exit !(n > 3 && !bad && most <= tol && most > tol / 4 && px == 2) }' &&
+    [ "$(path_d curve "$T/out" | sed -n '3,4p' | tr '\n' '|')" = "M0 0 L0 -1|M2 0 L2 -1|" ] &&
+    ok || no "surface lines not within 1/4 px: $(path_d curve "$T/out" | head -c 300)"
+
 # -m marks the rows of a point record; a graded set, labelled by size.
 run "$B/loftplot -m $T/rect.knots"
 grep -q 'class="points"' "$T/out" && ok || no "-m draws no markers"

@@ -209,6 +209,7 @@ out_is "0 0
 1 0
 1.5 0
 2 0
+
 "
 run "$B/splinefit -o -S 1,0 -E 1,0 $T/line.knots | $B/patchdrag -u 0.5 -b 0,1 | head -1"
 out_is "quartic closed=0"
@@ -250,10 +251,12 @@ fails 1 "the subsidiary 2 has a neighbour across v1, which meets the edge to joi
     "$B/patchjoin -P 1 -S 2 $T/hull.patch $T/subpair.patch"
 
 # ---- sample: wireframes and OBJ --------------------------------------
-# -n 4: lines u = 0, 1/4, ..., 1 and v = 0, ..., 1: 10 records of 5 points
+# -n 4: lines u = 0, 1/4, ..., 1 and v = 0, ..., 1: 10 records of 5 points,
+# a blank line after each and one more after the last (gnuplot's grid)
 run "$B/sample -n 4 $T/hull.patch"
 status 0
-[ "$(grep -c . "$T/out")" = 50 ] && [ "$(grep -c '^$' "$T/out")" = 10 ] && ok ||
+[ "$(grep -c . "$T/out")" = 50 ] && [ "$(grep -c '^$' "$T/out")" = 11 ] &&
+    [ "$(tail -2 "$T/out" | tr -d '\n')" = "" ] && ok ||
     no "wireframe: $(grep -c . "$T/out") points"
 # the corner (11) is the last point of the line u = 1, exactly
 [ "$(awk -v RS= 'NR == 5' "$T/out" | tail -1)" = "4 3 1" ] && ok ||

@@ -324,7 +324,7 @@ step_eval() {
 		PX[id] = c[1]; PY[id] = c[2]; PZ[id] = c[3]; next }
 	f == 1 && /B_SPLINE_(CURVE|SURFACE)_WITH_KNOTS/ { ne++; E[ne] = $0; next }
 	f == 1 { next }
-	FNR == 1 || prevblank { rec++; k = int((rec - 1) / per) + 1
+	(FNR == 1 || prevblank) && NF { rec++; k = int((rec - 1) / per) + 1
 		if (k != cur) parse(E[cur = k]) }
 	{ prevblank = (NF == 0) }
 	NF { check_row() }
@@ -418,7 +418,7 @@ iges_eval() {
 	    echo 18 || echo 1)" "$FUNCS"'
 	FNR == 1 { f++ }
 	f == 1 { sub(/;$/, ""); E[++ne] = $0; next }
-	FNR == 1 || prevblank { rec++; k = int((rec - 1) / per) + 1
+	(FNR == 1 || prevblank) && NF { rec++; k = int((rec - 1) / per) + 1
 		if (k != cur) parse(E[cur = k]) }
 	{ prevblank = (NF == 0) }
 	NF { check_row() }

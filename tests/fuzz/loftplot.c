@@ -5,7 +5,8 @@
  * with no NaN or infinity in it.
  *   byte 0: bit 0  -b   bit 1  -c   bit 2  -m   bit 3  -t
  *           bits 4-5  -v xy, yz, xz, iso   bit 6  -l id   bit 7  -C 1
- *   byte 1: bits 0-2  -n 1..8   bits 3-5  -g 1..8
+ *   byte 1: bits 0-2  -n 1..8   bits 3-5  -g 1..8   bit 6  -n given (else
+ *           a surface's lines are as fine as they bend)
  */
 #include "../../cmd/loftplot.c"
 #include <strings.h>
@@ -63,6 +64,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		pc.comb = 1;
 	}
 	pc.steps = 1 + (data[1] & 7);
+	pc.steps_set = (data[1] & 64) != 0;
 	pc.grid = 1 + ((data[1] >> 3) & 7);
 	box_empty(&pc.box);
 	box_empty(&pc.kbox);
