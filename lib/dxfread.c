@@ -93,6 +93,7 @@ struct dxf {
 	struct turn *tp;
 	size_t ntp, tpcap;
 	struct nums seg;        /* spline pieces */
+	struct loft__echo *echo;        /* coordinates' texts (may be NULL) */
 	int oom;
 };
 
@@ -202,6 +203,17 @@ pair_num(struct ent *e, const struct pair *pr, double *x)
 	return 0;
 }
 
+/* A coordinate: as pair_num, its text noted for the output. */
+static int
+coord_num(struct dxf *d, struct ent *e, const struct pair *pr, double *x)
+{
+	if (loft__echo_parse(d->echo, pr->v, pr->n, x) != 0) {
+		ent_bad(e, "is not a finite number", pr);
+		return -1;
+	}
+	return 0;
+}
+
 static int
 pair_int(struct ent *e, const struct pair *pr, long *v)
 {
@@ -236,11 +248,12 @@ ent_start(struct ent *e, const struct pair *pr)
 
 /* Coordinate k of a point list's last point, for groups 20 and 30. */
 static void
-set_last(struct ent *e, struct loft__pts *s, int k, const struct pair *pr)
+set_last(struct dxf *d, struct ent *e, struct loft__pts *s, int k,
+    const struct pair *pr)
 {
 	double x;
 
-	if (pair_num(e, pr, &x) != 0)
+	if (coord_num(d, e, pr, &x) != 0)
 		return;
 	if (s->n == 0) {
 		ent_bad(e, "comes before its x (group 10 or 11)", pr);
@@ -261,16 +274,16 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
 	case 10:
 	case 11:
-		if (pair_num(e, pr, &x[0]) != 0)
+		if (coord_num(d, e, pr, &x[0]) != 0)
 			break;
 		if (loft__pts_add(pr->code == 10 ? &e->p10 : &e->p11, x) != 0 ||
 		    (pr->code == 10 && poly && nums_add(&e->bulge, 0) != 0))
 			d->oom = 1;
 		break;
-	case 20: set_last(e, &e->p10, 1, pr); break;
-	case 30: set_last(e, &e->p10, 2, pr); break;
-	case 21: set_last(e, &e->p11, 1, pr); break;
-	case 31: set_last(e, &e->p11, 2, pr); break;
+	case 20: set_last(d, e, &e->p10, 1, pr); break;
+	case 30: set_last(d, e, &e->p10, 2, pr); break;
+	case 21: set_last(d, e, &e->p11, 1, pr); break;
+	case 31: set_last(d, e, &e->p11, 2, pr); break;
 	case 12: e->has12 = pair_num(e, pr, &e->t12[0]) == 0; break;
 	case 22: pair_num(e, pr, &e->t12[1]); break;
 	case 32: pair_num(e, pr, &e->t12[2]); break;
@@ -479,7 +492,7 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 	}
 	hdr = w->len;
 	loft_end_line(w);
-	loft__pts_put(w, d->knots.p, n, dim);
+	loft__pts_put(w, d->echo, d->knots.p, n, dim);
 	loft_end_record(w);
 	if (loft__cadin_done(d->c, mark, line) != 0 || !d->turns)
 		return;
@@ -540,7 +553,7 @@ do_point(struct dxf *d, struct ent *e)
 	loft_put_type(w, "points");
 	loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
 	loft_end_line(w);
-	loft_put_row(w, p, loft__pts_dim(p, 1));
+	loft__echo_row(d->echo, w, p, loft__pts_dim(p, 1));
 	loft_end_record(w);
 	if (loft__cadin_done(d->c, mark, e->line) != 0 || e->nlayer != 1 ||
 	    e->layer[0] != '2')
@@ -792,7 +805,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 					row[3 * dim + q] = p * (b[p * dim + q] -
 					    b[(p - 1) * dim + q]);
 				}
-			loft_put_row(w, row, 4 * dim);
+			loft__echo_row(d->echo, w, row, 4 * dim);
 		} else {
 			char num[24];
 
@@ -802,7 +815,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 			loft_put_attr(w, "piece", num);
 			loft_end_line(w);
 			for (int j = 0; j <= p; j++)
-				loft_put_row(w, b + j * dim, dim);
+				loft__echo_row(d->echo, w, b + j * dim, dim);
 			loft_end_record(w);
 		}
 	}
@@ -1268,6 +1281,7 @@ dxf_free(struct dxf *d)
 	free(d->kr);
 	free(d->tp);
 	free(d->seg.v);
+	free(d->echo);
 }
 
 /* Skip to the next line that is a 0 group code; 1 if there is one. */
@@ -1312,6 +1326,10 @@ loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c)
 	d.end = buf + len;
 	d.c = c;
 	d.scale = 1;
+	if ((d.echo = calloc(1, sizeof *d.echo)) != NULL) {
+		d.echo->doc = buf;      /* none: every number formatted */
+		d.echo->len = len;
+	}
 	/* the records are shorter than the groups they come from: room for
 	 * them at once saves copying the output as it grows (if there is
 	 * no such room, it grows as usual) */
