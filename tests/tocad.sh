@@ -237,6 +237,52 @@ else
 	echo "tocad: skipped: no python3-ezdxf"
 fi
 
+# LibreCAD (2.2's dxf2pdf, headless): it reads tocad's DXFs and prints
+# them at 1:1 to a PDF whose drawing has the curves' extent in
+# millimetres: a polyline, SPLINEs, a graded set on its layers with knots
+# as POINTs, and the insole in inches ($INSUNITS 1: the same paper size).
+# The reference is the box of sample's points of the curves; within
+# 0.1 mm (dxf2pdf's 1200 dpi is 0.02 mm, and its SPLINEs are its own
+# chords).  A DXF LibreCAD cannot read gets a dialog, no PDF: the
+# timeout ends it and the check fails.
+PDFPY=$(python_with zlib)
+if command -v librecad >/dev/null 2>&1 && [ -n "$PDFPY" ] &&
+    command -v timeout >/dev/null 2>&1; then
+	mkdir -p "$T/lc/home" "$T/lc/run" "$T/lc/pdf" && chmod 700 "$T/lc/run"
+	$B/tocad -f dxf "$T/graded.cubic" man/figures/insole.knots >"$T/lc/graded.dxf"
+	$B/tocad -f dxf -s "$T/graded.cubic" >"$T/lc/gradeds.dxf"
+	cp "$T/insd.dxf" "$T/lc/ins.dxf"
+	cp "$T/inss.dxf" "$T/lc/inss.dxf"
+	awk '/^[-0-9]/ { print $1 / 25.4, $2 / 25.4; next } { print }' \
+	    man/figures/insole.knots | $B/splinefit | $B/tocad -f dxf -u in \
+	    >"$T/lc/insin.dxf"
+	# box FILE...: the width and height of sample's points of the curves
+	box() {
+		cat "$@" | $B/sample -n 50 | awk 'NF { if (!n++) { a = b = $1; c = e = $2 }
+		    if ($1 < a) a = $1; if ($1 > b) b = $1
+		    if ($2 < c) c = $2; if ($2 > e) e = $2 }
+		    END { printf "%.6f %.6f\n", b - a, e - c }'
+	}
+	for f in ins:ins.cubic inss:ins.cubic graded:graded.cubic \
+	    gradeds:graded.cubic insin:ins.cubic; do
+		n=${f%%:*}
+		(cd "$T/lc" && HOME=$PWD/home XDG_RUNTIME_DIR=$PWD/run \
+		    QT_QPA_PLATFORM=offscreen timeout 60 librecad dxf2pdf -s 1 \
+		    -t pdf "$n.dxf") >"$T/lc/$n.log" 2>&1
+		if [ ! -s "$T/lc/pdf/$n.pdf" ]; then
+			no "librecad dxf2pdf $n.dxf: no PDF: $(grep -v DEBUG "$T/lc/$n.log" | head -3)"
+			continue
+		fi
+		set -- $("$PDFPY" tests/pdf_extent.py "$T/lc/pdf/$n.pdf" 2>&1) \
+		    $(box "$T/${f#*:}")
+		awk -v p="$1" -v w="$2" -v h="$3" -v W="$4" -v H="$5" 'BEGIN {
+		    d = w - W; e = h - H; exit !(p > 0 && d * d <= 0.01 && e * e <= 0.01) }' &&
+		    ok || no "librecad: $n.dxf printed $1 paths over $2 x $3 mm, want $4 x $5"
+	done
+else
+	echo "tocad: skipped: LibreCAD's print of the DXFs (no librecad, python3 or timeout)"
+fi
+
 # ---- SVG -------------------------------------------------------------------
 
 # svg_paths FILE: each C segment of the first path as "x0 y0 x1 y1 x2 y2 x3 y3"
