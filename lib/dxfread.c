@@ -10,8 +10,9 @@
  *
  * Arcs (bulges, ARC, CIRCLE) are chords within c->tol.  $INSUNITS
  * scales the drawing to millimetres.  POINTs on layer 2 at the vertices
- * of knot records are ASTM D6673 turn points: they become corners= of
- * those records instead of records of their own.
+ * of knot records, or at the joints of cubic records, are ASTM D6673
+ * turn points: they become corners= of those records instead of records
+ * of their own.
  */
 #include <float.h>
 #include <math.h>
@@ -467,6 +468,30 @@ vector_text(char *buf, const double *t, int dim)
 }
 
 /*
+ * Keep the vertices v of the record just written, whose header line
+ * ends at hdr in the output, for the turn points: a knot record's knots,
+ * a cubic record's joints (loft.5's corners= counts either from 1).
+ */
+static void
+keep_vertices(struct dxf *d, size_t hdr, const struct loft__pts *v)
+{
+	if (!d->turns)
+		return;
+	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
+	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
+	    3 * (d->verts.n + v->n), sizeof *d->verts.p) != 0) {
+		d->oom = 1;
+		return;
+	}
+	d->kr[d->nkr].hdr = hdr;
+	d->kr[d->nkr].v0 = d->verts.n;
+	d->kr[d->nkr].nv = v->n;
+	d->nkr++;
+	memcpy(d->verts.p + 3 * d->verts.n, v->p, 3 * v->n * sizeof *v->p);
+	d->verts.n += v->n;
+}
+
+/*
  * Write d->knots as a knot record of the entity with layer (and, for a
  * SPLINE, its end tangents) and keep its knots for the turn points.
  */
@@ -494,21 +519,8 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 	loft_end_line(w);
 	loft__pts_put(w, d->echo, d->knots.p, n, dim);
 	loft_end_record(w);
-	if (loft__cadin_done(d->c, mark, line) != 0 || !d->turns)
-		return;
-	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
-	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
-	    3 * (d->verts.n + n), sizeof *d->verts.p) != 0) {
-		d->oom = 1;
-		return;
-	}
-	d->kr[d->nkr].hdr = hdr;
-	d->kr[d->nkr].v0 = d->verts.n;
-	d->kr[d->nkr].nv = n;
-	d->nkr++;
-	memcpy(d->verts.p + 3 * d->verts.n, d->knots.p, 3 * n *
-	    sizeof *d->knots.p);
-	d->verts.n += n;
+	if (loft__cadin_done(d->c, mark, line) == 0)
+		keep_vertices(d, hdr, &d->knots);
 }
 
 /* 0, or -1 after the message "NAME: what" for entity e. */
@@ -718,6 +730,22 @@ ends_meet(const double *t, const double *ctl, int p, size_t n, int dim)
 	return 1;
 }
 
+/* Append the point b (dim numbers) to d->knots when the document may
+ * hold turn points; -1 when out of memory. */
+static int
+joint_add(struct dxf *d, const double *b, int dim)
+{
+	double x[3] = { b[0], b[1], dim == 3 ? b[2] : 0 };
+
+	if (!d->turns)
+		return 0;
+	if (loft__pts_add(&d->knots, x) != 0) {
+		d->oom = 1;
+		return -1;
+	}
+	return 0;
+}
+
 /* A SPLINE by control points: its Bezier pieces, exactly. */
 static void
 spline_ctl(struct dxf *d, struct ent *e)
@@ -725,7 +753,8 @@ spline_ctl(struct dxf *d, struct ent *e)
 	struct loft_writer *w = d->c->w;
 	size_t n = e->p10.n, mark = w->len, npieces = 0;
 	const double *t = e->g40.v;
-	int p = (int)e->f71, dim, cubic;
+	int p = (int)e->f71, dim, cubic, closed;
+	size_t hdr = mark;
 	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
 	double row[12], *ctl;
 	char msg[160];
@@ -779,11 +808,13 @@ spline_ctl(struct dxf *d, struct ent *e)
 			ctl[2 * k + 1] = ctl[3 * k + 1];
 		}
 	cubic = p <= 3;
+	closed = e->f70 & 1 || ends_meet(t, ctl, p, n, dim);
+	d->knots.n = 0;         /* a cubic's joints, for turn points */
 	if (cubic) {
 		loft_put_type(w, "cubic");
-		loft_put_attr(w, "closed", e->f70 & 1 || ends_meet(t, ctl, p,
-		    n, dim) ? "1" : "0");
+		loft_put_attr(w, "closed", closed ? "1" : "0");
 		loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+		hdr = w->len;
 		loft_end_line(w);
 	}
 	for (size_t i = (size_t)p; i < n; i++) {
@@ -791,6 +822,11 @@ spline_ctl(struct dxf *d, struct ent *e)
 			continue;       /* an empty span */
 		span_bezier(t, ctl, p, i, dim, b, work);
 		npieces++;
+		if (cubic && joint_add(d, b, dim) != 0) {
+			w->len = mark;
+			w->col = 0;
+			return;
+		}
 		if (cubic) {
 			/* degree 1 and 2 raised to 3 exactly: the ends stay,
 			 * P'_A = p (b1 - b0), P'_B = p (b_p - b_{p-1}) */
@@ -825,9 +861,17 @@ spline_ctl(struct dxf *d, struct ent *e)
 		refuse(d, e, "its knots span nothing: no piece of curve");
 		return;
 	}
-	if (cubic)
-		loft_end_record(w);
-	loft__cadin_done(d->c, mark, e->line);
+	if (!cubic) {
+		loft__cadin_done(d->c, mark, e->line);
+		return;
+	}
+	loft_end_record(w);
+	if (!closed && joint_add(d, b + p * dim, dim) != 0) {
+		w->len = mark;
+		return;
+	}
+	if (loft__cadin_done(d->c, mark, e->line) == 0)
+		keep_vertices(d, hdr, &d->knots);
 }
 
 static void
