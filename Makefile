@@ -34,7 +34,8 @@ TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
           bin/test/hostile bin/test/oom.so bin/test/arclen \
           bin/test/cad
-BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
+BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
+          bin/bench/numbers
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5

@@ -162,6 +162,29 @@ merge(struct opts *o, const struct loft_record *rec, int closed, double dist,
 	return m;
 }
 
+/*
+ * The corners as the cubic's corners=: the joints, counted from 1 as the
+ * knots kept (joint i is the start of segment i; an open curve's end is
+ * joint nseg + 1).  Returns 0, or LOFT_ENOMEM.
+ */
+static int
+put_corners(struct loft_writer *w, const size_t *corner, size_t nc,
+    struct loft_error *err)
+{
+	char *buf, *p;
+
+	if (nc == 0)
+		return 0;
+	if ((buf = malloc(nc * 21 + 1)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	p = buf;
+	for (size_t j = 0; j < nc; j++)
+		p += sprintf(p, "%s%zu", j > 0 ? "," : "", corner[j] + 1);
+	loft_put_attr(w, "corners", buf);
+	free(buf);
+	return 0;
+}
+
 /* The notes on the knots merged, once the record is fitted. */
 static void
 merge_notes(struct loft_run *run, const struct loft_record *rec, size_t m,
@@ -297,6 +320,8 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 		report(run, rec, m, &fit, &info, nseg);
 	loft_put_type(&run->w, "cubic");
 	loft_put_attr(&run->w, "closed", fit.closed ? "1" : "0");
+	if (put_corners(&run->w, o->corner, nc, err) != 0)
+		return LOFT_ENOMEM;
 	loft_put_attrs_except(&run->w, rec, consumed);
 	loft_end_line(&run->w);
 	for (size_t i = 0; i < nseg; i++)

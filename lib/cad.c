@@ -260,6 +260,68 @@ make_polyline(const struct loft_cad_doc *d, struct pts *s,
 	return rc == 0 ? 0 : loft_fail(err, rc, -1, "out of memory");
 }
 
+/* ---- corners -------------------------------------------------------- */
+
+/*
+ * Joint j (counted from 1, loft.5's corners=) of c as the document has
+ * it: a SPLINE's control point there (exact), or the polyline's vertex,
+ * the end of the piece before (piece 0's start for joint 1).
+ */
+static const double *
+joint(const struct loft_bcurve *c, size_t j, int exact)
+{
+	if (exact || j == 1)
+		return loft_cad_ctl(c, (j - 1) * (size_t)c->deg);
+	return c->ctl + ((j - 2) * (size_t)(c->deg + 1) + (size_t)c->deg) *
+	    (size_t)c->dim;
+}
+
+/*
+ * The points of the joints the record's corners= names, into *out
+ * (malloc'd, c->dim numbers each, *n of them; NULL and 0 when it has
+ * none): joint j from 1 to c->npieces, and on an open curve its end,
+ * npieces + 1; in increasing order.  Returns 0, LOFT_EINPUT or
+ * LOFT_ENOMEM.
+ */
+static int
+corner_points(const struct loft_record *rec, const struct loft_bcurve *c,
+    int exact, double **out, size_t *n, struct loft_error *err)
+{
+	const char *v = loft_attr(rec, "corners"), *s = v;
+	size_t max = c->closed ? c->npieces : c->npieces + 1, last = 0;
+	double *p;
+
+	*out = NULL;
+	*n = 0;
+	if (v == NULL)
+		return 0;
+	if ((p = malloc((strlen(v) / 2 + 1) * (size_t)c->dim * sizeof *p)) ==
+	    NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (;;) {
+		size_t len = strcspn(s, ","), j = 0, i;
+
+		for (i = 0; i < len && s[i] >= '0' && s[i] <= '9' && j <= max;
+		    i++)
+			j = 10 * j + (size_t)(s[i] - '0');
+		if (len == 0 || i < len || j < 1 || j > max || j <= last) {
+			free(p);
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "corners=%s: want joint numbers from 1 to %zu in "
+			    "increasing order, separated by commas", v, max);
+		}
+		memcpy(p + *n * (size_t)c->dim, joint(c, j, exact),
+		    (size_t)c->dim * sizeof *p);
+		++*n;
+		last = j;
+		if (s[len] == '\0')
+			break;
+		s += len + 1;
+	}
+	*out = p;
+	return 0;
+}
+
 /* ---- records -------------------------------------------------------- */
 
 /* "a patch record is a surface: DXF takes curves and points" */
@@ -351,9 +413,9 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	struct loft_cad_item it;
 	struct pts s = { NULL, 0, 0, 0 };
 	char name[128];
-	double box[6];
-	size_t np;
-	int rc;
+	double box[6], *turn = NULL;
+	size_t np, nturn = 0;
+	int rc, exact;
 
 	if (loft_curve_from_record(rec, &c, err) != 0)
 		return LOFT_EINPUT;
@@ -377,16 +439,20 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	if (item(d, rec, &it, name, sizeof name, bc.ctl, np, bc.dim, box,
 	    err) != 0)
 		return LOFT_EGEOM;
-	if (d->f->curve != NULL && (d->o.exact || d->f->polyline == NULL))
-		return end_item(d, begin_item(d, &it, box) ||
-		    d->f->curve(d, &bc));
-	if ((rc = make_polyline(d, &s, &bc, it.tol, err)) != 0) {
+	exact = d->f->curve != NULL && (d->o.exact || d->f->polyline == NULL);
+	if (d->f->turns != NULL && (rc = corner_points(rec, &bc, exact,
+	    &turn, &nturn, err)) != 0)
+		return rc;
+	if (!exact && (rc = make_polyline(d, &s, &bc, it.tol, err)) != 0) {
 		free(s.p);
+		free(turn);
 		return rc;
 	}
-	rc = begin_item(d, &it, box) || d->f->polyline(d, s.p, s.n, s.dim,
-	    bc.closed);
+	rc = begin_item(d, &it, box) || (exact ? d->f->curve(d, &bc) :
+	    d->f->polyline(d, s.p, s.n, s.dim, bc.closed)) ||
+	    (nturn > 0 && d->f->turns(d, turn, nturn, bc.dim));
 	free(s.p);
+	free(turn);
 	return end_item(d, rc);
 }
 

@@ -199,10 +199,119 @@ loft__pts_dim(const double *p, size_t n)
 }
 
 void
-loft__pts_put(struct loft_writer *w, const double *p, size_t n, int dim)
+loft__pts_put(struct loft_writer *w, const struct loft__echo *e,
+    const double *p, size_t n, int dim)
 {
 	for (size_t i = 0; i < n; i++)
-		loft_put_row(w, p + 3 * i, dim);
+		loft__echo_row(e, w, p + 3 * i, dim);
+}
+
+/* Significant digits past which doubles no longer keep decimals apart
+ * (DBL_DIG), and the most zeros after "0." that positional text has
+ * (loft_format_num writes 0.0000x as x e-05). */
+#define ECHO_DIGITS 15
+#define ECHO_ZEROS 3
+
+static int
+is_digit(char c)
+{
+	return c >= '0' && c <= '9';
+}
+
+int
+loft__echo_form(const char *s, size_t n)
+{
+	size_t i = 0, sig = 0, zeros = 0;
+
+	if (n == 1 && s[0] == '0')
+		return 1;
+	if (n > 0 && s[0] == '-')
+		i++;
+	if (i == n)
+		return 0;
+	if (s[i] == '0') {                      /* 0.000ddd */
+		if (i + 2 >= n || s[i + 1] != '.')
+			return 0;
+		for (i += 2; i < n && s[i] == '0'; i++)
+			zeros++;
+		if (zeros > ECHO_ZEROS || i == n)
+			return 0;
+	} else {                                /* ddd, ddd.ddd */
+		for (; i < n && is_digit(s[i]); i++)
+			sig++;
+		if (sig == 0)
+			return 0;
+		if (i == n)
+			return sig <= ECHO_DIGITS;
+		if (s[i] != '.' || ++i == n)
+			return 0;
+	}
+	for (; i < n; i++, sig++)
+		if (!is_digit(s[i]))
+			return 0;
+	return sig <= ECHO_DIGITS && s[n - 1] != '0';
+}
+
+static size_t
+echo_slot(double x)
+{
+	uint64_t b;
+
+	memcpy(&b, &x, sizeof b);
+	return (size_t)(((b ^ b >> 31) * 0x9e3779b97f4a7c15ULL) >> 32) %
+	    LOFT__ECHO_SLOTS;
+}
+
+int
+loft__echo_parse(struct loft__echo *e, const char *s, size_t n, double *x)
+{
+	size_t k;
+
+	if (loft_parse_num(s, n, x, NULL) != 0)
+		return -1;
+	if (e != NULL && s >= e->doc && (size_t)(s - e->doc) < e->len &&
+	    (size_t)(s - e->doc) <= UINT32_MAX - n && loft__echo_form(s, n)) {
+		k = echo_slot(*x);
+		memcpy(&e->slot[k].bits, x, sizeof *x);
+		e->slot[k].at = (uint32_t)(s - e->doc);
+		e->slot[k].n = (uint32_t)n;
+	}
+	return 0;
+}
+
+void
+loft__echo_put(const struct loft__echo *e, struct loft_writer *w, double x)
+{
+	size_t k, n;
+	uint64_t b;
+
+	if (e == NULL || w->digits != 0 || w->bad) {
+		loft_put_num(w, x);
+		return;
+	}
+	k = echo_slot(x);
+	memcpy(&b, &x, sizeof b);
+	if ((n = e->slot[k].n) == 0 || e->slot[k].bits != b) {
+		loft_put_num(w, x);
+		return;
+	}
+	if (loft__grow((void **)&w->buf, &w->cap, w->len + n + 1, 1) != 0) {
+		w->bad = LOFT_ENOMEM;
+		return;
+	}
+	if (w->col++ > 0)
+		w->buf[w->len++] = ' ';
+	memcpy(w->buf + w->len, e->doc + e->slot[k].at, n);
+	w->len += n;
+}
+
+void
+loft__echo_row(const struct loft__echo *e, struct loft_writer *w,
+    const double *v, int n)
+{
+	for (int k = 0; k < n; k++)
+		loft__echo_put(e, w, v[k]);
+	loft_end_line(w);
 }
 
 /* The tolerance of an arc of radius r in the output's units. */

@@ -2,7 +2,8 @@
  * dxf.c: the DXF format (AutoCAD R2000, AC1015, as ezdxf and LibreCAD
  * read it): curves as LWPOLYLINE (plane) or POLYLINE (space) within the
  * tolerance, or exactly as SPLINE entities (tocad -s); knots as POINT
- * entities on layer 3, ASTM D6673's layer of curve points.  Each curve
+ * entities on layer 3, ASTM D6673's layer of curve points, and a curve's
+ * corners (corners=) as POINTs on layer 2, its turn points.  Each curve
  * goes on a layer named by its size= and id= ("size_4.5"), or on layer
  * 1, D6673's boundary layer, when it has neither; the layer table lists
  * the layers in the order they first appear, so a graded set keeps its
@@ -169,12 +170,14 @@ dxf_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
 	return x->cur == NULL ? LOFT_ENOMEM : 0;
 }
 
+/* POINT entities on layer name. */
 static int
-dxf_points(struct loft_cad_doc *d, const double *p, size_t n, int dim)
+points_on(struct loft_cad_doc *d, const char *name, const double *p,
+    size_t n, int dim)
 {
 	struct dxf *x = d->state;
 
-	if ((x->cur = layer(x, "3")) == NULL)
+	if ((x->cur = layer(x, name)) == NULL)
 		return LOFT_ENOMEM;
 	for (size_t i = 0; i < n; i++) {
 		entity(d, "POINT", "AcDbPoint");
@@ -183,6 +186,20 @@ dxf_points(struct loft_cad_doc *d, const double *p, size_t n, int dim)
 			group_num(d, 30, 0);
 	}
 	return 0;
+}
+
+/* Knots: D6673's curve points, layer 3. */
+static int
+dxf_points(struct loft_cad_doc *d, const double *p, size_t n, int dim)
+{
+	return points_on(d, "3", p, n, dim);
+}
+
+/* A curve's corners: D6673's turn points, layer 2, at the vertices. */
+static int
+dxf_turns(struct loft_cad_doc *d, const double *p, size_t n, int dim)
+{
+	return points_on(d, "2", p, n, dim);
 }
 
 static int
@@ -318,5 +335,5 @@ const struct loft_cad_format loft_cad_dxf = {
 	.name = "dxf", .title = "DXF",
 	.begin = dxf_begin, .end = dxf_end, .begin_record = dxf_begin_record,
 	.curve = dxf_curve, .polyline = dxf_polyline, .points = dxf_points,
-	.free = dxf_free,
+	.turns = dxf_turns, .free = dxf_free,
 };

@@ -10,8 +10,9 @@
  *
  * Arcs (bulges, ARC, CIRCLE) are chords within c->tol.  $INSUNITS
  * scales the drawing to millimetres.  POINTs on layer 2 at the vertices
- * of knot records are ASTM D6673 turn points: they become corners= of
- * those records instead of records of their own.
+ * of knot records, or at the joints of cubic records, are ASTM D6673
+ * turn points: they become corners= of those records instead of records
+ * of their own.
  */
 #include <float.h>
 #include <math.h>
@@ -93,6 +94,7 @@ struct dxf {
 	struct turn *tp;
 	size_t ntp, tpcap;
 	struct nums seg;        /* spline pieces */
+	struct loft__echo *echo;        /* coordinates' texts (may be NULL) */
 	int oom;
 };
 
@@ -202,6 +204,17 @@ pair_num(struct ent *e, const struct pair *pr, double *x)
 	return 0;
 }
 
+/* A coordinate: as pair_num, its text noted for the output. */
+static int
+coord_num(struct dxf *d, struct ent *e, const struct pair *pr, double *x)
+{
+	if (loft__echo_parse(d->echo, pr->v, pr->n, x) != 0) {
+		ent_bad(e, "is not a finite number", pr);
+		return -1;
+	}
+	return 0;
+}
+
 static int
 pair_int(struct ent *e, const struct pair *pr, long *v)
 {
@@ -236,11 +249,12 @@ ent_start(struct ent *e, const struct pair *pr)
 
 /* Coordinate k of a point list's last point, for groups 20 and 30. */
 static void
-set_last(struct ent *e, struct loft__pts *s, int k, const struct pair *pr)
+set_last(struct dxf *d, struct ent *e, struct loft__pts *s, int k,
+    const struct pair *pr)
 {
 	double x;
 
-	if (pair_num(e, pr, &x) != 0)
+	if (coord_num(d, e, pr, &x) != 0)
 		return;
 	if (s->n == 0) {
 		ent_bad(e, "comes before its x (group 10 or 11)", pr);
@@ -261,16 +275,16 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
 	case 10:
 	case 11:
-		if (pair_num(e, pr, &x[0]) != 0)
+		if (coord_num(d, e, pr, &x[0]) != 0)
 			break;
 		if (loft__pts_add(pr->code == 10 ? &e->p10 : &e->p11, x) != 0 ||
 		    (pr->code == 10 && poly && nums_add(&e->bulge, 0) != 0))
 			d->oom = 1;
 		break;
-	case 20: set_last(e, &e->p10, 1, pr); break;
-	case 30: set_last(e, &e->p10, 2, pr); break;
-	case 21: set_last(e, &e->p11, 1, pr); break;
-	case 31: set_last(e, &e->p11, 2, pr); break;
+	case 20: set_last(d, e, &e->p10, 1, pr); break;
+	case 30: set_last(d, e, &e->p10, 2, pr); break;
+	case 21: set_last(d, e, &e->p11, 1, pr); break;
+	case 31: set_last(d, e, &e->p11, 2, pr); break;
 	case 12: e->has12 = pair_num(e, pr, &e->t12[0]) == 0; break;
 	case 22: pair_num(e, pr, &e->t12[1]); break;
 	case 32: pair_num(e, pr, &e->t12[2]); break;
@@ -454,6 +468,30 @@ vector_text(char *buf, const double *t, int dim)
 }
 
 /*
+ * Keep the vertices v of the record just written, whose header line
+ * ends at hdr in the output, for the turn points: a knot record's knots,
+ * a cubic record's joints (loft.5's corners= counts either from 1).
+ */
+static void
+keep_vertices(struct dxf *d, size_t hdr, const struct loft__pts *v)
+{
+	if (!d->turns)
+		return;
+	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
+	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
+	    3 * (d->verts.n + v->n), sizeof *d->verts.p) != 0) {
+		d->oom = 1;
+		return;
+	}
+	d->kr[d->nkr].hdr = hdr;
+	d->kr[d->nkr].v0 = d->verts.n;
+	d->kr[d->nkr].nv = v->n;
+	d->nkr++;
+	memcpy(d->verts.p + 3 * d->verts.n, v->p, 3 * v->n * sizeof *v->p);
+	d->verts.n += v->n;
+}
+
+/*
  * Write d->knots as a knot record of the entity with layer (and, for a
  * SPLINE, its end tangents) and keep its knots for the turn points.
  */
@@ -479,23 +517,10 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 	}
 	hdr = w->len;
 	loft_end_line(w);
-	loft__pts_put(w, d->knots.p, n, dim);
+	loft__pts_put(w, d->echo, d->knots.p, n, dim);
 	loft_end_record(w);
-	if (loft__cadin_done(d->c, mark, line) != 0 || !d->turns)
-		return;
-	if (loft__grow((void **)&d->kr, &d->krcap, d->nkr + 1, sizeof *d->kr)
-	    != 0 || loft__grow((void **)&d->verts.p, &d->verts.cap,
-	    3 * (d->verts.n + n), sizeof *d->verts.p) != 0) {
-		d->oom = 1;
-		return;
-	}
-	d->kr[d->nkr].hdr = hdr;
-	d->kr[d->nkr].v0 = d->verts.n;
-	d->kr[d->nkr].nv = n;
-	d->nkr++;
-	memcpy(d->verts.p + 3 * d->verts.n, d->knots.p, 3 * n *
-	    sizeof *d->knots.p);
-	d->verts.n += n;
+	if (loft__cadin_done(d->c, mark, line) == 0)
+		keep_vertices(d, hdr, &d->knots);
 }
 
 /* 0, or -1 after the message "NAME: what" for entity e. */
@@ -540,7 +565,7 @@ do_point(struct dxf *d, struct ent *e)
 	loft_put_type(w, "points");
 	loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
 	loft_end_line(w);
-	loft_put_row(w, p, loft__pts_dim(p, 1));
+	loft__echo_row(d->echo, w, p, loft__pts_dim(p, 1));
 	loft_end_record(w);
 	if (loft__cadin_done(d->c, mark, e->line) != 0 || e->nlayer != 1 ||
 	    e->layer[0] != '2')
@@ -705,6 +730,22 @@ ends_meet(const double *t, const double *ctl, int p, size_t n, int dim)
 	return 1;
 }
 
+/* Append the point b (dim numbers) to d->knots when the document may
+ * hold turn points; -1 when out of memory. */
+static int
+joint_add(struct dxf *d, const double *b, int dim)
+{
+	double x[3] = { b[0], b[1], dim == 3 ? b[2] : 0 };
+
+	if (!d->turns)
+		return 0;
+	if (loft__pts_add(&d->knots, x) != 0) {
+		d->oom = 1;
+		return -1;
+	}
+	return 0;
+}
+
 /* A SPLINE by control points: its Bezier pieces, exactly. */
 static void
 spline_ctl(struct dxf *d, struct ent *e)
@@ -712,7 +753,8 @@ spline_ctl(struct dxf *d, struct ent *e)
 	struct loft_writer *w = d->c->w;
 	size_t n = e->p10.n, mark = w->len, npieces = 0;
 	const double *t = e->g40.v;
-	int p = (int)e->f71, dim, cubic;
+	int p = (int)e->f71, dim, cubic, closed;
+	size_t hdr = mark;
 	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
 	double row[12], *ctl;
 	char msg[160];
@@ -766,11 +808,13 @@ spline_ctl(struct dxf *d, struct ent *e)
 			ctl[2 * k + 1] = ctl[3 * k + 1];
 		}
 	cubic = p <= 3;
+	closed = e->f70 & 1 || ends_meet(t, ctl, p, n, dim);
+	d->knots.n = 0;         /* a cubic's joints, for turn points */
 	if (cubic) {
 		loft_put_type(w, "cubic");
-		loft_put_attr(w, "closed", e->f70 & 1 || ends_meet(t, ctl, p,
-		    n, dim) ? "1" : "0");
+		loft_put_attr(w, "closed", closed ? "1" : "0");
 		loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+		hdr = w->len;
 		loft_end_line(w);
 	}
 	for (size_t i = (size_t)p; i < n; i++) {
@@ -778,6 +822,11 @@ spline_ctl(struct dxf *d, struct ent *e)
 			continue;       /* an empty span */
 		span_bezier(t, ctl, p, i, dim, b, work);
 		npieces++;
+		if (cubic && joint_add(d, b, dim) != 0) {
+			w->len = mark;
+			w->col = 0;
+			return;
+		}
 		if (cubic) {
 			/* degree 1 and 2 raised to 3 exactly: the ends stay,
 			 * P'_A = p (b1 - b0), P'_B = p (b_p - b_{p-1}) */
@@ -792,7 +841,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 					row[3 * dim + q] = p * (b[p * dim + q] -
 					    b[(p - 1) * dim + q]);
 				}
-			loft_put_row(w, row, 4 * dim);
+			loft__echo_row(d->echo, w, row, 4 * dim);
 		} else {
 			char num[24];
 
@@ -802,7 +851,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 			loft_put_attr(w, "piece", num);
 			loft_end_line(w);
 			for (int j = 0; j <= p; j++)
-				loft_put_row(w, b + j * dim, dim);
+				loft__echo_row(d->echo, w, b + j * dim, dim);
 			loft_end_record(w);
 		}
 	}
@@ -812,9 +861,17 @@ spline_ctl(struct dxf *d, struct ent *e)
 		refuse(d, e, "its knots span nothing: no piece of curve");
 		return;
 	}
-	if (cubic)
-		loft_end_record(w);
-	loft__cadin_done(d->c, mark, e->line);
+	if (!cubic) {
+		loft__cadin_done(d->c, mark, e->line);
+		return;
+	}
+	loft_end_record(w);
+	if (!closed && joint_add(d, b + p * dim, dim) != 0) {
+		w->len = mark;
+		return;
+	}
+	if (loft__cadin_done(d->c, mark, e->line) == 0)
+		keep_vertices(d, hdr, &d->knots);
 }
 
 static void
@@ -1268,6 +1325,7 @@ dxf_free(struct dxf *d)
 	free(d->kr);
 	free(d->tp);
 	free(d->seg.v);
+	free(d->echo);
 }
 
 /* Skip to the next line that is a 0 group code; 1 if there is one. */
@@ -1312,6 +1370,10 @@ loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c)
 	d.end = buf + len;
 	d.c = c;
 	d.scale = 1;
+	if ((d.echo = calloc(1, sizeof *d.echo)) != NULL) {
+		d.echo->doc = buf;      /* none: every number formatted */
+		d.echo->len = len;
+	}
 	/* the records are shorter than the groups they come from: room for
 	 * them at once saves copying the output as it grows (if there is
 	 * no such room, it grows as usual) */

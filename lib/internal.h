@@ -301,8 +301,45 @@ struct loft__pts {              /* a growing list of points, 3 numbers each */
 int loft__pts_add(struct loft__pts *s, const double *x);
 /* 3 when any point's z is not 0, else 2: a record's dimension. */
 int loft__pts_dim(const double *p, size_t n);
-/* Write the n points p (3 numbers each) as rows of dim numbers. */
-void loft__pts_put(struct loft_writer *w, const double *p, size_t n, int dim);
+/*
+ * Echo: numbers a reader writes unchanged go out as the document's own
+ * text, not formatted again, where that text is already what
+ * loft_format_num(x, 0) would write (see loft__echo_form).  A slot per
+ * hash of a double's bits: a number read is noted in its slot (over any
+ * other), and a number written finds its text there only if the slot
+ * holds the same bits, so output is byte for byte what formatting gives.
+ * The texts are in the document doc[0..len) (its first 4 GB), which
+ * must outlive the echo.  An echo zeroed but for doc and len is empty.
+ */
+#define LOFT__ECHO_SLOTS 16384
+struct loft__echo {
+	const char *doc;                /* the document the texts are in */
+	size_t len;
+	struct {
+		uint64_t bits;
+		uint32_t at, n;         /* doc[at..at+n); n 0: empty */
+	} slot[LOFT__ECHO_SLOTS];
+};
+/* Whether s[0..n), read as the number x, is the text loft_format_num(x,
+ * 0) writes: "0", or an optional '-', no leading zeros, no trailing
+ * zeros after a point, no exponent, at most 3 zeros after "0.", and at
+ * most 15 digits after those (decimals of 15 significant digits or
+ * fewer read as distinct doubles, DBL_DIG, so such a text is the
+ * shortest that reads back, and the only one of its length). */
+int loft__echo_form(const char *s, size_t n);
+/* loft_parse_num of s[0..n) into *x, noting its text in e (may be NULL)
+ * when it has the form; 0, or -1 when s is not a finite number. */
+int loft__echo_parse(struct loft__echo *e, const char *s, size_t n, double *x);
+/* loft_put_num(w, x), with x's noted text from e when there is one and
+ * w writes shortest digits (w->digits 0); e may be NULL. */
+void loft__echo_put(const struct loft__echo *e, struct loft_writer *w, double x);
+/* loft_put_row of v[0..n) through loft__echo_put. */
+void loft__echo_row(const struct loft__echo *e, struct loft_writer *w,
+    const double *v, int n);
+/* Write the n points p (3 numbers each) as rows of dim numbers, with
+ * the texts of e (may be NULL; see struct loft__echo). */
+void loft__pts_put(struct loft_writer *w, const struct loft__echo *e,
+    const double *p, size_t n, int dim);
 /* Complain about line of the document, printf-style; counts it. */
 void loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
 #if defined(__GNUC__)

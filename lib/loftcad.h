@@ -124,6 +124,11 @@ struct loft_cad_format {
 	/* point records (knots) */
 	int (*points)(struct loft_cad_doc *d, const double *p, size_t n,
 	    int dim);
+	/* after a curve or polyline: the n points of its corners (the
+	 * record's corners=, loft.5), at its joints; a format without it
+	 * leaves corners= unread */
+	int (*turns)(struct loft_cad_doc *d, const double *p, size_t n,
+	    int dim);
 	/* exact surfaces: one call per patch */
 	int (*surface)(struct loft_cad_doc *d, const struct loft_bsurf *s);
 	/* or all surfaces as one mesh at the end, before end: nv vertices

@@ -517,6 +517,151 @@ test_parse(void)
 	    t.n);
 }
 
+/* ------------------------------------------------------------------ */
+/* echo (cadread.c): a reader's text stands for the number only where
+ * it is what loft_format_num writes.  References: strtod for the value,
+ * printf's shortest length for the digits, and the writer itself for
+ * the bytes; forms worked out by hand. */
+
+/* A random decimal text, echo-able or not: sign, integer digits (with
+ * leading zeros at times), point, fraction (trailing zeros at times),
+ * an exponent at times. */
+static void
+random_text(char *s)
+{
+	static const char *const sign[] = { "", "", "", "-", "+" };
+	int ni = (int)(next() % 19), nf = (int)(next() % 19), k = 0;
+
+	k += sprintf(s + k, "%s", sign[next() % 5]);
+	for (int i = 0; i < ni; i++)
+		s[k++] = (char)('0' + (i == 0 && next() % 4 ? 1 + next() % 9 :
+		    next() % 10));
+	if (ni == 0 || nf > 0 || next() % 8 == 0)
+		s[k++] = '.';
+	for (int i = 0; i < nf; i++)
+		s[k++] = (char)('0' + (i < 5 && ni == 0 && next() % 3 == 0 ? 0 :
+		    next() % 10));
+	if (ni + nf == 0)
+		s[k++] = '7';
+	if (next() % 16 == 0)
+		k += sprintf(s + k, "e%d", (int)(next() % 40) - 20);
+	s[k] = '\0';
+}
+
+/* Significant digits of a positional text: first to last nonzero. */
+static int
+sig_digits(const char *s)
+{
+	int first = -1, last = -1, k = 0;
+
+	for (const char *p = s; *p; p++) {
+		if (*p < '0' || *p > '9')
+			continue;
+		if (*p != '0') {
+			if (first < 0)
+				first = k;
+			last = k;
+		}
+		k++;
+	}
+	return first < 0 ? 0 : last - first + 1;
+}
+
+static void
+test_echo_form(void)
+{
+	static const char *const yes[] = { "0", "1", "-1", "0.5", "-0.1",
+	    "1200", "0.0001234", "-0.000999", "123456789012345",
+	    "0.123456789012345", "99999999999999.9", "-3.14159265358979" };
+	static const char *const no[] = { "", "-", "+1", "01", "00.5", "1.0",
+	    "1.", ".5", "-.5", "0.", "0.00001", "0.0000123", "-0", "0.0",
+	    "1e3", "1E+03", "1234567890123456", "0.1234567890123456",
+	    "1 ", " 1", "1,5", "0x10", "inf", "nan", "--1", "1.2.3" };
+	long n = 0, echoed = 0, wrong = 0;
+	char s[64], out[LOFT_NUMBUF];
+
+	for (size_t i = 0; i < sizeof yes / sizeof yes[0]; i++)
+		CHECK(loft__echo_form(yes[i], strlen(yes[i])), "'%s' is written "
+		    "as it stands, but is not taken as such", yes[i]);
+	for (size_t i = 0; i < sizeof no / sizeof no[0]; i++)
+		CHECK(!loft__echo_form(no[i], strlen(no[i])), "'%s' is not "
+		    "how loft writes its number, but is taken as such", no[i]);
+	for (; n < 2000000; n++) {
+		double x;
+
+		random_text(s);
+		if (!loft__echo_form(s, strlen(s)))
+			continue;
+		echoed++;
+		x = strtod(s, NULL);
+		loft_format_num(out, x, 0);
+		if (strcmp(out, s) != 0 || (x != 0 && printf_shortest(fabs(x)) !=
+		    sig_digits(s))) {
+			if (wrong++ < 5)
+				fprintf(stderr, "echo: '%s' is written '%s'\n",
+				    s, out);
+		}
+	}
+	CHECK(wrong == 0, "%ld of %ld texts taken as written are not",
+	    wrong, echoed);
+	/* the generator must reach the form often, or this proves little */
+	CHECK(echoed > n / 20, "only %ld of %ld random texts had the form",
+	    echoed, n);
+}
+
+/* Numbers through an echo come out byte for byte as through the
+ * writer alone: noted, overwritten in their slots, never noted (minus
+ * zero, a sum), and with -p digits. */
+static void
+test_echo_put(void)
+{
+	static struct loft__echo e;
+	static char doc[1 << 20];
+	struct loft_writer a = { 0 }, b = { 0 };
+	size_t k = 0;
+	long n = 0;
+
+	for (int digits = 0; digits <= 6; digits += 6) {
+		memset(&e, 0, sizeof e);
+		e.doc = doc;
+		e.len = sizeof doc;
+		a.digits = b.digits = digits;
+		a.len = b.len = 0;
+		k = 0;
+		for (int rec = 0; rec < 200; rec++) {
+			double v[400];
+			int m = 1 + (int)(next() % 400);
+
+			for (int i = 0; i < m; i++) {
+				char *s = doc + k;
+
+				random_text(s);
+				if (loft__echo_parse(&e, s, strlen(s), &v[i]) != 0)
+					v[i] = -0.0;
+				k += strlen(s) + 1;
+				if (k > sizeof doc - 64)
+					k = 0;
+				if (i % 7 == 3)
+					v[i] += v[i - 1];
+			}
+			for (int i = 0; i < m; i++) {
+				loft__echo_put(&e, &a, v[i]);
+				loft_put_num(&b, v[i]);
+				if (i % 3 == 2) {
+					loft_end_line(&a);
+					loft_end_line(&b);
+				}
+			}
+			n += m;
+		}
+		CHECK(a.len == b.len && memcmp(a.buf, b.buf, a.len) == 0,
+		    "-p %d: %ld numbers through the echo differ from the "
+		    "writer's", digits, n);
+	}
+	loft_writer_free(&a);
+	loft_writer_free(&b);
+}
+
 int
 main(void)
 {
@@ -527,5 +672,7 @@ main(void)
 	test_shortest_random();
 	test_digits();
 	test_parse();
+	test_echo_form();
+	test_echo_put();
 	return check_done("numtest");
 }

@@ -86,6 +86,46 @@ for tol in 0.01 0.001; do
 	    "$T/pts" "$T/dense") && ok || no "$what: $e"
 done
 
+# ASTM D6673 turn points: a graded set of knots with corners, fitted,
+# to DXF as polylines and as SPLINEs and back; every record's corners=
+# names vertices (of a knot record) or joints (of a cubic: joint j
+# starts row j, n + 1 ends an open curve) at its corner knots' own
+# coordinates, exactly, and no turn point is left over as a record of
+# its own.  corner_points STREAM: "x y" of each corner, record by record.
+corner_points() {
+	awk 'function flush(   k, c, j) {
+		if (nr == 0 || ncs == 0) return
+		for (k = 1; k <= ncs; k++) { j = cs[k] + 0
+			if (type == "cubic") c = j <= nr ? X[j] " " Y[j] : XE " " YE
+			else c = X[j] " " Y[j]
+			print c }
+	}
+	/^[a-z]/ { flush(); type = $1; nr = ncs = 0
+		for (i = 2; i <= NF; i++) if ($i ~ /^corners=/) {
+			sub(/^corners=/, "", $i); ncs = split($i, cs, ",") }
+		next }
+	NF == 0 { flush(); nr = ncs = 0; next }
+	{ nr++; X[nr] = $1; Y[nr] = $2; XE = $3; YE = $4 }
+	END { flush() }' "$1"
+}
+{ echo "points corners=3,9,15"; grep '^[-0-9]' man/figures/insole.knots; } |
+    $B/grade -r -1:1 >"$T/turn.knots"
+corner_points "$T/turn.knots" >"$T/turn.want"
+$B/splinefit "$T/turn.knots" >"$T/turn.cubic"
+for s in "" "-s"; do
+	what="knots with corners through splinefit, tocad -f dxf $s, fromcad"
+	$B/tocad -f dxf $s "$T/turn.cubic" | $B/fromcad >"$T/back"
+	corner_points "$T/back" >"$T/turn.got"
+	e=$(paste -d ' ' "$T/turn.want" "$T/turn.got" | awk 'NF != 4 || $1 != $3 || $2 != $4 {
+	    print "corner " NR ": " $0; exit 1 } END { if (NR != 9) { print NR " corners, want 9"; exit 1 } }') &&
+	    ok || no "$what: $e"
+	[ "$(grep -c '^points layer=2' "$T/back")" = 0 ] && ok ||
+	    no "$what: turn points left as records of their own"
+done
+# the SPLINE's joints are the fitted knots: the same numbers as the knots'
+[ "$(grep -c '^cubic .*corners=3,9,15$' "$T/back")" = 3 ] && ok ||
+    no "$what: $(grep '^cubic' "$T/back" | head -1)"
+
 # CSV: points out (awk) and back, exactly
 what="points as CSV through fromcad"
 $B/sample -n 4 "$T/insole.cubic" >"$T/s.pts"

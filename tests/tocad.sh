@@ -237,6 +237,116 @@ else
 	echo "tocad: skipped: no python3-ezdxf"
 fi
 
+# ASTM D6673 turn points: a curve's corners= (its joints, loft.5) become
+# POINTs on layer 2 at its polyline's vertices, or at its SPLINE's
+# control points at the joints.  The reference: the corner knots' own
+# numbers in the knot file (splinefit's joints are its knots), and, read
+# by awk here, the LWPOLYLINE's vertices.
+{ echo "points corners=3,9,15"; grep '^[-0-9]' man/figures/insole.knots; } >"$T/turn.knots"
+awk '/^[-0-9]/ && (++n == 3 || n == 9 || n == 15)' "$T/turn.knots" >"$T/turn.want"
+$B/splinefit "$T/turn.knots" >"$T/turn.cubic"
+head -1 "$T/turn.cubic" | grep -q '^cubic closed=1 corners=3,9,15$' && ok ||
+    no "splinefit: the cubic's header '$(head -1 "$T/turn.cubic")' names no corners 3,9,15"
+# dxf_turns FILE: "x y" of each POINT on layer 2; with -v, those that are
+# not also a vertex of an LWPOLYLINE
+dxf_turns() {
+	dxf_pairs "$2" | awk -F '\t' -v novertex="$1" '
+	$1 == 0 { t = $2; lay = "" } $1 == 8 { lay = $2 }
+	t == "LWPOLYLINE" && $1 == 10 { x = $2 } t == "LWPOLYLINE" && $1 == 20 { V[x + 0, $2 + 0] = 1 }
+	t == "POINT" && lay == "2" && $1 == 10 { x = $2 }
+	t == "POINT" && lay == "2" && $1 == 20 { P[++n] = x " " $2; PX[n] = x + 0; PY[n] = $2 + 0 }
+	END { for (i = 1; i <= n; i++) if (novertex != "-v" || !((PX[i], PY[i]) in V)) print P[i] }'
+}
+for s in "" "-s"; do
+	run "$B/tocad -f dxf $s $T/turn.cubic"
+	status 0
+	cp "$T/out" "$T/turn$s.dxf"
+	v=$(dxf_valid "$T/turn$s.dxf") && ok || no "dxf $s with turn points: not a valid DXF: $v"
+	dxf_turns - "$T/turn$s.dxf" | paste -d ' ' "$T/turn.want" - |
+	    awk 'NF != 4 || $1 != $3 || $2 != $4 { exit 1 } END { exit NR != 3 }' &&
+	    ok || no "dxf $s: turn points '$(dxf_turns - "$T/turn$s.dxf" | tr '\n' ,)', want the corner knots"
+done
+[ -z "$(dxf_turns -v "$T/turn.dxf")" ] && ok || no "dxf: turn points off the polyline's vertices"
+# a corners= that names no joint (of 2 pieces, open: 1 to 3), out of
+# order or not a number: a message each, the other records written
+printf 'cubic closed=0 corners=%s\n0 0 1 0 1 0 1 0\n1 0 1 1 0 1 0 1\n\n' 2 3 4 0 2,2 x >"$T/badturn"
+run "$B/tocad -f dxf $T/badturn"
+status 1
+says "corners=4: want joint numbers from 1 to 3 in increasing order"
+[ "$(grep -c 'want joint numbers' "$T/err")" = 4 ] && ok || no "dxf: not one message a bad corners="
+[ "$(dxf_pairs "$T/out" | grep -c "$(printf '^0\tLWPOLYLINE$')")" = 2 ] && ok ||
+    no "dxf: the good corners= records not all written"
+if [ -n "$EZPY" ]; then
+	# ezdxf: the POINTs on layer 2 where the corner knots are, and each
+	# on a vertex of the LWPOLYLINE, or a control point of the SPLINE
+	cat >"$T/ezturn.py" <<'PY'
+import sys, ezdxf
+doc = ezdxf.readfile(sys.argv[1])
+a = doc.audit()
+want = [tuple(float(v) for v in l.split()) for l in open(sys.argv[2]) if l.strip()]
+msp = doc.modelspace()
+got = [(p.dxf.location.x, p.dxf.location.y) for p in msp.query('POINT[layer=="2"]')]
+on = set()
+for e in msp.query("LWPOLYLINE"):
+    on |= {(v[0], v[1]) for v in e.get_points("xy")}
+for e in msp.query("SPLINE"):
+    on |= {(v[0], v[1]) for v in e.control_points}
+print(len(a.errors), int(got == want), int(all(g in on for g in got)))
+PY
+	for s in "" "-s"; do
+		set -- $("$EZPY" "$T/ezturn.py" "$T/turn$s.dxf" "$T/turn.want" 2>&1)
+		[ "$*" = "0 1 1" ] && ok || no "ezdxf of turn points (dxf $s): '$*' (audit errors, at the corners, on the curve)"
+	done
+fi
+
+# LibreCAD (2.2's dxf2pdf, headless): it reads tocad's DXFs and prints
+# them at 1:1 to a PDF whose drawing has the curves' extent in
+# millimetres: a polyline, SPLINEs, a graded set on its layers with knots
+# as POINTs, the insole in inches ($INSUNITS 1: the same paper size),
+# and one with turn points.
+# The reference is the box of sample's points of the curves; within
+# 0.1 mm (dxf2pdf's 1200 dpi is 0.02 mm, and its SPLINEs are its own
+# chords).  A DXF LibreCAD cannot read gets a dialog, no PDF: the
+# timeout ends it and the check fails.
+PDFPY=$(python_with zlib)
+if command -v librecad >/dev/null 2>&1 && [ -n "$PDFPY" ] &&
+    command -v timeout >/dev/null 2>&1; then
+	mkdir -p "$T/lc/home" "$T/lc/run" "$T/lc/pdf" && chmod 700 "$T/lc/run"
+	$B/tocad -f dxf "$T/graded.cubic" man/figures/insole.knots >"$T/lc/graded.dxf"
+	$B/tocad -f dxf -s "$T/graded.cubic" >"$T/lc/gradeds.dxf"
+	cp "$T/insd.dxf" "$T/lc/ins.dxf"
+	cp "$T/inss.dxf" "$T/lc/inss.dxf"
+	cp "$T/turn.dxf" "$T/lc/turn.dxf"
+	awk '/^[-0-9]/ { print $1 / 25.4, $2 / 25.4; next } { print }' \
+	    man/figures/insole.knots | $B/splinefit | $B/tocad -f dxf -u in \
+	    >"$T/lc/insin.dxf"
+	# box FILE...: the width and height of sample's points of the curves
+	box() {
+		cat "$@" | $B/sample -n 50 | awk 'NF { if (!n++) { a = b = $1; c = e = $2 }
+		    if ($1 < a) a = $1; if ($1 > b) b = $1
+		    if ($2 < c) c = $2; if ($2 > e) e = $2 }
+		    END { printf "%.6f %.6f\n", b - a, e - c }'
+	}
+	for f in ins:ins.cubic inss:ins.cubic graded:graded.cubic \
+	    gradeds:graded.cubic insin:ins.cubic turn:turn.cubic; do
+		n=${f%%:*}
+		(cd "$T/lc" && HOME=$PWD/home XDG_RUNTIME_DIR=$PWD/run \
+		    QT_QPA_PLATFORM=offscreen timeout 60 librecad dxf2pdf -s 1 \
+		    -t pdf "$n.dxf") >"$T/lc/$n.log" 2>&1
+		if [ ! -s "$T/lc/pdf/$n.pdf" ]; then
+			no "librecad dxf2pdf $n.dxf: no PDF: $(grep -v DEBUG "$T/lc/$n.log" | head -3)"
+			continue
+		fi
+		set -- $("$PDFPY" tests/pdf_extent.py "$T/lc/pdf/$n.pdf" 2>&1) \
+		    $(box "$T/${f#*:}")
+		awk -v p="$1" -v w="$2" -v h="$3" -v W="$4" -v H="$5" 'BEGIN {
+		    d = w - W; e = h - H; exit !(p > 0 && d * d <= 0.01 && e * e <= 0.01) }' &&
+		    ok || no "librecad: $n.dxf printed $1 paths over $2 x $3 mm, want $4 x $5"
+	done
+else
+	echo "tocad: skipped: LibreCAD's print of the DXFs (no librecad, python3 or timeout)"
+fi
+
 # ---- SVG -------------------------------------------------------------------
 
 # svg_paths FILE: each C segment of the first path as "x0 y0 x1 y1 x2 y2 x3 y3"
