@@ -48,6 +48,7 @@ bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 bin/obj/dtoa.o: lib/pow10.h
+bin/obj/run.o: lib/version.h
 $(CADOBJ) bin/tocad bin/test/cad: lib/loftcad.h
 
 $(LIB): $(LIBOBJ)
