@@ -46,5 +46,6 @@ suite sh tests/oom.sh
 suite bin/test/arclen
 suite sh tests/measure.sh
 suite sh tests/install.sh
+suite sh tests/synopsis.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
