@@ -97,6 +97,32 @@ test_expr_values(void)
 	NEAR(j.h[0], 0, 0, "u v^2, uu");
 	NEAR(j.h[1], 10, 0, "u v^2, uv");
 	NEAR(j.h[2], 6, 0, "u v^2, vv");
+	/* the product rule with both factors varying in each variable
+	 * (issue 12: a mutant of its v-v term survived u*v^2, where v^2 is
+	 * a power): f = u v^2 and g = u^2 v as products of three, in each
+	 * order, against the derivatives above and g_u = 2uv, g_v = u^2,
+	 * g_uu = 2v, g_uv = 2u, g_vv = 0 */
+	static const char *const f3[] = { "u*v*v", "v*v*u", "v*u*v",
+	    "(u*v)*v", "v*(u*v)" };
+	static const char *const g3[] = { "u*u*v", "v*u*u", "u*v*u",
+	    "(u*v)*u", "u*(u*v)" };
+
+	for (int k = 0; k < 5; k++) {
+		j = eval1(f3[k], "uv", 3, 5);
+		NEAR(j.v, 75, 0, f3[k]);
+		NEAR(j.d[0], 25, 0, f3[k]);
+		NEAR(j.d[1], 30, 0, f3[k]);
+		NEAR(j.h[0], 0, 0, f3[k]);
+		NEAR(j.h[1], 10, 0, f3[k]);
+		NEAR(j.h[2], 6, 0, f3[k]);
+		j = eval1(g3[k], "uv", 3, 5);
+		NEAR(j.v, 45, 0, g3[k]);
+		NEAR(j.d[0], 30, 0, g3[k]);
+		NEAR(j.d[1], 9, 0, g3[k]);
+		NEAR(j.h[0], 10, 0, g3[k]);
+		NEAR(j.h[1], 6, 0, g3[k]);
+		NEAR(j.h[2], 0, 0, g3[k]);
+	}
 	/* f = sin(u) / v: f_uv = -cos(u) / v^2 */
 	j = eval1("sin(u)/v", "uv", 1, 2);
 	NEAR(j.h[1], -cos(1) / 4, 1e-15, "sin(u)/v, uv");
