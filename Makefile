@@ -70,6 +70,12 @@ bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
 check: all $(TESTS)
 	@sh tests/run.sh
 
+# make check-quick: the quick tier of make check for the edit-compile-test
+# loop (tests/run.sh, QUICK: the suites it runs with "suite"), well under
+# 15 s; make check before a commit.
+check-quick: all $(TESTS)
+	@QUICK=1 sh tests/run.sh
+
 bench: all $(BENCH)
 	@sh tests/bench/run.sh
 
@@ -120,7 +126,7 @@ ifneq ($(filter clean,$(MAKECMDGOALS)),)
 .NOTPARALLEL:
 endif
 
-.PHONY: all check bench compare demo figures install uninstall clean
+.PHONY: all check check-quick bench compare demo figures install uninstall clean
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------
