@@ -232,13 +232,6 @@ approx_expr(struct loft_run *run, struct opts *o, struct loft_error *err)
 /* ------------------------------------------------------------------ */
 /* Options                                                             */
 
-static void
-bad_option(int c, const char *msg)
-{
-	fprintf(stderr, "bezapprox: -%c %s\n", c, msg);
-	loft_usage(usage_text, 2);
-}
-
 /* -n degree or -n m,n */
 static void
 parse_degrees(const char *arg, struct opts *o)
@@ -248,12 +241,12 @@ parse_degrees(const char *arg, struct opts *o)
 	int cnt;
 
 	if (loft_parse_list(arg, v, 2, &cnt, &err) != 0)
-		bad_option('n', err.msg);
+		loft_usage_error(usage_text, 'n', err.msg);
 	for (int k = 0; k < cnt; k++)
 		if (v[k] != floor(v[k]) || fabs(v[k]) > 1000) {
 			snprintf(err.msg, sizeof err.msg, "%s: want a whole "
 			    "number, or two separated by a comma", arg);
-			bad_option('n', err.msg);
+			loft_usage_error(usage_text, 'n', err.msg);
 		}
 	o->m = cnt == 2 ? (int)v[0] : 0;
 	o->n = (int)v[cnt - 1];
@@ -333,6 +326,7 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "cvn:p:x:y:z:h")) != -1) {
 		switch (c) {
 		case 'c': o.clamp = 1; break;
@@ -340,7 +334,7 @@ main(int argc, char *argv[])
 		case 'n': parse_degrees(optarg, &o); break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				bad_option(c, err.msg);
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'x': o.src[0] = optarg; break;
 		case 'y': o.src[1] = optarg; break;
@@ -355,15 +349,15 @@ main(int argc, char *argv[])
 	if (o.src[0] == NULL && o.src[1] == NULL && o.src[2] == NULL)
 		return loft_run_files(&run, argc - optind, argv + optind);
 	if (o.src[0] == NULL || o.src[1] == NULL)
-		bad_option(o.src[0] == NULL ? 'x' : 'y', "is missing: a curve "
+		loft_usage_error(usage_text, o.src[0] == NULL ? 'x' : 'y',
+		    "is missing: a curve "
 		    "needs -x and -y (and -z in space)");
 	if (o.m > 0 && o.src[2] == NULL)
-		bad_option('z', "is missing: a surface needs -x, -y and -z");
-	if (optind < argc) {
-		fprintf(stderr, "bezapprox: give expressions or input files, "
-		    "not both\n");
-		loft_usage(usage_text, 2);
-	}
+		loft_usage_error(usage_text, 'z', "is missing: a surface "
+		    "needs -x, -y and -z");
+	if (optind < argc)
+		loft_usage_error(usage_text, 0, "give expressions or input "
+		    "files, not both");
 	return run_expr(&o, &run);
 }
 #endif

@@ -119,21 +119,22 @@ main(int argc, char *argv[])
 	int c;
 
 	o.run = &run;
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "f:t:p:h")) != -1) {
 		switch (c) {
 		case 'f':
 			if (loft_parse_word(optarg, loft_cadin_format_name,
 			    &o.format, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 't':
 			if (loft_parse_real(optarg, 1e-300, 1e300, &cad.tol,
 			    &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
@@ -152,7 +153,4 @@ main(int argc, char *argv[])
 		}
 	loft_writer_free(&run.w);
 	return run.status;
-bad:
-	fprintf(stderr, "fromcad: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }

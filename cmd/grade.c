@@ -436,14 +436,15 @@ set_option(int c, const char *arg, struct opts *o, struct loft_run *run,
 static void
 finish_options(struct opts *o, int sizes)
 {
-	if (!sizes) {
-		fputs("grade: -s sizes or -r steps is needed\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (!sizes)
+		loft_usage_error(usage_text, 0, "-s sizes or -r steps is "
+		    "needed");
 	if ((o->to - o->from) / (o->step > 0 ? o->step : o->sys->interval) >=
 	    MAX_SIZES) {
-		fprintf(stderr, "grade: more than %d sizes\n", MAX_SIZES);
-		loft_usage(usage_text, 2);
+		char msg[32];
+
+		snprintf(msg, sizeof msg, "more than %d sizes", MAX_SIZES);
+		loft_usage_error(usage_text, 0, msg);
 	}
 	if (!o->have_lstep)
 		o->lstep = o->sys->length / o->unit;
@@ -461,13 +462,14 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c, status, sizes = 0;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "s:r:S:b:l:w:u:a:o:mO:p:h")) != -1) {
 		if (c == 'h')
 			loft_usage(usage_text, 0);
 		if (c == '?')
 			loft_usage(usage_text, 2);
 		if (set_option(c, optarg, &o, &run, &sizes, &err) != 0)
-			goto bad;
+			loft_usage_error(usage_text, c, err.msg);
 	}
 	finish_options(&o, sizes);
 	status = loft_run_files(&run, argc - optind, argv + optind);
@@ -479,8 +481,5 @@ main(int argc, char *argv[])
 	loft_outfiles_free(&o.files);
 	free(o.q);
 	return status;
-bad:
-	fprintf(stderr, "grade: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

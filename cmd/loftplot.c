@@ -2016,6 +2016,7 @@ main(int argc, char *argv[])
 	char *knots = NULL;
 	int c, rc = 0, word, status;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "bcmtB:C:g:K:l:n:v:h")) != -1) {
 		switch (c) {
 		case 'b': pc.control = 1; break;
@@ -2041,10 +2042,8 @@ main(int argc, char *argv[])
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
-		if (rc != 0) {
-			fprintf(stderr, "loftplot: -%c %s\n", c, err.msg);
-			loft_usage(usage_text, 2);
-		}
+		if (rc != 0)
+			loft_usage_error(usage_text, c, err.msg);
 	}
 	box_empty(&pc.box);
 	box_empty(&pc.kbox);

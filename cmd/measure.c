@@ -195,23 +195,21 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "f:p:h")) != -1) {
 		switch (c) {
 		case 'f':
 			if (parse_fields(optarg, &o, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
 	return loft_run_files(&run, argc - optind, argv + optind);
-bad:
-	fprintf(stderr, "measure: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

@@ -95,53 +95,50 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c, status;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "d:t:j:p:h")) != -1) {
 		switch (c) {
 		case 'd':
 			if (o.ndist == MAXDIST) {
 				snprintf(err.msg, sizeof err.msg, "%s: at most "
 				    "%d distances", optarg, MAXDIST);
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			}
 			if (loft_parse_real(optarg, -1e300, 1e300,
 			    &o.dist[o.ndist], &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			if (o.dist[o.ndist++] == 0) {
 				snprintf(err.msg, sizeof err.msg, "'%s': the "
 				    "offset at distance 0 is the curve", optarg);
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			}
 			break;
 		case 't':
 			if (loft_parse_real(optarg, 0, 1e300, &o.tol, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			if (o.tol == 0) {
 				snprintf(err.msg, sizeof err.msg, "'%s': want a "
 				    "positive tolerance", optarg);
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			}
 			break;
 		case 'j':
 			if (loft_parse_word(optarg, joins, &o.join, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
-	if (o.ndist == 0) {
-		fputs("offset: -d is missing: give the distance\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o.ndist == 0)
+		loft_usage_error(usage_text, 0, "-d is missing: give the "
+		    "distance");
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	loft_offset_free(&o.off);
 	return status;
-bad:
-	fprintf(stderr, "offset: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

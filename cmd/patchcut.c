@@ -34,13 +34,6 @@ static const char usage_text[] =
     "                [-p a,b,c,d] [-t tol] [-c] [-P digits] [file ...]\n";
 
 static void
-bad_option(int c, const char *what)
-{
-	fprintf(stderr, "patchcut: -%c %s\n", c, what);
-	loft_usage(usage_text, 2);
-}
-
-static void
 add_plane(struct opts *o, const double *n, double d, int axis)
 {
 	struct plane *p;
@@ -76,7 +69,8 @@ parse_axis(struct opts *o, int c, const char *arg)
 		size_t len = strcspn(s, ":");
 
 		if (k == 3 || loft_parse_num(s, len, &v[k], &err) != 0)
-			bad_option(c, "want a value or from:to:step");
+			loft_usage_error(usage_text, c, "want a value or "
+			    "from:to:step");
 		k++;
 		if (s[len] == '\0')
 			break;
@@ -87,7 +81,8 @@ parse_axis(struct opts *o, int c, const char *arg)
 		return;
 	}
 	if (k != 3 || !(v[2] > 0) || !(v[0] <= v[1]))
-		bad_option(c, "want from:to:step, from up to to, step above 0");
+		loft_usage_error(usage_text, c, "want from:to:step, from up "
+		    "to to, step above 0");
 	if (!((v[1] - v[0]) / v[2] < PLANES_MAX)) {
 		fprintf(stderr, "patchcut: -%c %s: more than %d planes\n", c, arg,
 		    PLANES_MAX);
@@ -296,6 +291,7 @@ main(int argc, char *argv[])
 	double v[4];
 	int c, nv;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "x:y:z:p:t:cP:h")) != -1) {
 		switch (c) {
 		case 'x':
@@ -304,28 +300,28 @@ main(int argc, char *argv[])
 		case 'p':
 			if (loft_parse_list(optarg, v, 4, &nv, &err) != 0 ||
 			    nv != 4 || (v[0] == 0 && v[1] == 0 && v[2] == 0))
-				bad_option(c, "want a,b,c,d: the plane ax + by + "
-				    "cz = d, a, b, c not all zero");
+				loft_usage_error(usage_text, c, "want a,b,c,d: "
+				    "the plane ax + by + cz = d, a, b, c not all "
+				    "zero");
 			add_plane(&o, v, v[3], -1);
 			break;
 		case 't':
 			if (loft_parse_real(optarg, 0, 1e300, &o.tol, &err) != 0 ||
 			    !(o.tol > 0))
-				bad_option(c, "want a tolerance above 0");
+				loft_usage_error(usage_text, c, "want a "
+				    "tolerance above 0");
 			break;
 		case 'c': o.cubic = 1; break;
 		case 'P':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				bad_option(c, err.msg);
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
-	if (o.npl == 0) {
-		fputs("patchcut: give a plane: -x, -y, -z or -p\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o.npl == 0)
+		loft_usage_error(usage_text, 0, "give a plane: -x, -y, -z or -p");
 	c = loft_run_design(&run, argc - optind, argv + optind, cut_design);
 	free(o.pl);
 	return c;

@@ -36,13 +36,6 @@ static const char usage_text[] =
     "[-w vx,vy[,vz]]\n"
     "                 [-e edge] [-V] [-p digits] [file ...]\n";
 
-static void
-bad_option(int c, const struct loft_error *err)
-{
-	fprintf(stderr, "patchdrag: -%c %s\n", c, err->msg);
-	loft_usage(usage_text, 2);
-}
-
 /* An option's value that dragging cannot use: bad input, exit 1. */
 static void
 bad_value(int c, const char *arg, const char *why)
@@ -279,11 +272,11 @@ parse_vector(int c, const char *arg, double *v, int *n)
 	struct loft_error err;
 
 	if (loft_parse_list(arg, v, LOFT_MAXDIM, n, &err) != 0)
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	if (*n < 2) {
 		snprintf(err.msg, sizeof err.msg, "'%s': want 2 or 3 numbers "
 		    "separated by commas", arg);
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	}
 	if (c == 'w' && v[0] == 0 && v[1] == 0 && (*n == 2 || v[2] == 0))
 		bad_value(c, arg, "a direction cannot be zero");
@@ -297,7 +290,7 @@ parse_number(int c, const char *arg)
 	double x;
 
 	if (loft_parse_num(arg, strlen(arg), &x, &err) != 0)
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	return x;
 }
 
@@ -310,8 +303,8 @@ main(int argc, char *argv[])
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
 	int c, rc = 0, moves = 0;
-	long whole;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "i:u:v:b:t:w:e:Vp:h")) != -1) {
 		switch (c) {
 		case 'i': rc = loft_parse_int(optarg, 0, LONG_MAX, &o.id,
@@ -328,18 +321,15 @@ main(int argc, char *argv[])
 				bad_value(c, optarg, "want a reach from 0 to 0.5");
 			break;
 		case 'V': o.verbose = 1; break;
-		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
-		    run.w.digits = whole; break;
+		case 'p': rc = loft_opt_digits(optarg, &run.w, &err); break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
-			bad_option(c, &err);
+			loft_usage_error(usage_text, c, err.msg);
 	}
-	if (!o.have_u || moves != 1) {
-		fputs("patchdrag: give -u, and one of -b and -t\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (!o.have_u || moves != 1)
+		loft_usage_error(usage_text, 0, "give -u, and one of -b and -t");
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    drag_design);
 }

@@ -68,8 +68,8 @@ main(int argc, char *argv[])
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
 	int c, rc = 0;
-	long whole;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "P:S:vp:h")) != -1) {
 		switch (c) {
 		case 'P': rc = loft_parse_int(optarg, 0, LONG_MAX,
@@ -77,21 +77,16 @@ main(int argc, char *argv[])
 		case 'S': rc = loft_parse_int(optarg, 0, LONG_MAX,
 		    &o.subsidiary, &err); o.have_s = 1; break;
 		case 'v': o.verbose = 1; break;
-		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
-		    run.w.digits = whole; break;
+		case 'p': rc = loft_opt_digits(optarg, &run.w, &err); break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
-		if (rc != 0) {
-			fprintf(stderr, "patchjoin: -%c %s\n", c, err.msg);
-			loft_usage(usage_text, 2);
-		}
+		if (rc != 0)
+			loft_usage_error(usage_text, c, err.msg);
 	}
-	if (!o.have_p || !o.have_s) {
-		fputs("patchjoin: give the two patches with -P and -S\n",
-		    stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (!o.have_p || !o.have_s)
+		loft_usage_error(usage_text, 0, "give the two patches with -P "
+		    "and -S");
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    join_design);
 }

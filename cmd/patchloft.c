@@ -102,16 +102,14 @@ parse_slope(int c, const char *arg, double *v, int *have, int *dim)
 	struct loft_error err;
 	double len = 0;
 
-	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0) {
-		fprintf(stderr, "patchloft: -%c %s\n", c, err.msg);
-		loft_usage(usage_text, 2);
-	}
+	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0)
+		loft_usage_error(usage_text, c, err.msg);
 	for (int k = 0; k < *dim; k++)
 		len += v[k] * v[k];
 	if (*dim < 2 || !(len > 0)) {
-		fprintf(stderr, "patchloft: -%c '%s': want a direction of 2 or "
-		    "3 numbers, not zero\n", c, arg);
-		loft_usage(usage_text, 2);
+		snprintf(err.msg, sizeof err.msg, "'%s': want a direction of "
+		    "2 or 3 numbers, not zero", arg);
+		loft_usage_error(usage_text, c, err.msg);
 	}
 	*have = 1;
 }
@@ -127,6 +125,7 @@ main(int argc, char *argv[])
 	int c;
 
 	memset(&o, 0, sizeof o);
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "cS:E:p:h")) != -1) {
 		switch (c) {
 		case 'c': o.skin.closed = 1; break;
@@ -136,21 +135,17 @@ main(int argc, char *argv[])
 		    &o.end_dim); break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
 	if (o.skin.closed && (o.skin.have_start || o.skin.have_end)) {
-		fputs("patchloft: -S and -E are for an open loft; -c closes it\n",
-		    stderr);
-		loft_usage(usage_text, 2);
+		loft_usage_error(usage_text, 0, "-S and -E are for an open "
+		    "loft; -c closes it");
 	}
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    skin_sections);
-bad:
-	fprintf(stderr, "patchloft: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

@@ -22,13 +22,6 @@ static const char usage_text[] =
     "[-i id] [-p digits]\n"
     "       patchnew -b [-i id] [-p digits] [file ...]\n";
 
-static void
-bad_option(int c, const struct loft_error *err)
-{
-	fprintf(stderr, "patchnew: -%c %s\n", c, err->msg);
-	loft_usage(usage_text, 2);
-}
-
 /* Write the one patch b to w. */
 static int
 put_patch(struct loft_writer *w, const double *b, int dim, long id,
@@ -143,15 +136,15 @@ main(int argc, char *argv[])
 	    .msg = stderr, .ctx = &o };
 	struct loft_error err;
 	int c, rc = 0, n;
-	long whole;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "c:bi:p:h")) != -1) {
 		switch (c) {
 		case 'c':
 			if (o.ncorner == 4) {
 				snprintf(err.msg, sizeof err.msg, "given more "
 				    "than four times");
-				bad_option(c, &err);
+				loft_usage_error(usage_text, c, err.msg);
 			}
 			rc = loft_parse_list(optarg, o.corner + o.ncorner *
 			    LOFT_MAXDIM, LOFT_MAXDIM, &n, &err);
@@ -175,20 +168,17 @@ main(int argc, char *argv[])
 				exit(1);
 			}
 			break;
-		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
-		    run.w.digits = whole; break;
+		case 'p': rc = loft_opt_digits(optarg, &run.w, &err); break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
-			bad_option(c, &err);
+			loft_usage_error(usage_text, c, err.msg);
 	}
 	if (o.boundary == (o.ncorner > 0) || (!o.boundary && o.ncorner != 4) ||
-	    (!o.boundary && optind < argc)) {
-		fputs("patchnew: give four corners with -c, or -b and the "
-		    "curves\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	    (!o.boundary && optind < argc))
+		loft_usage_error(usage_text, 0, "give four corners with -c, "
+		    "or -b and the curves");
 	if (!o.boundary) {
 		/* corners were stored LOFT_MAXDIM apart; pack them */
 		for (int k = 1; k < 4; k++)

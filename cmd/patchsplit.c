@@ -71,13 +71,10 @@ parse_t(int c, const char *arg, struct opts *o)
 {
 	struct loft_error err;
 
-	if (o->dir >= 0) {
-		fputs("patchsplit: give one of -u and -v\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o->dir >= 0)
+		loft_usage_error(usage_text, 0, "give one of -u and -v");
 	if (loft_parse_num(arg, strlen(arg), &o->t, &err) != 0) {
-		fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
-		loft_usage(usage_text, 2);
+		loft_usage_error(usage_text, c, err.msg);
 	}
 	if (!(o->t > 0 && o->t < 1)) {
 		/* a number splitting cannot use: bad input, not usage */
@@ -98,31 +95,27 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "u:v:i:p:h")) != -1) {
 		switch (c) {
 		case 'u':
 		case 'v': parse_t(c, optarg, &o); break;
 		case 'i':
 			if (loft_parse_int(optarg, 0, LONG_MAX, &o.id, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			o.have_id = 1;
 			break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
-	if (o.dir < 0) {
-		fputs("patchsplit: give -u t or -v t\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o.dir < 0)
+		loft_usage_error(usage_text, 0, "give -u t or -v t");
 	return loft_run_design(&run, argc - optind, argv + optind,
 	    split_design);
-bad:
-	fprintf(stderr, "patchsplit: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

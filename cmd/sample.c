@@ -391,26 +391,27 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c, rc, ways = 0;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "n:s:t:p:audkf:h")) != -1) {
 		switch (c) {
 		case 'n':
 			if (loft_parse_int(optarg, 1, 1000000, &o.per, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			ways |= 1;
 			break;
 		case 's':
 			if (positive(optarg, &o.spacing, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			ways |= 2;
 			break;
 		case 't':
 			if (positive(optarg, &o.tol, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			ways |= 4;
 			break;
 		case 'p':
 			if (loft_opt_digits(optarg, &run.w, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'a': o.attrs = 1; break;
 		case 'u': o.param = 1; break;
@@ -418,27 +419,20 @@ main(int argc, char *argv[])
 		case 'k': o.curvature = 1; break;
 		case 'f':
 			if (loft_parse_word(optarg, formats, &o.obj, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
 		}
 	}
-	if (o.obj && (o.param || o.tangent || o.curvature)) {
-		fputs("sample: -u, -d and -k add columns to points; "
-		    "-f obj has none\n", stderr);
-		loft_usage(usage_text, 2);
-	}
-	if (ways != 0 && (ways & (ways - 1)) != 0) {
-		fputs("sample: -n, -s and -t are three ways of choosing the "
-		    "points: give one\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o.obj && (o.param || o.tangent || o.curvature))
+		loft_usage_error(usage_text, 0, "-u, -d and -k add columns "
+		    "to points; -f obj has none");
+	if (ways != 0 && (ways & (ways - 1)) != 0)
+		loft_usage_error(usage_text, 0, "-n, -s and -t are three "
+		    "ways of choosing the points: give one");
 	rc = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.u);
 	return rc;
-bad:
-	fprintf(stderr, "sample: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }
 #endif

@@ -32,13 +32,6 @@ static const char usage_text[] =
     "[-p digits]\n"
     "                 [-v] [-d dist] [file ...]\n";
 
-static void
-bad_option(int c, const struct loft_error *err)
-{
-	fprintf(stderr, "splinefit: -%c %s\n", c, err->msg);
-	loft_usage(usage_text, 2);
-}
-
 /*
  * The end tangent named key ("start" or "end"): the one -S or -E gave,
  * which must have the knots' dim (given_dim) coordinates, or else the
@@ -336,16 +329,16 @@ parse_vector(int c, const char *arg, double *v, int *have, int *dim)
 	struct loft_error err;
 
 	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0)
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	if (*dim >= 2 && v[0] == 0 && v[1] == 0 && (*dim == 2 || v[2] == 0)) {
 		snprintf(err.msg, sizeof err.msg, "'%s': a direction cannot be "
 		    "zero", arg);
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	}
 	if (*dim < 2) {
 		snprintf(err.msg, sizeof err.msg, "'%s': want 2 or 3 numbers "
 		    "separated by commas", arg);
-		bad_option(c, &err);
+		loft_usage_error(usage_text, c, err.msg);
 	}
 	*have = 1;
 }
@@ -365,6 +358,7 @@ main(int argc, char *argv[])
 	long whole;
 
 	loft_fit_defaults(&o.fit);
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:vh")) != -1) {
 		switch (c) {
 		case 'o': o.fit.closed = 0; break;
@@ -382,8 +376,7 @@ main(int argc, char *argv[])
 		    &err); break;
 		case 'i': rc = loft_parse_int(optarg, 1, 1000000, &whole, &err);
 		    o.fit.maxiter = whole; break;
-		case 'p': rc = loft_parse_int(optarg, 1, 17, &whole, &err);
-		    run.w.digits = whole; break;
+		case 'p': rc = loft_opt_digits(optarg, &run.w, &err); break;
 		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
 		    &err); break;
 		case 'v': o.verbose = 1; break;
@@ -391,13 +384,11 @@ main(int argc, char *argv[])
 		default: loft_usage(usage_text, 2);
 		}
 		if (rc != 0)
-			bad_option(c, &err);
+			loft_usage_error(usage_text, c, err.msg);
 	}
-	if (o.fit.closed && (o.fit.have_start || o.fit.have_end)) {
-		fputs("splinefit: -S and -E give the ends of an open curve: "
-		    "use them with -o\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (o.fit.closed && (o.fit.have_start || o.fit.have_end))
+		loft_usage_error(usage_text, 0, "-S and -E give the ends of "
+		    "an open curve: use them with -o");
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);
 	free(o.other);

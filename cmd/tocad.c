@@ -74,30 +74,31 @@ main(int argc, char *argv[])
 	struct loft_error err;
 	int c, u;
 
+	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "f:sbt:n:u:h")) != -1) {
 		switch (c) {
 		case 'f':
 			if (find_format(optarg, &f, &err) != 0)
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 's': o.exact = 1; break;
 		case 'b': o.binary = 1; break;
 		case 't':
 			if (loft_parse_real(optarg, 0, 1e300, &o.tol, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			if (o.tol == 0) {
 				snprintf(err.msg, sizeof err.msg, "%s: want a "
 				    "tolerance above 0", optarg);
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			}
 			break;
 		case 'n':
 			if (loft_parse_int(optarg, 1, 1000, &o.per, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'u':
 			if (loft_parse_word(optarg, unit_words, &u, &err))
-				goto bad;
+				loft_usage_error(usage_text, c, err.msg);
 			o.unit_name = unit_words[u];
 			o.unit_mm = unit_mm[u];
 			break;
@@ -105,14 +106,9 @@ main(int argc, char *argv[])
 		default: loft_usage(usage_text, 2);
 		}
 	}
-	if (f == NULL) {
-		fputs("tocad: -f names the format\n", stderr);
-		loft_usage(usage_text, 2);
-	}
+	if (f == NULL)
+		loft_usage_error(usage_text, 0, "-f names the format");
 	loft_cad_init(&d, f, &o);
 	loft_run_files(&run, argc - optind, argv + optind);
 	return finish(&run, &d);
-bad:
-	fprintf(stderr, "tocad: -%c %s\n", c, err.msg);
-	loft_usage(usage_text, 2);
 }

@@ -277,7 +277,8 @@ double
 loft__curve_extent(const struct loft_curve *c)
 {
 	double ctl[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
-	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d = 0;
+	/* zero, not unset, for a curve of no pieces (cppcheck, scan-build) */
+	double lo[LOFT_MAXDIM] = { 0 }, hi[LOFT_MAXDIM] = { 0 }, d = 0;
 
 	for (size_t i = 0; i < c->npieces; i++) {
 		int n = loft_curve_bezier(c, i, ctl);

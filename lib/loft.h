@@ -236,6 +236,26 @@ void loft_usage(const char *text, int status)
 	;
 
 /*
+ * A usage error and exit 2: "prog: -opt msg" (or "prog: msg" when opt is
+ * 0) on standard error, then the usage text there (loft_usage).  Every
+ * option a program cannot take ends here.
+ */
+void loft_usage_error(const char *usage, int opt, const char *msg)
+#if defined(__GNUC__)
+	__attribute__((noreturn))
+#endif
+	;
+
+/*
+ * The long options of every program, called first in main: when
+ * argv[1] is --help, loft_usage(usage, 0); when it is --version, the
+ * line "prog (loft) VERSION" on standard output and exit 0 (1 with a
+ * message when the write fails, as loft_usage).  Returns otherwise, with
+ * argv unchanged.  Precondition: usage is "usage: prog ...".
+ */
+void loft_opt_long(int argc, char *argv[], const char *usage);
+
+/*
  * The option -p DIGITS of every program that writes numbers: a whole
  * number 1 to 17, the significant digits w writes (loft_put_num).
  * Returns 0, or LOFT_EINPUT with err saying why (w unchanged).

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "version.h"
 
 #define STDIN_NAME "<stdin>"
 
@@ -107,26 +108,76 @@ loft_opt_digits(const char *arg, struct loft_writer *w,
 	return 0;
 }
 
-void
-loft_usage(const char *text, int status)
+/* The program's name in a usage text "usage: prog ...", *n bytes long. */
+static const char *
+usage_prog(const char *text, int *n)
 {
-	FILE *fp = status == 0 ? stdout : stderr;
-	const char *prog = "loft";
-	int n = 4;
-
-	if (strncmp(text, "usage: ", 7) == 0) {
-		prog = text + 7;
-		n = (int)strcspn(prog, " \n");
+	if (strncmp(text, "usage: ", 7) != 0) {
+		*n = 4;
+		return "loft";
 	}
-	errno = 0;
-	if ((fputs(text, fp) == EOF || fflush(fp) != 0 || ferror(fp)) &&
-	    status == 0) {
+	*n = (int)strcspn(text + 7, " \n");
+	return text + 7;
+}
+
+/*
+ * The exit status after writing to fp (rc < 0: the write failed) for a
+ * program whose usage text is usage: status, or 1 with "prog: write
+ * error: reason" on standard error (none for a closed pipe) when status
+ * is 0 and the write or its flush failed.
+ */
+static int
+written(FILE *fp, int rc, const char *usage, int status)
+{
+	int n;
+	const char *prog = usage_prog(usage, &n);
+
+	if ((rc < 0 || fflush(fp) != 0 || ferror(fp)) && status == 0) {
 		if (errno != EPIPE)
 			fprintf(stderr, "%.*s: write error: %s\n", n, prog,
 			    strerror(errno ? errno : EIO));
 		status = 1;
 	}
-	exit(status);
+	return status;
+}
+
+void
+loft_usage(const char *text, int status)
+{
+	FILE *fp = status == 0 ? stdout : stderr;
+
+	errno = 0;
+	exit(written(fp, fputs(text, fp) == EOF ? -1 : 0, text, status));
+}
+
+void
+loft_usage_error(const char *usage, int opt, const char *msg)
+{
+	int n;
+	const char *prog = usage_prog(usage, &n);
+
+	if (opt != 0)
+		fprintf(stderr, "%.*s: -%c %s\n", n, prog, opt, msg);
+	else
+		fprintf(stderr, "%.*s: %s\n", n, prog, msg);
+	loft_usage(usage, 2);
+}
+
+void
+loft_opt_long(int argc, char *argv[], const char *usage)
+{
+	int n, rc;
+	const char *prog = usage_prog(usage, &n);
+
+	if (argc < 2 || argv[1] == NULL)
+		return;
+	if (strcmp(argv[1], "--help") == 0)
+		loft_usage(usage, 0);
+	if (strcmp(argv[1], "--version") == 0) {
+		errno = 0;
+		rc = printf("%.*s (loft) %s\n", n, prog, LOFT_VERSION);
+		exit(written(stdout, rc < 0 ? -1 : 0, usage, 0));
+	}
 }
 
 /* Release the writer, flush the output, and return the exit status. */

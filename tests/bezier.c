@@ -97,6 +97,32 @@ test_expr_values(void)
 	NEAR(j.h[0], 0, 0, "u v^2, uu");
 	NEAR(j.h[1], 10, 0, "u v^2, uv");
 	NEAR(j.h[2], 6, 0, "u v^2, vv");
+	/* the product rule with both factors varying in each variable
+	 * (issue 12: a mutant of its v-v term survived u*v^2, where v^2 is
+	 * a power): f = u v^2 and g = u^2 v as products of three, in each
+	 * order, against the derivatives above and g_u = 2uv, g_v = u^2,
+	 * g_uu = 2v, g_uv = 2u, g_vv = 0 */
+	static const char *const f3[] = { "u*v*v", "v*v*u", "v*u*v",
+	    "(u*v)*v", "v*(u*v)" };
+	static const char *const g3[] = { "u*u*v", "v*u*u", "u*v*u",
+	    "(u*v)*u", "u*(u*v)" };
+
+	for (int k = 0; k < 5; k++) {
+		j = eval1(f3[k], "uv", 3, 5);
+		NEAR(j.v, 75, 0, f3[k]);
+		NEAR(j.d[0], 25, 0, f3[k]);
+		NEAR(j.d[1], 30, 0, f3[k]);
+		NEAR(j.h[0], 0, 0, f3[k]);
+		NEAR(j.h[1], 10, 0, f3[k]);
+		NEAR(j.h[2], 6, 0, f3[k]);
+		j = eval1(g3[k], "uv", 3, 5);
+		NEAR(j.v, 45, 0, g3[k]);
+		NEAR(j.d[0], 30, 0, g3[k]);
+		NEAR(j.d[1], 9, 0, g3[k]);
+		NEAR(j.h[0], 10, 0, g3[k]);
+		NEAR(j.h[1], 6, 0, g3[k]);
+		NEAR(j.h[2], 0, 0, g3[k]);
+	}
 	/* f = sin(u) / v: f_uv = -cos(u) / v^2 */
 	j = eval1("sin(u)/v", "uv", 1, 2);
 	NEAR(j.h[1], -cos(1) / 4, 1e-15, "sin(u)/v, uv");
@@ -545,6 +571,60 @@ test_surface_second_derivatives(void)
 	}
 }
 
+/*
+ * The quadrature's nodes (issue 12: a change of normal.c's node count
+ * survived every test, F being converged either way): the parameters
+ * at which loft_normal_curve evaluates a one-piece curve include the
+ * 16-point Gauss-Legendre nodes of each of its 16 panels of [0, 1].
+ * The nodes, +-x_k on [-1, 1], are Abramowitz and Stegun's table 25.4;
+ * the panel [a, a + h] holds a + h (1 -+ x_k) / 2.
+ */
+#define QUAD_SEEN_MAX 4096
+static double quad_seen[QUAD_SEEN_MAX];
+static int quad_nseen;
+
+static void
+quad_parabola(void *ctx, double t, double *p, double *d1, double *d2)
+{
+	(void)ctx;
+	if (quad_nseen < QUAD_SEEN_MAX)
+		quad_seen[quad_nseen++] = t;
+	p[0] = t, p[1] = t * t;
+	if (d1 != NULL)
+		d1[0] = 1, d1[1] = 2 * t;
+	if (d2 != NULL)
+		d2[0] = 0, d2[1] = 2;
+}
+
+static void
+test_quadrature_nodes(void)
+{
+	static const double x[8] = { 0.095012509837637440, 0.281603550779258913,
+	    0.458016777657227386, 0.617876244402643748, 0.755404408355003034,
+	    0.865631202387831744, 0.944575023073232576, 0.989400934991649933 };
+	struct loft_pcurve a = { 2, 1, quad_parabola, NULL };
+	double ctl[4 * 2], f;
+	struct loft_error err;
+	int missing = 0;
+
+	quad_nseen = 0;
+	CHECK(loft_normal_curve(&a, 3, 0, ctl, NULL, NULL, &f, &err) == 0,
+	    "parabola: %s", err.msg);
+	CHECK(quad_nseen < QUAD_SEEN_MAX, "more evaluations than kept");
+	for (int p = 0; p < 16; p++)
+		for (int k = 0; k < 16; k++) {
+			double h = 1.0 / 16, xk = k < 8 ? -x[k] : x[k - 8];
+			double t = p * h + h * (1 - xk) / 2;
+			int i = 0;
+
+			while (i < quad_nseen && !(fabs(quad_seen[i] - t) <= 1e-15))
+				i++;
+			missing += i == quad_nseen;
+		}
+	CHECK(missing == 0, "%d of the 256 Gauss-Legendre nodes never "
+	    "evaluated", missing);
+}
+
 int
 main(void)
 {
@@ -560,5 +640,6 @@ main(void)
 	test_figure_6();
 	test_surface_border();
 	test_surface_second_derivatives();
+	test_quadrature_nodes();
 	return check_done("bezier");
 }

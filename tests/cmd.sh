@@ -14,6 +14,36 @@ printf '10 0\n3.5 9.4\n0 2\n-3.5 9.4\n-10 0\n-7 -7\n0 -10\n7 -7\n' \
 for p in splinefit sample; do
 	usage_ok "$p"
 done
+# --help and --version (issue 18), every program (each is cmd/NAME.c):
+# --help is -h to the byte; --version is one line "NAME (loft) V" with V
+# the version lib/version.h keeps; either into a full disk is a write
+# error, exit 1; another long option is a usage error, and one after the
+# first argument is not looked at (-h --version is -h).
+version=$(sed -n 's/^#define LOFT_VERSION "\(.*\)"$/\1/p' lib/version.h)
+[ -n "$version" ] && ok || no "lib/version.h: no LOFT_VERSION"
+for c in cmd/*.c; do
+	p=$(basename "$c" .c)
+	"$B/$p" -h >"$T/h" 2>/dev/null
+	run "$B/$p --help"
+	status 0
+	cmp -s "$T/h" "$T/out" && [ -s "$T/out" ] && ok ||
+	    no "$p --help: stdout is not that of -h"
+	run "$B/$p --version"
+	status 0
+	out_is "$p (loft) $version"
+	if [ -w /dev/full ]; then
+		for o in --help --version; do
+			run "$B/$p $o >/dev/full"
+			status 1
+			says "$p: write error: "
+		done
+	fi
+	run "$B/$p --versions"
+	status 2
+	run "$B/$p -h --version"
+	status 0
+	cmp -s "$T/h" "$T/out" && ok || no "$p -h --version: not the usage"
+done
 fails 2 "-p '0': want a whole number from 1 to 17" "$B/splinefit -p 0 $T/square.knots"
 fails 2 "-p '18'" "$B/sample -p 18 /dev/null"
 fails 2 "-n '0'" "$B/sample -n 0 /dev/null"

@@ -170,6 +170,21 @@ fails 1 "-u -0.5 -v 0.5 is outside the patch's parameter square" \
 fails 1 "no record with id 0 in the input" \
     "$B/patchdrag -i 0 -u 0.5 -v 0.5 -b 0,0,1 $T/two.patch"
 fails 1 "no patch with id 0 in the input" "$B/patchsplit -i 0 -u 0.5 $T/two.patch"
+# a design whose result is not finite (issue 12: with the check in
+# loft_run_design taken out, patchsplit wrote rows cut short and exited
+# 0): the unit square as patchnew -c writes it, every number scaled by
+# 1.7e308, near the largest double; splitting at v = 0.3 and dragging
+# by 1e308 overflow.
+# loft(5): nothing is written, one message, exit 1.
+printf 'patch id=1\n0 0 0 1.7e308 0 1.7e308 0 1.7e308 0 8.5e307
+1.7e308 0 1.7e308 1.7e308 0 1.7e308 0 1.7e308 1.7e308 8.5e307
+1.7e308 0 1.7e308 0 0 0 0 0 1.7e308 0
+1.7e308 0 1.7e308 0 0 0 0 0 1.7e308 0
+8.5e307 0 8.5e307 1.7e308 0 1.7e308 0 1.7e308 8.5e307 8.5e307\n' \
+    >"$T/huge.patch"
+fails 1 "huge.patch:1: result is not finite" "$B/patchsplit -v 0.3 $T/huge.patch"
+fails 1 "huge.patch:1: result is not finite" \
+    "$B/patchdrag -u 0.5 -v 0.5 -b 1e308,1e308 $T/huge.patch"
 fails 1 "hull.patch:1: a patch cannot be joined to itself" \
     "$B/patchjoin -P 1 -S 1 $T/hull.patch"
 # T-junctions (Fig. 5: 3's edge u0 holds 4 for v 0..0.5 and 5 for

@@ -2,6 +2,9 @@
 # run.sh: run every test suite, show its failures, and add up the suites'
 # closing "N passed, M failed" lines into one.  A suite that dies before
 # its closing line counts as one failure.
+#
+# QUICK=1 (make check-quick) runs the quick tier only: the suites run by
+# "suite" (about 10 s), not those run by "slow".
 
 passed=0
 failed=0
@@ -21,31 +24,35 @@ suite() {
 	passed=$((passed + $2))
 	failed=$((failed + $4))
 }
+slow() {
+	[ -n "$QUICK" ] || suite "$@"
+}
 
 suite bin/test/unit
 suite bin/test/paper man/figures/insole.knots
 suite sh tests/cmd.sh
 suite sh tests/fit.sh
-suite bin/test/patch
+slow bin/test/patch
 suite sh tests/patch.sh
 suite bin/test/bezier
 suite sh tests/bezapprox.sh
-suite bin/test/numtest
+slow bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
-suite sh tests/loftplot.sh
+slow sh tests/loftplot.sh
 suite sh tests/grade.sh
-suite sh tests/offset.sh
+slow sh tests/offset.sh
 suite bin/test/cad
-suite sh tests/tocad.sh
+slow sh tests/tocad.sh
 suite sh tests/loftcut.sh
-suite sh tests/fromcad.sh
-suite sh tests/roundtrip.sh
-suite sh tests/bad.sh
+slow sh tests/fromcad.sh
+slow sh tests/roundtrip.sh
+slow sh tests/bad.sh
 suite bin/test/hostile
-suite sh tests/oom.sh
+slow sh tests/oom.sh
 suite bin/test/arclen
-suite sh tests/measure.sh
-suite sh tests/install.sh
-suite sh tests/examples.sh
+slow sh tests/measure.sh
+slow sh tests/install.sh
+slow sh tests/examples.sh
+suite sh tests/synopsis.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
