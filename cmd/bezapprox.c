@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	int m, n;               /* degrees: m = 0 for a curve */

@@ -11,7 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* Sizes and steps are whole or half numbers no larger than this. */
 #define MAX_SIZE 1000

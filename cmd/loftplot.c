@@ -16,7 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640

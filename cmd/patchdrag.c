@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /*
  * The default reach of the edge rule: a point nearer an edge than a

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	long per;               /* points per segment */

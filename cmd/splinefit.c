@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* Two fits whose unit tangents differ by less than this at every knot are
  * the same curve; sign-rule alternatives differ by order 1. */

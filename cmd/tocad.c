@@ -6,7 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 #include "loftcad.h"
 
 static const char usage_text[] =

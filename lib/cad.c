@@ -3,6 +3,7 @@
  * exact Bezier forms, handed to the format's callbacks; curves into
  * polylines within a tolerance and surfaces into one welded mesh for the
  * formats that take only those; the numbers and knots the formats share.
+ * Program layer (loftcad.h, on loftprog.h): it takes records.
  */
 #include <stdlib.h>
 #include <string.h>

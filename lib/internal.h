@@ -1,6 +1,8 @@
 /*
  * internal.h: helpers shared by the modules of libloft and not part of
  * its interface (never installed).  Vectors have dim <= LOFT_MAXDIM.
+ * It knows only the core (loft.h), so either layer may use it; the CAD
+ * readers' own helpers, which write records, are in cadread.h.
  */
 #ifndef LOFT_INTERNAL_H
 #define LOFT_INTERNAL_H
@@ -140,11 +142,12 @@ vunit(double *a, int dim)
 int loft__normalise_cos(double w, double ca, double cb, double alpha,
     double *ma, double *mb);
 
-/* fit.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
+/* knots.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
 int loft__check_knots(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, struct loft_error *err);
 
-/* fit.c: unit end tangents t0, tn of an open curve, given or estimated. */
+/* knots.c: unit end tangents t0, tn of an open curve, given or
+ * estimated. */
 int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *t0, double *tn, struct loft_error *err);
 
@@ -203,7 +206,7 @@ int loft__decimal_text(char *buf, uint64_t d, int e, int prec);
 int loft__floor_log10_pow2(int q);
 int loft__floor_log10_3q_pow2(int q);
 
-/* Grow *buf to hold at least need elements of size sz; 0 or -1. */
+/* grow.c: grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
 
 /* quartic.c: the quartic with coefficient vectors k[0..4] at u (any of
@@ -292,40 +295,5 @@ int loft__quad(const struct loft__piece *pc, double a, double b, int m,
     double *sum, int *depth);
 /* The speed |P'(u)|: the integrand of arc length. */
 void loft__speed(const struct loft__piece *pc, double u, double *f, void *ctx);
-/* cadread.c: the parts the CAD readers share. */
-struct loft__pts {              /* a growing list of points, 3 numbers each */
-	double *p;
-	size_t n, cap;
-};
-/* Append x[0..3); 0, or -1 when out of memory. */
-int loft__pts_add(struct loft__pts *s, const double *x);
-/* 3 when any point's z is not 0, else 2: a record's dimension. */
-int loft__pts_dim(const double *p, size_t n);
-/* Write the n points p (3 numbers each) as rows of dim numbers. */
-void loft__pts_put(struct loft_writer *w, const double *p, size_t n, int dim);
-/* Complain about line of the document, printf-style; counts it. */
-void loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
-#if defined(__GNUC__)
-	__attribute__((format(printf, 3, 4)))
-#endif
-	;
-/* A record was written to c->w from mark on: 0 when it is whole and
- * finite, else -1 after taking it out and complaining at line. */
-int loft__cadin_done(struct loft_cadin *c, size_t mark, long line);
-/* Write " key=VALUE", s[0..n) with '%', '#' and bytes outside 33..126
- * as %XX (loft.5's attribute values); nothing for n == 0. */
-void loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
-    size_t n);
-/* The pieces an arc of radius r and sweep angle a (radians) needs for
- * c->tol: chords, or cubic pieces; -1 when more than LOFT_CADIN_ARC_MAX. */
-long loft__arc_chords(const struct loft_cadin *c, double r, double a);
-long loft__arc_cubics(const struct loft_cadin *c, double r, double a);
-/* The cubic row P_A P_B P'_A P'_B of the Bezier b[0..4) (dim each). */
-void loft__bezier_hermite(const double *b, int dim, double *row);
-/* s[0..n) for a message: at most size - 1 bytes of it into buf, each
- * control byte as '?', so that a message stays one line; returns buf. */
-const char *loft__cadin_quote(char *buf, size_t size, const char *s, size_t n);
-/* Whether s[0..n) is word, ignoring ASCII case. */
-int loft__word_is(const char *s, size_t n, const char *word);
 
 #endif

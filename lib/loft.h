@@ -1,6 +1,9 @@
 /*
- * loft.h: the one public header of libloft, the geometry and stream
- * library behind the loft programs.
+ * loft.h: the geometry core of libloft, the library behind the loft
+ * programs.  loftprog.h, the program layer (streams over stdio, the
+ * read-compute-write loop, reporting, options, designs from records,
+ * writers), is written on this header alone; loftcad.h, the CAD formats,
+ * on that one.  As Lua keeps lua.h apart from lauxlib.h.
  *
  * Conventions, for every function below:
  *  - Arrays are caller-owned.  Points are stored row by row: point i of a
@@ -9,15 +12,19 @@
  *    code on failure, and then fill the caller's struct loft_error with a
  *    message (no trailing newline) and, where the failure belongs to one
  *    row of the input, that row's index.
- *  - The library never prints on its own and never exits.  The functions
- *    that write (the writer, loft_run) write only to the streams they are
- *    handed.
+ *  - The core never prints, never touches a stdio stream and never
+ *    exits; it has no run loop.  A record (struct loft_record) is plain data here: the
+ *    core reads its type, attributes and rows, never a stream.
+ *  - Preconditions are stated in each contract; those that are cheap to
+ *    check are checked, and a broken one returns an error code (LOFT_EINPUT
+ *    unless the contract says otherwise), never undefined behaviour.
+ *    Throughout, dim is 2 or 3 (LOFT_MAXDIM) and pointers are not NULL
+ *    unless a contract says a NULL is allowed.
  */
 #ifndef LOFT_H
 #define LOFT_H
 
 #include <stddef.h>
-#include <stdio.h>
 
 #define LOFT_MAXDIM 3           /* curves live in the plane or in space */
 
@@ -37,7 +44,8 @@ struct loft_error {
 	char msg[256];
 };
 
-/* Fill err with a printf-style message; row may be -1.  Returns code. */
+/* Fill err with a printf-style message; row may be -1.  Returns code.
+ * err may be NULL (nothing is filled).  (error.c) */
 int loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
 #if defined(__GNUC__)
 	__attribute__((format(printf, 4, 5)))
@@ -90,7 +98,7 @@ int loft_parse_word(const char *s, const char *const *words, int *i,
 int loft_format_num(char *buf, double x, int digits);
 
 /* ------------------------------------------------------------------ */
-/* Stream records (stream.c)                                           */
+/* Records (record.c): what a stream holds, as plain data              */
 
 struct loft_attr {
 	char *key;
@@ -127,125 +135,13 @@ const char *loft_attr(const struct loft_record *rec, const char *key);
 /* The input line of row (for messages); the record's line if row < 0. */
 long loft_row_line(const struct loft_record *rec, long row);
 
-struct loft_reader;
-
-/* A reader over fp, whose messages call it name.  NULL: out of memory. */
-struct loft_reader *loft_reader_new(FILE *fp, const char *name);
-void loft_reader_free(struct loft_reader *rd);
-
 /*
- * Read the next record into rec.  Returns 1 when a record was read, 0 at
- * the end of the stream, LOFT_READ_BAD when a malformed record, or one
- * too large for memory, was read and skipped (err says what and where;
- * the next call goes on after it), LOFT_READ_FAIL on a read error or
- * when memory ran out otherwise (err says which).
+ * Copy src into dst, which is zeroed or holds an earlier record (its
+ * storage is reused).  Returns 0 or LOFT_ENOMEM.  Free dst with
+ * loft_record_free.
  */
-#define LOFT_READ_BAD  (-1)
-#define LOFT_READ_FAIL (-2)
-int loft_read(struct loft_reader *rd, struct loft_record *rec,
-    struct loft_error *err);
+int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
 
-/*
- * The writer collects the text of the records a program makes from one
- * input record, so that they go out whole or not at all.  digits is as
- * for loft_format_num.  A writer starts zeroed, with digits set.
- */
-struct loft_writer {
-	char *buf;
-	size_t len, cap;
-	int digits;
-	int bad;                /* a number was not finite, or out of memory */
-	int col;                /* numbers written on the current line */
-};
-
-void loft_put_type(struct loft_writer *w, const char *type);
-void loft_put_attr(struct loft_writer *w, const char *key, const char *val);
-void loft_put_num(struct loft_writer *w, double x);
-void loft_put_row(struct loft_writer *w, const double *v, int n);
-void loft_end_line(struct loft_writer *w);
-void loft_end_record(struct loft_writer *w);   /* the blank line */
-void loft_writer_free(struct loft_writer *w);
-
-/*
- * Copy the record's attributes to w's current header line, except those
- * whose keys appear in the NULL-terminated list skip.
- */
-void loft_put_attrs_except(struct loft_writer *w, const struct loft_record *rec,
-    const char *const *skip);
-
-/* ------------------------------------------------------------------ */
-/* The read-compute-write loop shared by every program (run.c)         */
-
-struct loft_run;
-
-/*
- * A program's record handler.  It reads rec, writes what it makes to
- * run->w, and returns 0; or returns a LOFT_E* code with err filled, and
- * then whatever it wrote is dropped.
- */
-typedef int (*loft_handler)(struct loft_run *run, const struct loft_record *rec,
-    struct loft_error *err);
-
-struct loft_run {
-	const char *prog;       /* for messages: "prog: FILE:LINE: ..." */
-	FILE *out, *msg;        /* standard output and standard error */
-	struct loft_writer w;
-	loft_handler handle;
-	void *ctx;              /* the program's options */
-	int status;             /* 0, or 1 once anything went wrong */
-};
-
-/*
- * Read every named file ("-" is standard input; no names: standard
- * input), hand each record to run->handle, and write what it made to
- * run->out, one input record's output whole at a time.  Bad records and
- * unreadable files get one message on run->msg each and set status 1;
- * the loop goes on.  Returns the exit status: 0, or 1 when anything was
- * reported or a write failed.
- */
-int loft_run_files(struct loft_run *run, int nfiles, char **files);
-
-/*
- * For a program that makes its output from its options, not from input:
- * write what run->w holds to run->out, whole or (when it holds a number
- * that is not finite) not at all with a message, flush, free the writer,
- * and return the exit status as loft_run_files does.
- */
-int loft_run_made(struct loft_run *run);
-
-/*
- * For programs that write one document from all the records (loftplot):
- * after loft_run_files has handed every record to a handler that kept
- * what it needs and wrote nothing, write doc[0..len) to run->out and
- * flush it, with loft_run_files' manners for a failed write (a message
- * on run->msg, none for a closed pipe).  Returns the exit status:
- * run->status, or 1 when the write failed.
- */
-int loft_run_write(struct loft_run *run, const char *doc, size_t len);
-
-/*
- * A program's usage text ("usage: prog ...") and exit: with status 0 (-h)
- * the text goes to standard output, and a failed write makes it "prog:
- * write error: reason" on standard error (none for a closed pipe) and
- * exit 1; with another status (a usage error) it goes to standard error.
- */
-void loft_usage(const char *text, int status)
-#if defined(__GNUC__)
-	__attribute__((noreturn))
-#endif
-	;
-
-/*
- * The option -p DIGITS of every program that writes numbers: a whole
- * number 1 to 17, the significant digits w writes (loft_put_num).
- * Returns 0, or LOFT_EINPUT with err saying why (w unchanged).
- */
-int loft_opt_digits(const char *arg, struct loft_writer *w,
-    struct loft_error *err);
-
-/* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
-void loft_report(struct loft_run *run, const struct loft_record *rec,
-    const struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
 /* Cubic segments (cubic.c)                                            */
@@ -277,7 +173,7 @@ int loft_normalise(const double *chord, const double *ta, const double *tb,
     int dim, double alpha, double *ma, double *mb);
 
 /* ------------------------------------------------------------------ */
-/* Fitting a spline through knots (fit.c, cspline.c)                   */
+/* Fitting a spline through knots (fit.c, cspline.c, fair.c, knots.c)  */
 
 enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD, LOFT_FAIR };
 enum loft_sign { LOFT_SIGN_POSITIVE, LOFT_SIGN_TURN };
@@ -809,40 +705,6 @@ int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
-/* Whole records, and whole designs (stream.c, run.c)                  */
-
-/*
- * Copy src into dst, which is zeroed or holds an earlier record (its
- * storage is reused).  Returns 0 or LOFT_ENOMEM.  Free dst with
- * loft_record_free.
- */
-int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
-
-/* Write rec to w as it was read: header, attributes, rows, blank line. */
-void loft_put_record(struct loft_writer *w, const struct loft_record *rec);
-
-/*
- * A handler of a whole design: all n records of the input at once.  It
- * writes what it makes to run->w and returns 0, or reports each problem
- * with loft_report (or on run->msg) and returns nonzero; then nothing is
- * written.
- */
-typedef int (*loft_design_handler)(struct loft_run *run,
-    const struct loft_record *recs, size_t n);
-
-/*
- * Read every record of the named files (as loft_run_files does: "-" is
- * standard input, no names: standard input) and hand them all, in
- * order, to design, once.  When any record was bad or any file
- * unreadable, each gets its message as in loft_run_files, design is not
- * called, and nothing is written.  Otherwise what design wrote goes out
- * whole, or nothing when it failed.  run->handle is not used.  Returns
- * the exit status: 0, or 1 when anything was reported or a write failed.
- */
-int loft_run_design(struct loft_run *run, int nfiles, char **files,
-    loft_design_handler design);
-
-/* ------------------------------------------------------------------ */
 /* MacCallum's quartic curves (quartic.c)                              */
 
 /*
@@ -1019,27 +881,6 @@ long loft_design_find(const struct loft_design *d, long id);
  */
 int loft_design_check(const struct loft_design *d, size_t *bad,
     struct loft_error *err);
-
-/*
- * Read the `patch` records among recs[0..n) into d, in order (other
- * records are left to the caller), and check the design.  Each bad
- * record or link gets its message through loft_report.  Returns 0, or
- * nonzero after reporting.
- */
-int loft_design_from_records(struct loft_run *run,
-    const struct loft_record *recs, size_t n, struct loft_design *d);
-
-/*
- * For programs that read patches only: report each record of recs[0..n)
- * that is not a `patch` ("TYPE record: PROG reads patch records").
- * Returns 0 if there is none, else nonzero after reporting them all.
- */
-int loft_design_only_patches(struct loft_run *run,
-    const struct loft_record *recs, size_t n);
-
-/* Write patch i of d as a `patch` record, keeping its other attributes. */
-void loft_design_put(struct loft_writer *w, const struct loft_design *d,
-    size_t i);
 
 /*
  * Section 5: split patch i along u = t (dir 0) or v = t (dir 1) into
@@ -1260,38 +1101,6 @@ void loft_grade_direction(const struct loft_grade_frame *f, double dl,
     double dw, int mirror, const double *t, double *q);
 
 /* ------------------------------------------------------------------ */
-/* Output split into files, each written whole (outfiles.c)            */
-
-struct loft_outfile {
-	char *name;
-	char *buf;
-	size_t len, cap;
-};
-
-/* Files by name, in the order first named.  Starts zeroed. */
-struct loft_outfiles {
-	struct loft_outfile *f;
-	size_t n, cap;
-};
-
-/*
- * Append text[0..len) to the file called name in s (a new one at the
- * end if s has none).  Returns 0 or LOFT_ENOMEM.
- */
-int loft_outfiles_add(struct loft_outfiles *s, const char *name,
-    const char *text, size_t len, struct loft_error *err);
-
-/*
- * Write f whole: to a new temporary file beside it, then renamed over
- * f->name.  Returns 0, or LOFT_EIO or LOFT_ENOMEM with a message that
- * starts with the file's name ("NAME: cannot create: reason"); then no
- * file is left behind and an old one of that name is untouched.
- */
-int loft_outfile_write(const struct loft_outfile *f, struct loft_error *err);
-
-void loft_outfiles_free(struct loft_outfiles *s);
-
-/* ------------------------------------------------------------------ */
 /* Lofting: a design of patches through section curves (skin.c)         */
 
 struct loft_skin_opts {
@@ -1397,59 +1206,5 @@ int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
     double tol, struct loft_cut *out, struct loft_error *err);
 
 void loft_cut_free(struct loft_cut *c);
-/* Reading CAD documents into records (cadread.c, dxfread.c,          */
-/* svgread.c, csvread.c)                                               */
-
-/* The formats, by the names of fromcad -f. */
-enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV };
-extern const char *const loft_cadin_format_name[];       /* NULL-ended */
-
-/*
- * Circular and elliptic arcs are not polynomial, so the readers
- * approximate them: DXF arcs (bulges, ARC, CIRCLE) by chords, SVG arcs
- * by cubic pieces, each within a distance of the true arc.  That
- * distance is tol (in the output's units) when tol > 0, else
- * LOFT_CADIN_ARC_REL times the arc's radius (its larger semi-axis): a
- * hundredth of a millimetre on a 100 mm radius, finer than a cutter's
- * kerf, and scale-free.  An arc that would need more than
- * LOFT_CADIN_ARC_MAX pieces for tol is refused (a tol far below the
- * arc's size is a mistake, not a request for a million points).
- */
-#define LOFT_CADIN_ARC_REL 1e-4
-#define LOFT_CADIN_ARC_MAX 100000
-
-/*
- * A reading: the records go to w, each whole (a record that fails is
- * taken back out of w); each problem found is handed to complain with
- * the document's line (1-based) and a message of no newline, and
- * counted in nbad.  The reader goes on after each problem.
- */
-struct loft_cadin {
-	double tol;             /* arcs: see LOFT_CADIN_ARC_REL; 0: relative */
-	struct loft_writer *w;
-	void (*complain)(void *ctx, long line, const char *msg);
-	void *ctx;
-	long nbad;
-};
-
-/*
- * The format of the document buf[0..len), told from its content: a
- * binary or ASCII DXF, an XML document (SVG), or a text whose first line
- * names columns (CSV).  Returns the enum loft_cadin_format, or -1 when it
- * is none of them (len 0 included).
- */
-int loft_cadin_sniff(const char *buf, size_t len);
-
-/*
- * Read the whole document buf[0..len) of the given format into records
- * (fromcad(1) and loft(5) say which records each element becomes).
- * Returns 0 when all of it was read; LOFT_EINPUT when anything was
- * complained about (the rest was read); LOFT_ENOMEM when memory ran out
- * (complained about too; what was read before may be in w).
- */
-int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c);
-int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
-int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
-int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);
 
 #endif

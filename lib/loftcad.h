@@ -21,7 +21,7 @@
 #ifndef LOFTCAD_H
 #define LOFTCAD_H
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* ------------------------------------------------------------------ */
 /* Exact Bezier forms of the record types (bezform.c)                  */
