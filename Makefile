@@ -24,7 +24,7 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/skin.o bin/obj/cut.o bin/obj/cadread.o \
           bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
 LIBOBJ += bin/obj/error.o bin/obj/grow.o bin/obj/record.o \
-          bin/obj/knots.o bin/obj/design.o
+          bin/obj/knots.o bin/obj/design.o bin/obj/types.o
 LIBOBJ += $(CADOBJ)
 # the program layer (loftprog.h; the CAD writers in CADOBJ are on it
 # too); every other module is the core and includes only loft.h

@@ -270,7 +270,7 @@ outline_of(struct loft_run *run, const struct loft_record *rec,
 	double *q;
 	int r;
 
-	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: grade reads "
 		    "knots (point records)", rec->type);
 	if (rec->nrows > 0 && rec->ncols != 2)

@@ -259,7 +259,7 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	size_t n = rec->nrows, nseg, m, nc;
 	double dist;
 
-	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: splinefit "
 		    "reads knots (point records)", rec->type);
 	if (n == 0)

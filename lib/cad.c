@@ -433,7 +433,7 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 	np = (size_t)(s.m + 1) * (s.n + 1);
 	if (scratch(d, 3 * np) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	if (strcmp(s.type, "patch") == 0) {
+	if (!loft_record_is(rec, LOFT_KIND_CONTROL)) {
 		/* a patch: its net, in space (z = 0 for a plane patch) */
 		double b[25 * LOFT_MAXDIM];
 
@@ -451,7 +451,8 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 		return end_item(d, begin_item(d, &it, box) ||
 		    d->f->surface(d, &bs));
 	/* for the mesh: a patch with an id, and its neighbours */
-	if (strcmp(s.type, "patch") == 0 && loft_attr(rec, "id") != NULL) {
+	if (loft_record_is(rec, LOFT_KIND_MEMBER) &&
+	    loft_attr(rec, "id") != NULL) {
 		if (loft_design_add(&d->design, rec, err) != 0)
 			return LOFT_EINPUT;
 		d->design.p[d->design.n - 1].rec = NULL;    /* rec is reused */
@@ -464,7 +465,7 @@ int
 loft_cad_record(struct loft_cad_doc *d, const struct loft_record *rec,
     struct loft_error *err)
 {
-	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
+	if (loft_record_is(rec, LOFT_KIND_KNOTS))
 		return add_points(d, rec, err);
 	if (loft_is_surface(rec))
 		return add_surface(d, rec, err);

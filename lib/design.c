@@ -79,7 +79,7 @@ loft_design_only_patches(struct loft_run *run, const struct loft_record *recs,
 	int rc = 0;
 
 	for (size_t i = 0; i < n; i++)
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
+		if (!loft_record_is(&recs[i], LOFT_KIND_MEMBER)) {
 			rc = loft_fail(&err, LOFT_EINPUT, -1, "%s record: %s "
 			    "reads patch records", recs[i].type ? recs[i].type :
 			    "point", run->prog);
@@ -98,7 +98,7 @@ loft_design_from_records(struct loft_run *run, const struct loft_record *recs,
 	int rc = 0;
 
 	for (size_t i = 0; i < n; i++) {
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0)
+		if (!loft_record_is(&recs[i], LOFT_KIND_MEMBER))
 			continue;
 		err.line = 0;
 		if (loft_design_add(d, &recs[i], &err) != 0) {

@@ -209,6 +209,13 @@ int loft__floor_log10_3q_pow2(int q);
 /* grow.c: grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
 
+/* curve.c and surface.c: the operations of each curve and surface type,
+ * which types.c's table names. */
+extern const struct loft__curve_type loft__cubic_type, loft__quartic_type,
+    loft__bezier_type;
+extern const struct loft__surface_type loft__patch_type,
+    loft__bezier_surface_type;
+
 /* quartic.c: the quartic with coefficient vectors k[0..4] at u (any of
  * p, d1, d2 may be NULL); loft_quartic_eval over pointers. */
 void loft__quartic_combine(const double *const *k, int dim, double u,

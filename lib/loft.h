@@ -142,6 +142,50 @@ long loft_row_line(const struct loft_record *rec, long row);
  */
 int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
 
+/* ------------------------------------------------------------------ */
+/* Record types (types.c): what each can be, in one table              */
+
+/*
+ * What a record of a type can be, a set of these.  A program asks the
+ * table (loft_record_is), never compares type names, so a new type is a
+ * row of loft_types and the operations it names.
+ */
+enum {
+	LOFT_KIND_KNOTS = 1,    /* knots a curve is fitted through (points) */
+	LOFT_KIND_CURVE = 2,    /* a curve (loft_curve_from_record) */
+	LOFT_KIND_SEGMENTS = 4, /* a curve of Hermite segments, one a row,
+	                           with end derivatives (loft_curve_segments) */
+	LOFT_KIND_CONTROL = 8,  /* its rows are Bezier control points */
+	LOFT_KIND_SURFACE = 16, /* a surface (loft_surface_from_record) */
+	LOFT_KIND_MEMBER = 32   /* a member of a design (loft_design_add) */
+};
+
+struct loft__curve_type;        /* curve.c's evaluation of a curve type */
+struct loft__surface_type;      /* surface.c's of a surface type */
+
+struct loft_type {
+	const char *name;       /* the header's type word */
+	int kinds;              /* LOFT_KIND_* */
+	int degree;             /* of a curve's pieces (cubic 3); 0 when the
+	                           record says (bezier) or it is no curve */
+	const struct loft__curve_type *curve;           /* or NULL */
+	const struct loft__surface_type *surface;       /* or NULL */
+};
+
+/* Every record type of loft.5, ended by one whose name is NULL. */
+extern const struct loft_type loft_types[];
+
+/* The type called name, or NULL when there is none; a NULL name (a
+ * record of no header) is `points`. */
+const struct loft_type *loft_type_named(const char *name);
+
+/* The type of rec (loft_type_named of its type word), or NULL. */
+const struct loft_type *loft_record_type(const struct loft_record *rec);
+
+/* Whether rec's type can be every kind in kinds (LOFT_KIND_* or'd);
+ * 0 for a type not in the table. */
+int loft_record_is(const struct loft_record *rec, int kinds);
+
 
 /* ------------------------------------------------------------------ */
 /* Cubic segments (cubic.c)                                            */

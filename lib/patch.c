@@ -160,7 +160,7 @@ loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
 {
 	int rc = loft_curve_from_record(rec, c, err);
 
-	if (rc == 0 && c->eval == NULL)
+	if (rc == 0 && !loft_record_is(rec, LOFT_KIND_SEGMENTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "a %s record: want a "
 		    "curve of cubic or quartic segments", c->type);
 	return rc;
@@ -531,7 +531,7 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 	int dim = rec->ncols / 5, rc;
 	long id;
 
-	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_MEMBER))
 		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
 	if (loft__patch_shape(rec, err) != 0)
 		return LOFT_EINPUT;
