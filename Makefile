@@ -33,7 +33,7 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
-          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o
+          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)
@@ -56,7 +56,7 @@ bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 bin/obj/dtoa.o: lib/pow10.h
-$(CADOBJ) bin/tocad bin/test/cad: lib/loftcad.h
+$(CADOBJ) bin/tocad bin/sample bin/test/cad: lib/loftcad.h
 $(PROGOBJ): lib/loftprog.h
 $(CADINOBJ): lib/cadread.h
 

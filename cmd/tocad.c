@@ -10,7 +10,7 @@
 #include "loftcad.h"
 
 static const char usage_text[] =
-    "usage: tocad -f dxf|svg|step|iges|stl [-s] [-b] [-t tolerance] "
+    "usage: tocad -f dxf|svg|step|iges|stl|obj [-s] [-b] [-t tolerance] "
     "[-n steps] [-u mm|cm|m|in] [file ...]\n";
 
 static int

@@ -13,7 +13,7 @@
 
 /* The formats: a new one is a module defining its struct and a line here. */
 extern const struct loft_cad_format loft_cad_dxf, loft_cad_svg, loft_cad_step,
-    loft_cad_iges, loft_cad_stl;
+    loft_cad_iges, loft_cad_stl, loft_cad_obj;
 
 const struct loft_cad_entry loft_cad_formats[] = {
 	{ "dxf", &loft_cad_dxf },
@@ -21,6 +21,7 @@ const struct loft_cad_entry loft_cad_formats[] = {
 	{ "step", &loft_cad_step },
 	{ "iges", &loft_cad_iges },
 	{ "stl", &loft_cad_stl },
+	{ "obj", &loft_cad_obj },
 	{ NULL, NULL }
 };
 
@@ -98,7 +99,7 @@ loft_cad_putnum(struct loft_cad_doc *d, double x)
 		w->bad = w->bad ? w->bad : LOFT_ENOMEM;
 		return;
 	}
-	w->len += (size_t)loft_format_num(w->buf + w->len, x, 0);
+	w->len += (size_t)loft_format_num(w->buf + w->len, x, w->digits);
 }
 
 int
@@ -932,6 +933,31 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 		return loft_fail(err, LOFT_EGEOM, -1, "a number of the document "
 		    "is not finite (the input is too extreme)");
 	return 0;
+}
+
+const struct loft_cad_format *
+loft_cad_format_named(const char *name)
+{
+	for (const struct loft_cad_entry *e = loft_cad_formats; e->name != NULL;
+	    e++)
+		if (strcmp(e->name, name) == 0)
+			return e->format;
+	return NULL;
+}
+
+void
+loft_cad_attach(struct loft_cad_doc *d, struct loft_writer *w)
+{
+	d->out = *w;
+	memset(w, 0, sizeof *w);
+	d->in_head = 0;
+}
+
+void
+loft_cad_detach(struct loft_cad_doc *d, struct loft_writer *w)
+{
+	*w = d->out;
+	memset(&d->out, 0, sizeof d->out);
 }
 
 void
