@@ -1,6 +1,6 @@
 /*
  * loftcad.h: loft's curves and surfaces written into CAD documents (DXF,
- * SVG at true scale, STEP, IGES, STL) for tocad(1).
+ * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1).
  *
  * Every record is first put in exact Bezier form (bezform.c): a curve as
  * polynomial pieces of one degree, a surface as tensor-product Bezier
