@@ -906,7 +906,10 @@ int loft_patch_id(const struct loft_record *rec, long *id,
 
 /*
  * Append a patch with coefficients b, id and no neighbours (scale
- * factors 1).  Returns 0 or LOFT_ENOMEM.
+ * factors 1).  Preconditions, checked: dim 2 or 3, id from 1 to
+ * 1000000000 (as loft_patch_id reads it); an id already in d is
+ * loft_design_check's to find.  Returns 0, LOFT_EINPUT (a precondition
+ * broken, d unchanged) or LOFT_ENOMEM.
  */
 int loft_design_new(struct loft_design *d, const double *b, int dim,
     long id, struct loft_error *err);
@@ -944,8 +947,10 @@ int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
  * Section 4: drag the point (u, v) of patch i by delta.  Nearer than
  * edge to an edge with one neighbour sharing all of it, the two patches
  * change by one bi-quartic bump over both; otherwise (hh) alone changes
- * by delta / (H5(u) H5(v)).  Returns 0 and fills info, or LOFT_EGEOM
- * when the point is on an edge that the drag cannot move.
+ * by delta / (H5(u) H5(v)).  Preconditions, checked: i < d->n, u and
+ * v in [0, 1], delta finite.  Returns 0 and fills info, or LOFT_EINPUT
+ * (a precondition broken, d unchanged) or LOFT_EGEOM when the point is
+ * on an edge that the drag cannot move.
  */
 int loft_design_drag(struct loft_design *d, size_t i, double u, double v,
     const double *delta, double edge, struct loft_drag_info *info,
@@ -966,9 +971,11 @@ struct loft_join_info {
  * principal becomes that edge, and its cross-boundary derivatives those
  * of the principal times the ratio of the scale factors, so slopes are
  * continuous; both are linked as neighbours.  Edges farther apart than
- * LOFT_JOIN_GAP of the larger patch's size do not meet.  Returns 0 and
- * fills info, or LOFT_EGEOM (no edge within reach, an edge already
- * linked, or a neighbour of the subsidiary that the join would break).
+ * LOFT_JOIN_GAP of the larger patch's size do not meet.  Preconditions,
+ * checked: ip and is < d->n, both of one dim.  Returns 0 and fills info,
+ * or LOFT_EINPUT (a precondition broken, d unchanged), LOFT_EGEOM (the
+ * same patch twice, no edge within reach, an edge already linked, or a
+ * neighbour of the subsidiary that the join would break).
  */
 #define LOFT_JOIN_GAP 0.05
 int loft_design_join(struct loft_design *d, size_t ip, size_t is,

@@ -495,6 +495,12 @@ loft_design_new(struct loft_design *d, const double *b, int dim, long id,
 {
 	struct loft_patch *p;
 
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "a patch of %d "
+		    "coordinates: want 2 or 3", dim);
+	if (id < 1 || id > ID_MAX)
+		return loft_fail(err, LOFT_EINPUT, -1, "id %ld: want a whole "
+		    "number from 1 to %ld", id, ID_MAX);
 	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	index_add(d, id, d->n);
@@ -990,13 +996,25 @@ loft_design_drag(struct loft_design *d, size_t i, double u, double v,
     struct loft_error *err)
 {
 	static const double h5[5] = { 0, 0, 0, 0, 1 };
-	struct loft_patch *p = &d->p[i];
+	struct loft_patch *p;
 	double rho[4] = { u, 1 - u, v, 1 - v }, c[LOFT_MAXDIM], hd;
-	int e = 0, dim = p->dim;
+	int e = 0, dim;
 	long qi;
 	int f;
 
 	memset(info, 0, sizeof *info);
+	if (i >= d->n)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch %zu of a design "
+		    "of %zu", i, d->n);
+	p = &d->p[i];
+	dim = p->dim;
+	if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
+		return loft_fail(err, LOFT_EINPUT, -1, "(u, v) = (%g, %g) is "
+		    "outside the patch", u, v);
+	for (int k = 0; k < dim; k++)
+		if (!isfinite(delta[k]))
+			return loft_fail(err, LOFT_EINPUT, -1, "the drag is not "
+			    "finite");
 	info->piece = (long)i;
 	info->other = -1;
 	for (int k = 1; k < 4; k++)
@@ -1159,11 +1177,20 @@ int
 loft_design_join(struct loft_design *d, size_t ip, size_t is,
     struct loft_join_info *info, struct loft_error *err)
 {
-	struct loft_patch *p = &d->p[ip], *s = &d->p[is];
+	struct loft_patch *p, *s;
 	double qp[5 * LOFT_MAXDIM], qs[5 * LOFT_MAXDIM], best = -1;
-	int dim = p->dim, g[2];
+	int dim, g[2];
 
 	memset(info, 0, sizeof *info);
+	if (ip >= d->n || is >= d->n)
+		return loft_fail(err, LOFT_EINPUT, -1, "patches %zu and %zu of "
+		    "a design of %zu", ip, is, d->n);
+	p = &d->p[ip];
+	s = &d->p[is];
+	dim = p->dim;
+	if (s->dim != dim)
+		return loft_fail(err, LOFT_EINPUT, -1, "patches of %d and %d "
+		    "coordinates", dim, s->dim);
 	if (ip == is)
 		return loft_fail(err, LOFT_EGEOM, -1, "a patch cannot be joined "
 		    "to itself");
