@@ -93,6 +93,9 @@ loft_end_tangent(const double *a, const double *b, const double *c, int dim,
 {
 	double ab[LOFT_MAXDIM], ac[LOFT_MAXDIM], perp[LOFT_MAXDIM];
 
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "a tangent in %d "
+		    "dimensions: want 2 or 3", dim);
 	vsub(ab, b, a, dim);
 	vcopy(t, ab, dim);
 	if (c != NULL) {

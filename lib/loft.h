@@ -91,8 +91,9 @@ int loft_parse_word(const char *s, const char *const *words, int *i,
  * Format x into buf (at least LOFT_NUMBUF bytes) and return the length.
  * digits == 0 writes the shortest text that reads back to the same double
  * (lossless); digits 1..17 rounds to that many significant digits,
- * except where that would round past the largest double (then lossless).
- * Minus zero is written as 0.  x must be finite.
+ * except where that would round past the largest double (then lossless);
+ * any other digits is taken as 0.  Minus zero is written as 0.  x must
+ * be finite (a NaN or infinity is written as printf's %g writes it).
  */
 #define LOFT_NUMBUF 32
 int loft_format_num(char *buf, double x, int digits);
@@ -297,7 +298,8 @@ size_t loft_merge_knots(const double *p, size_t n, int dim, int closed,
  * Estimate the unit tangent at the first of the knots a, b, c (a curve
  * from a through b to c): the tangent at a of the circle through them,
  * or the direction a to b where they are collinear and in order.  With
- * c == NULL, the chord direction a to b.  Returns 0 or LOFT_EGEOM.
+ * c == NULL, the chord direction a to b.  Precondition, checked: dim 2
+ * or 3.  Returns 0, LOFT_EINPUT (dim) or LOFT_EGEOM.
  */
 int loft_end_tangent(const double *a, const double *b, const double *c, int dim,
     double *t, struct loft_error *err);
@@ -624,9 +626,10 @@ struct loft_expr;
 
 /*
  * Compile the expression src (grammar in expr.c and bezapprox(1)) whose
- * variables are the letters of vars, at most two ("t", or "uv").  Returns
- * the expression, to be freed with loft_expr_free; or NULL with err
- * filled and *col set to the 1-based column where the text went wrong.
+ * variables are the letters of vars, one or two ("t", or "uv"; checked:
+ * any other count is LOFT_EINPUT, *col 0).  Returns the expression, to
+ * be freed with loft_expr_free; or NULL with err filled and *col set to
+ * the 1-based column where the text went wrong.
  */
 struct loft_expr *loft_expr_parse(const char *src, const char *vars, int *col,
     struct loft_error *err);
@@ -807,8 +810,9 @@ struct loft_drag_info {
  * H5(u); nearer an end, that segment and the one across the end (the
  * first and last are neighbours on a closed curve) change together by
  * the two-segment rule, or, where there is none, the central rule
- * applies.  Returns 0 and fills info, or LOFT_EINPUT (U outside 0 to
- * nseg) or LOFT_EGEOM (the point is an end of an open curve, which
+ * applies.  Preconditions, checked: nseg > 0, dim 2 or 3, U from 0 to
+ * nseg.  Returns 0 and fills info, or LOFT_EINPUT (a precondition
+ * broken) or LOFT_EGEOM (the point is an end of an open curve, which
  * cannot move).
  */
 int loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
@@ -999,9 +1003,10 @@ void loft_patch_bilinear(const double *corner, int dim, double *b);
  * edge v = 0 and c[1] the edge v = 1, both running in u; c[2] the edge
  * u = 0 and c[3] the edge u = 1, both running in v; by Coons' bilinearly
  * blended construction.  Corners must agree within LOFT_CORNER_TOL of
- * the curves' size; the corners are taken from c[0] and c[1].  Returns
- * 0, or LOFT_EGEOM naming the corner that does not match, with row the
- * index of the curve whose end misses.
+ * the curves' size; the corners are taken from c[0] and c[1].
+ * Precondition, checked: dim 2 or 3.  Returns 0, LOFT_EINPUT (dim), or
+ * LOFT_EGEOM naming the corner that does not match, with row the index
+ * of the curve whose end misses.
  */
 #define LOFT_CORNER_TOL 1e-9
 int loft_patch_coons(const double *const *c, int dim, double *b,
@@ -1136,8 +1141,9 @@ int loft_grade_steps_fit(const struct loft_grade_frame *f, double lstep,
  * dw wider across it about f->ref, exactly L + dl by W + dw, into q (2n
  * numbers; not p).  With mirror, q is instead the mirror image, about
  * the line through ref along the length axis, in reverse order, so it
- * turns the same way round.  Returns 0, or LOFT_EGEOM when L + dl or
- * W + dw is not positive (the message starts "leaves the outline").
+ * turns the same way round.  Precondition, checked: q is not p.
+ * Returns 0, LOFT_EINPUT (q is p), or LOFT_EGEOM when L + dl or W + dw
+ * is not positive (the message starts "leaves the outline").
  */
 int loft_grade_outline(const struct loft_grade_frame *f, const double *p,
     size_t n, double dl, double dw, int mirror, double *q,

@@ -258,6 +258,8 @@ loft_format_num(char *buf, double x, int digits)
 	uint64_t d;
 	int e, n, rc, sign = 0;
 
+	if (digits < 0 || digits > 17)
+		digits = 0;
 	if (x == 0 || !isfinite(x)) {
 		if (x == 0)
 			x = 0;  /* minus zero prints as 0 */

@@ -200,6 +200,9 @@ loft_patch_coons(const double *const *cv, int dim, double *b,
 	double corner[4 * LOFT_MAXDIM], lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
 	double size = 0;
 
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "boundary curves of %d "
+		    "coordinates: want 2 or 3", dim);
 	for (int q = 0; q < 4; q++)
 		for (int e = 0; e < 2; e++)
 			for (int c = 0; c < dim; c++) {
