@@ -24,9 +24,17 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/flatten.o bin/obj/merge.o bin/obj/fair.o \
           bin/obj/skin.o bin/obj/cut.o bin/obj/cadread.o \
           bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
+LIBOBJ += bin/obj/error.o bin/obj/grow.o bin/obj/record.o \
+          bin/obj/knots.o bin/obj/design.o bin/obj/types.o
 LIBOBJ += $(CADOBJ)
+# the program layer (loftprog.h; the CAD writers in CADOBJ are on it
+# too); every other module is the core and includes only loft.h
+PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
+          bin/obj/design.o $(CADINOBJ) $(CADOBJ)
+CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
+          bin/obj/csvread.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
-          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o
+          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)
@@ -58,22 +66,26 @@ bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
 
 bin/obj/dtoa.o: lib/pow10.h
 bin/obj/run.o: lib/version.h
-$(CADOBJ) bin/tocad bin/test/cad: lib/loftcad.h
+$(CADOBJ) bin/tocad bin/sample bin/test/cad: lib/loftcad.h
+$(PROGOBJ): lib/loftprog.h
+$(CADINOBJ) bin/test/numtest: lib/cadread.h
 
 $(LIB): $(LIBOBJ)
 	rm -f $@
 	ar rcs $@ $(LIBOBJ)
 
-bin/%: cmd/%.c $(LIB) lib/loft.h
+bin/%: cmd/%.c $(LIB) lib/loft.h lib/loftprog.h
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
-bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h bin/test/.dir
+bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h lib/loftprog.h \
+    bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 bin/test/oom.so: tests/oom.c bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -shared -fPIC -o $@ tests/oom.c
 
-bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h bin/bench/.dir
+bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h lib/loftprog.h \
+    bin/bench/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 check: all $(TESTS)
@@ -109,7 +121,7 @@ install: all
 	    $(DESTDIR)$(PREFIX)/share/man/man7 $(EXDIR)
 	cp $(BINS) $(DESTDIR)$(PREFIX)/bin/
 	cp $(LIB) $(DESTDIR)$(PREFIX)/lib/
-	cp lib/loft.h lib/loftcad.h $(DESTDIR)$(PREFIX)/include/
+	cp lib/loft.h lib/loftprog.h lib/loftcad.h $(DESTDIR)$(PREFIX)/include/
 	cp $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1/
 	cp $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5/
 	cp $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7/
@@ -122,6 +134,7 @@ uninstall:
 	rm -f $(addprefix $(DESTDIR)$(PREFIX)/bin/,$(notdir $(BINS))) \
 	    $(DESTDIR)$(PREFIX)/lib/$(notdir $(LIB)) \
 	    $(DESTDIR)$(PREFIX)/include/loft.h \
+	    $(DESTDIR)$(PREFIX)/include/loftprog.h \
 	    $(DESTDIR)$(PREFIX)/include/loftcad.h \
 	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man1/,$(notdir $(MAN1))) \
 	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man5/,$(notdir $(MAN5))) \
@@ -228,7 +241,8 @@ FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
 LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
 
 bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \
-    lib/internal.h $(PROGS:%=cmd/%.c)
+    lib/loftprog.h lib/loftcad.h lib/cadread.h lib/internal.h \
+    $(PROGS:%=cmd/%.c)
 	@mkdir -p bin/fuzz
 	$(FUZZ_CC) $(LOFT_CFLAGS) $(FUZZ_CFLAGS) -o $@ $< $(LIBSRC) $(LDLIBS)
 

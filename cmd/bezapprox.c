@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	int m, n;               /* degrees: m = 0 for a curve */
@@ -204,7 +204,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 
 		return approx_surface(&run->w, o, &x, rec, err);
 	}
-	if (o->m > 0 && rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (o->m > 0 && !loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "a %s record is a curve: "
 		    "-n m,n approximates surfaces", rec->type);
 	if (loft_curve_from_record(rec, &c, err) != 0)

@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	int format;             /* enum loft_cadin_format, or -1: by content */

@@ -11,7 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* Sizes and steps are whole or half numbers no larger than this. */
 #define MAX_SIZE 1000
@@ -270,7 +270,7 @@ outline_of(struct loft_run *run, const struct loft_record *rec,
 	double *q;
 	int r;
 
-	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: grade reads "
 		    "knots (point records)", rec->type);
 	if (rec->nrows > 0 && rec->ncols != 2)

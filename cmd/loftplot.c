@@ -16,7 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640
@@ -585,7 +585,7 @@ static int
 draw_curve(struct pic *pc, const struct loft_curve *c, struct extent *e,
     struct loft_error *err)
 {
-	int exact = strcmp(c->type, "cubic") == 0;
+	int exact = loft_type_named(c->type)->degree == 3;
 	struct stroke *s = new_stroke(pc, exact ? K_BEZIER : K_LINE, pc->nrec);
 
 	if (s == NULL)
@@ -848,7 +848,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 
 	box_empty(&e.box);
 	pc->kmax = 0;           /* this record's own, for pc->rec */
-	if (rec->type == NULL || strcmp(rec->type, "points") == 0) {
+	if (loft_record_is(rec, LOFT_KIND_KNOTS)) {
 		if ((rc = draw_points(pc, rec, &e, err)) == 0)
 			rc = check_dim(pc, rec->ncols, 1, err);
 	} else if (loft_is_surface(rec)) {
@@ -863,13 +863,14 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 			surface = 1;
 		}
 		if (rc == 0 && pc->control &&
-		    strcmp(sf.type, "bezier-surface") == 0)
+		    loft_record_is(rec, LOFT_KIND_CONTROL))
 			rc = add_control(pc, rec, (size_t)sf.m + 1,
 			    (size_t)sf.n + 1, &e, err);
 	} else if ((rc = loft_curve_from_record(rec, &c, err)) == 0 &&
 	    (rc = check_dim(pc, c.dim, 0, err)) == 0) {
 		rc = draw_curve(pc, &c, &e, err);
-		if (rc == 0 && pc->control && strcmp(c.type, "bezier") == 0)
+		if (rc == 0 && pc->control &&
+		    loft_record_is(rec, LOFT_KIND_CONTROL))
 			rc = add_control(pc, rec, 1, rec->nrows, &e, err);
 	}
 	if (rc == 0 && pc->label_key != NULL)
@@ -904,7 +905,7 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 	struct extent e;
 
 	box_empty(&e.box);
-	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: -K reads "
 		    "knots (point records)", rec->type);
 	if (check_points(rec, err) != 0 ||

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 enum field {
 	F_LENGTH, F_AREA, F_CX, F_CY, F_CZ, F_XMIN, F_YMIN, F_ZMIN, F_XMAX,

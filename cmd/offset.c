@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 #define MAXDIST 64              /* -d options in one call */
 

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* A plane n.x = d, and how its header names it. */
 struct plane {

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /*
  * The default reach of the edge rule: a point nearer an edge than a
@@ -164,7 +164,7 @@ drag_patch(struct loft_run *run, struct loft_design *d, size_t i,
 static int
 is_patch(const struct loft_record *rec)
 {
-	return rec->type != NULL && strcmp(rec->type, "patch") == 0;
+	return loft_record_is(rec, LOFT_KIND_MEMBER);
 }
 
 /* The record to drag: the one with id -i, or the only one. */

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	long principal, subsidiary;

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 struct opts {
 	struct loft_skin_opts skin;

@@ -10,19 +10,23 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
+#include "loftcad.h"
 
 struct opts {
 	long per;               /* points per segment */
 	int param, tangent, curvature;
 	int obj;                /* -f obj */
 	int attrs;              /* -a: each record's header as a comment */
-	long nvert;             /* OBJ vertices written so far */
+	struct loft_cad_doc *doc;       /* -f obj: the OBJ format's, made
+	                                   at the first record */
 	double spacing;         /* -s: arc length between points, or 0 */
 	double tol;             /* -t: chordal tolerance, or 0 */
 	double *u;              /* -s, -t: the parameters of a record */
 	size_t ucap;
 	size_t most;            /* -s, -t: points a record, at most */
+	double *pts;            /* -f obj: a curve's points, 3 numbers each */
+	size_t npts, ptscap;
 };
 
 /* -s and -t write at most this many points of a record (the fuzzing
@@ -75,27 +79,73 @@ end_data_set(struct loft_run *run)
 	loft_end_line(&run->w);
 }
 
-/* OBJ: "o NAME", the record's type and its id= if it has one. */
-static void
-put_object(struct loft_run *run, const struct loft_record *rec)
+/*
+ * -f obj: a record's object goes through the OBJ format of loftcad.h
+ * (lib/obj.c, tocad -f obj's), its callbacks called here record by
+ * record into run->w.  obj_begin starts the record's object.
+ */
+static int
+obj_begin(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
 {
-	const char *id = loft_attr(rec, "id");
-	char buf[128];
+	struct opts *o = run->ctx;
+	struct loft_cad_item it = { rec, "", 0, 0 };
+	struct loft_cad_opts co = { 0 };
 
-	snprintf(buf, sizeof buf, "o %s%s%.100s", rec->type, id ? "-" : "",
-	    id ? id : "");
-	loft_put_type(&run->w, buf);
-	loft_end_line(&run->w);
+	if (o->doc == NULL) {
+		if ((o->doc = malloc(sizeof *o->doc)) == NULL)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		loft_cad_init(o->doc, loft_cad_format_named("obj"), &co);
+	}
+	loft_cad_attach(o->doc, &run->w);
+	if (o->doc->f->begin_record(o->doc, &it) != 0) {
+		loft_cad_detach(o->doc, &run->w);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	return 0;
 }
 
-/* OBJ: "v x y z", z = 0 in the plane. */
-static void
-put_vertex(struct loft_run *run, const double *p, int dim)
+/* The record's geometry written by f (its code rc), the object ends. */
+static int
+obj_end(struct loft_run *run, int rc, struct loft_error *err)
 {
-	loft_put_type(&run->w, "v");
+	struct opts *o = run->ctx;
+
+	if (rc == 0)
+		rc = o->doc->f->end_record(o->doc);
+	loft_cad_detach(o->doc, &run->w);
+	return rc == 0 ? 0 : loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+}
+
+/* -f obj: keep the point p of a curve for its polyline. */
+static int
+obj_point(struct opts *o, const double *p, int dim, struct loft_error *err)
+{
+	if (o->npts == o->ptscap) {
+		size_t cap = o->ptscap ? 2 * o->ptscap : 64;
+		double *q = cap < o->ptscap ? NULL :
+		    realloc(o->pts, 3 * cap * sizeof *q);
+
+		if (q == NULL)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		o->pts = q;
+		o->ptscap = cap;
+	}
 	for (int q = 0; q < 3; q++)
-		loft_put_num(&run->w, q < dim ? p[q] : 0);
-	loft_end_line(&run->w);
+		o->pts[3 * o->npts + q] = q < dim ? p[q] : 0;
+	o->npts++;
+	return 0;
+}
+
+/* What the options hold: the parameters, the OBJ points and format. */
+static void
+opts_free(struct opts *o)
+{
+	free(o->u);
+	free(o->pts);
+	if (o->doc != NULL)
+		loft_cad_free(o->doc);
+	free(o->doc);
 }
 
 /* One output row: the point, then the columns the options ask for. */
@@ -103,7 +153,7 @@ static int
 put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
     double u, struct loft_error *err)
 {
-	const struct opts *o = run->ctx;
+	struct opts *o = run->ctx;
 	double p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], k;
 	int dim = c->dim;
 
@@ -113,10 +163,8 @@ put_point(struct loft_run *run, const struct loft_curve *c, size_t i,
 			return loft_fail(err, LOFT_EGEOM, (long)i, "segment %zu "
 			    "overflows at u = %g: coefficients too large", i + 1,
 			    u);
-	if (o->obj) {
-		put_vertex(run, p, dim);
-		return 0;
-	}
+	if (o->obj)
+		return obj_point(o, p, dim, err);
 	for (int q = 0; q < dim; q++)
 		loft_put_num(&run->w, p[q]);
 	if (o->param)
@@ -216,9 +264,7 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 {
 	struct opts *o = run->ctx;
 	struct loft_curve c;
-	long nv;
 	size_t n = 0;
-	char buf[32];
 	int rc;
 
 	if (loft_curve_from_record(rec, &c, err) != 0)
@@ -227,8 +273,7 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 	    (rc = chosen_params(o, &c, &n, err)) != 0)
 		return rc;
 	put_header_comment(run, rec);
-	if (o->obj)
-		put_object(run, rec);
+	o->npts = 0;
 	if (n > 0) {
 		if (put_params(run, &c, n, err) != 0)
 			return LOFT_EGEOM;
@@ -244,19 +289,14 @@ sample_curve(struct loft_run *run, const struct loft_record *rec,
 			return LOFT_EGEOM;
 		n = c.npieces * (size_t)o->per + 1;
 	}
-	if (o->obj) {
-		nv = (long)n;
-		loft_put_type(&run->w, "l");
-		for (long k = 1; k <= nv; k++) {
-			snprintf(buf, sizeof buf, " %ld", o->nvert + k);
-			loft_put_type(&run->w, buf);
-		}
-		loft_end_line(&run->w);
-		o->nvert += nv;
-	} else {
+	if (!o->obj) {
 		end_data_set(run);
+		return 0;
 	}
-	return 0;
+	if ((rc = obj_begin(run, rec, err)) != 0)
+		return rc;
+	return obj_end(run, o->doc->f->polyline(o->doc, o->pts, o->npts, 3,
+	    0), err);
 }
 
 /* The point of s at (u, v), checked: 0, or LOFT_EGEOM on overflow. */
@@ -320,31 +360,36 @@ mesh(struct loft_run *run, const struct loft_record *rec,
     const struct loft_surface *s, struct loft_error *err)
 {
 	struct opts *o = run->ctx;
-	double p[LOFT_MAXDIM];
-	long n = o->per, base = o->nvert + 1;
-	char buf[96];
+	double p[LOFT_MAXDIM], *v;
+	size_t n = (size_t)o->per, nv = (n + 1) * (n + 1), *tri, t = 0;
+	int rc = 0;
 
-	put_object(run, rec);
-	for (long j = 0; j <= n; j++)
-		for (long k = 0; k <= n; k++) {
-			if (surface_point(s, (double)j / n, (double)k / n, p,
-			    err) != 0)
-				return LOFT_EGEOM;
-			put_vertex(run, p, s->dim);
+	v = malloc(3 * nv * sizeof *v);
+	tri = malloc(6 * n * n * sizeof *tri);
+	if (v == NULL || tri == NULL)
+		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t j = 0; j <= n && rc == 0; j++)
+		for (size_t k = 0; k <= n && rc == 0; k++) {
+			rc = surface_point(s, (double)j / n, (double)k / n, p,
+			    err);
+			for (int q = 0; q < 3; q++)
+				v[3 * (j * (n + 1) + k) + q] = q < s->dim ?
+				    p[q] : 0;
 		}
-	for (long j = 0; j < n; j++)
-		for (long k = 0; k < n; k++) {
-			long a = base + j * (n + 1) + k, b = a + n + 1;
+	for (size_t j = 0; j < n && rc == 0; j++)
+		for (size_t k = 0; k < n; k++) {
+			size_t a = j * (n + 1) + k, b = a + n + 1;
+			size_t f[6] = { a, b, b + 1, a, b + 1, a + 1 };
 
-			snprintf(buf, sizeof buf, "f %ld %ld %ld", a, b, b + 1);
-			loft_put_type(&run->w, buf);
-			loft_end_line(&run->w);
-			snprintf(buf, sizeof buf, "f %ld %ld %ld", a, b + 1, a + 1);
-			loft_put_type(&run->w, buf);
-			loft_end_line(&run->w);
+			for (int q = 0; q < 6; q++)
+				tri[t++] = f[q];
 		}
-	o->nvert += (n + 1) * (n + 1);
-	return 0;
+	if (rc == 0 && (rc = obj_begin(run, rec, err)) == 0)
+		rc = obj_end(run, o->doc->f->mesh(o->doc, v, nv, tri, 2 * n * n),
+		    err);
+	free(v);
+	free(tri);
+	return rc;
 }
 
 static int
@@ -385,7 +430,8 @@ int
 main(int argc, char *argv[])
 {
 	static const char *const formats[] = { "points", "obj", NULL };
-	struct opts o = { 16, 0, 0, 0, 0, 0, 0, 0, 0, NULL, 0, MAX_POINTS };
+	struct opts o = { 16, 0, 0, 0, 0, 0, NULL, 0, 0, NULL, 0, MAX_POINTS,
+	    NULL, 0, 0 };
 	struct loft_run run = { .prog = "sample", .out = stdout, .msg = stderr,
 	    .handle = sample_record, .ctx = &o };
 	struct loft_error err;
@@ -432,7 +478,7 @@ main(int argc, char *argv[])
 		loft_usage_error(usage_text, 0, "-n, -s and -t are three "
 		    "ways of choosing the points: give one");
 	rc = loft_run_files(&run, argc - optind, argv + optind);
-	free(o.u);
+	opts_free(&o);
 	return rc;
 }
 #endif

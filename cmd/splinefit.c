@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* Two fits whose unit tangents differ by less than this at every knot are
  * the same curve; sign-rule alternatives differ by order 1. */
@@ -275,7 +275,7 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	size_t n = rec->nrows, nseg, m, nc;
 	double dist;
 
-	if (rec->type != NULL && strcmp(rec->type, "points") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: splinefit "
 		    "reads knots (point records)", rec->type);
 	if (n == 0)

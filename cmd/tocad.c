@@ -6,11 +6,11 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "loft.h"
+#include "loftprog.h"
 #include "loftcad.h"
 
 static const char usage_text[] =
-    "usage: tocad -f dxf|svg|step|iges|stl [-s] [-b] [-t tolerance] "
+    "usage: tocad -f dxf|svg|step|iges|stl|obj [-s] [-b] [-t tolerance] "
     "[-n steps] [-u mm|cm|m|in] [file ...]\n";
 
 static int

@@ -2,6 +2,7 @@
  * bezform.c: the exact Bezier forms of loft's polynomial record types,
  * the form every CAD format takes (B-splines are Bezier pieces joined at
  * knots), and the two Bezier operations the writers need.
+ * Program layer (loftcad.h, on loftprog.h): part of the CAD writers.
  */
 #include "loftcad.h"
 #include "internal.h"

@@ -3,6 +3,7 @@
  * exact Bezier forms, handed to the format's callbacks; curves into
  * polylines within a tolerance and surfaces into one welded mesh for the
  * formats that take only those; the numbers and knots the formats share.
+ * Program layer (loftcad.h, on loftprog.h): it takes records.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -12,7 +13,7 @@
 
 /* The formats: a new one is a module defining its struct and a line here. */
 extern const struct loft_cad_format loft_cad_dxf, loft_cad_svg, loft_cad_step,
-    loft_cad_iges, loft_cad_stl;
+    loft_cad_iges, loft_cad_stl, loft_cad_obj;
 
 const struct loft_cad_entry loft_cad_formats[] = {
 	{ "dxf", &loft_cad_dxf },
@@ -20,6 +21,7 @@ const struct loft_cad_entry loft_cad_formats[] = {
 	{ "step", &loft_cad_step },
 	{ "iges", &loft_cad_iges },
 	{ "stl", &loft_cad_stl },
+	{ "obj", &loft_cad_obj },
 	{ NULL, NULL }
 };
 
@@ -97,7 +99,7 @@ loft_cad_putnum(struct loft_cad_doc *d, double x)
 		w->bad = w->bad ? w->bad : LOFT_ENOMEM;
 		return;
 	}
-	w->len += (size_t)loft_format_num(w->buf + w->len, x, 0);
+	w->len += (size_t)loft_format_num(w->buf + w->len, x, w->digits);
 }
 
 int
@@ -498,7 +500,7 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 	np = (size_t)(s.m + 1) * (s.n + 1);
 	if (scratch(d, 3 * np) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	if (strcmp(s.type, "patch") == 0) {
+	if (!loft_record_is(rec, LOFT_KIND_CONTROL)) {
 		/* a patch: its net, in space (z = 0 for a plane patch) */
 		double b[25 * LOFT_MAXDIM];
 
@@ -516,7 +518,8 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 		return end_item(d, begin_item(d, &it, box) ||
 		    d->f->surface(d, &bs));
 	/* for the mesh: a patch with an id, and its neighbours */
-	if (strcmp(s.type, "patch") == 0 && loft_attr(rec, "id") != NULL) {
+	if (loft_record_is(rec, LOFT_KIND_MEMBER) &&
+	    loft_attr(rec, "id") != NULL) {
 		if (loft_design_add(&d->design, rec, err) != 0)
 			return LOFT_EINPUT;
 		d->design.p[d->design.n - 1].rec = NULL;    /* rec is reused */
@@ -529,7 +532,7 @@ int
 loft_cad_record(struct loft_cad_doc *d, const struct loft_record *rec,
     struct loft_error *err)
 {
-	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
+	if (loft_record_is(rec, LOFT_KIND_KNOTS))
 		return add_points(d, rec, err);
 	if (loft_is_surface(rec))
 		return add_surface(d, rec, err);
@@ -996,6 +999,31 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 		return loft_fail(err, LOFT_EGEOM, -1, "a number of the document "
 		    "is not finite (the input is too extreme)");
 	return 0;
+}
+
+const struct loft_cad_format *
+loft_cad_format_named(const char *name)
+{
+	for (const struct loft_cad_entry *e = loft_cad_formats; e->name != NULL;
+	    e++)
+		if (strcmp(e->name, name) == 0)
+			return e->format;
+	return NULL;
+}
+
+void
+loft_cad_attach(struct loft_cad_doc *d, struct loft_writer *w)
+{
+	d->out = *w;
+	memset(w, 0, sizeof *w);
+	d->in_head = 0;
+}
+
+void
+loft_cad_detach(struct loft_cad_doc *d, struct loft_writer *w)
+{
+	*w = d->out;
+	memset(&d->out, 0, sizeof d->out);
 }
 
 void

@@ -3,13 +3,14 @@
  * share: telling a document's format, the dispatch, their complaints,
  * records written whole, attribute values from names, and arcs made
  * polynomial within a tolerance.
+ * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "internal.h"
+#include "cadread.h"
 
 const char *const loft_cadin_format_name[] = { "dxf", "svg", "csv", NULL };
 

@@ -4,10 +4,11 @@
  * column is passed over.  The fields are separated by commas (or, where
  * the header has none, by semicolons, tabs, or blanks).  A blank line
  * ends a record: each block of rows becomes one point record.
+ * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <string.h>
 
-#include "internal.h"
+#include "cadread.h"
 
 struct csv {
 	char sep;               /* ',', ';', '\t', or ' ': runs of blanks */

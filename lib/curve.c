@@ -1,7 +1,8 @@
 /*
  * curve.c: curve records of every type behind one interface, so that the
- * programs that evaluate curves (sample, and later loftplot) learn a new type
- * in one place: a row in the table below.
+ * programs that evaluate curves (sample, loftplot) learn a new type in
+ * one place: its operations below, named from its row of types.c's
+ * table.
  */
 #include <string.h>
 
@@ -12,7 +13,7 @@
  * a control-point type (eval NULL) is one piece of a point per row,
  * evaluated by eval_ctl.
  */
-struct curve_type {
+struct loft__curve_type {
 	const char *name;
 	int rows_per_point;     /* numbers in a row, per coordinate */
 	void (*eval)(const double *piece, int dim, double u,
@@ -60,11 +61,12 @@ quartic_bezier(const double *q, int dim, double *ctl)
 	return 4;
 }
 
-static const struct curve_type types[] = {
-	{ "cubic", 4, loft_cubic_eval, NULL, cubic_bezier },
-	{ "quartic", 5, loft_quartic_eval, NULL, quartic_bezier },
-	{ "bezier", 1, NULL, loft_bezier_eval, NULL },
-};
+const struct loft__curve_type loft__cubic_type =
+	{ "cubic", 4, loft_cubic_eval, NULL, cubic_bezier };
+const struct loft__curve_type loft__quartic_type =
+	{ "quartic", 5, loft_quartic_eval, NULL, quartic_bezier };
+const struct loft__curve_type loft__bezier_type =
+	{ "bezier", 1, NULL, loft_bezier_eval, NULL };
 
 /* Parse an optional 0/1 attribute; -1 when it is something else. */
 static int
@@ -81,14 +83,12 @@ int
 loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
     struct loft_error *err)
 {
-	const struct curve_type *t = NULL;
+	const struct loft_type *rt = loft_record_type(rec);
+	const struct loft__curve_type *t = rt != NULL ? rt->curve : NULL;
 
-	if (rec->type == NULL || strcmp(rec->type, "points") == 0)
+	if (loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "a point record is no "
 		    "curve to evaluate (fit one with splinefit first)");
-	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
-		if (strcmp(rec->type, types[i].name) == 0)
-			t = &types[i];
 	if (t == NULL)
 		return loft_fail(err, LOFT_EINPUT, -1,
 		    "unknown record type '%s'", rec->type);
@@ -136,7 +136,7 @@ void
 loft_curve_cubic(struct loft_curve *c, const double *seg, size_t nseg, int dim,
     int closed)
 {
-	const struct curve_type *t = &types[0];         /* cubic */
+	const struct loft__curve_type *t = &loft__cubic_type;
 
 	c->type = t->name;
 	c->coef = seg;

@@ -8,6 +8,7 @@
  * 1, D6673's boundary layer, when it has neither; the layer table lists
  * the layers in the order they first appear, so a graded set keeps its
  * order.  Units: $INSUNITS from tocad -u.
+ * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdlib.h>
 #include <string.h>

@@ -13,13 +13,14 @@
  * of knot records, or at the joints of cubic records, are ASTM D6673
  * turn points: they become corners= of those records instead of records
  * of their own.
+ * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "cadread.h"
 
 /* Turn points lie on polyline vertices, written with the same digits;
  * nearer than this fraction of the drawing's extent is "at" one (a

@@ -317,10 +317,16 @@ struct loft_expr *
 loft_expr_parse(const char *src, const char *vars, int *col,
     struct loft_error *err)
 {
-	struct loft_expr *e = calloc(1, sizeof *e);
-	struct parser ps = { src, src, vars, e, err, col, 0, 0 };
+	struct loft_expr *e;
+	struct parser ps = { src, src, vars, NULL, err, col, 0, 0 };
 
 	*col = 0;
+	if (strlen(vars) < 1 || strlen(vars) > 2) {
+		loft_fail(err, LOFT_EINPUT, -1, "%zu variables: want 1 or 2",
+		    strlen(vars));
+		return NULL;
+	}
+	ps.e = e = calloc(1, sizeof *e);
 	if (e == NULL) {
 		loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		return NULL;

@@ -125,6 +125,9 @@ loft_grade_outline(const struct loft_grade_frame *f, const double *p,
 	int a = f->axis, c = 1 - a;
 	double sl = dl / f->len, sw = dw / f->wid;
 
+	if (q == p)
+		return loft_fail(err, LOFT_EINPUT, -1, "the graded knots "
+		    "would overwrite the knots they are made from");
 	if (!(f->len + dl > 0))
 		return loft_fail(err, LOFT_EGEOM, -1, "leaves the outline no "
 		    "length (%g %+g)", f->len, dl);

@@ -5,6 +5,7 @@
  * Bezier pieces as a clamped B-spline whose parameter is loft's.  Units
  * from tocad -u.  The dates of the global section are fixed, so the same
  * input gives the same file.  Curves in the plane get z = 0.
+ * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdlib.h>
 #include <string.h>

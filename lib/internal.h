@@ -1,6 +1,8 @@
 /*
  * internal.h: helpers shared by the modules of libloft and not part of
  * its interface (never installed).  Vectors have dim <= LOFT_MAXDIM.
+ * It knows only the core (loft.h), so either layer may use it; the CAD
+ * readers' own helpers, which write records, are in cadread.h.
  */
 #ifndef LOFT_INTERNAL_H
 #define LOFT_INTERNAL_H
@@ -140,11 +142,12 @@ vunit(double *a, int dim)
 int loft__normalise_cos(double w, double ca, double cb, double alpha,
     double *ma, double *mb);
 
-/* fit.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
+/* knots.c: 0, or LOFT_E* with err filled, for knots no method can fit. */
 int loft__check_knots(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, struct loft_error *err);
 
-/* fit.c: unit end tangents t0, tn of an open curve, given or estimated. */
+/* knots.c: unit end tangents t0, tn of an open curve, given or
+ * estimated. */
 int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *t0, double *tn, struct loft_error *err);
 
@@ -203,8 +206,15 @@ int loft__decimal_text(char *buf, uint64_t d, int e, int prec);
 int loft__floor_log10_pow2(int q);
 int loft__floor_log10_3q_pow2(int q);
 
-/* Grow *buf to hold at least need elements of size sz; 0 or -1. */
+/* grow.c: grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
+
+/* curve.c and surface.c: the operations of each curve and surface type,
+ * which types.c's table names. */
+extern const struct loft__curve_type loft__cubic_type, loft__quartic_type,
+    loft__bezier_type;
+extern const struct loft__surface_type loft__patch_type,
+    loft__bezier_surface_type;
 
 /* quartic.c: the quartic with coefficient vectors k[0..4] at u (any of
  * p, d1, d2 may be NULL); loft_quartic_eval over pointers. */
@@ -292,77 +302,5 @@ int loft__quad(const struct loft__piece *pc, double a, double b, int m,
     double *sum, int *depth);
 /* The speed |P'(u)|: the integrand of arc length. */
 void loft__speed(const struct loft__piece *pc, double u, double *f, void *ctx);
-/* cadread.c: the parts the CAD readers share. */
-struct loft__pts {              /* a growing list of points, 3 numbers each */
-	double *p;
-	size_t n, cap;
-};
-/* Append x[0..3); 0, or -1 when out of memory. */
-int loft__pts_add(struct loft__pts *s, const double *x);
-/* 3 when any point's z is not 0, else 2: a record's dimension. */
-int loft__pts_dim(const double *p, size_t n);
-/*
- * Echo: numbers a reader writes unchanged go out as the document's own
- * text, not formatted again, where that text is already what
- * loft_format_num(x, 0) would write (see loft__echo_form).  A slot per
- * hash of a double's bits: a number read is noted in its slot (over any
- * other), and a number written finds its text there only if the slot
- * holds the same bits, so output is byte for byte what formatting gives.
- * The texts are in the document doc[0..len) (its first 4 GB), which
- * must outlive the echo.  An echo zeroed but for doc and len is empty.
- */
-#define LOFT__ECHO_SLOTS 16384
-struct loft__echo {
-	const char *doc;                /* the document the texts are in */
-	size_t len;
-	struct {
-		uint64_t bits;
-		uint32_t at, n;         /* doc[at..at+n); n 0: empty */
-	} slot[LOFT__ECHO_SLOTS];
-};
-/* Whether s[0..n), read as the number x, is the text loft_format_num(x,
- * 0) writes: "0", or an optional '-', no leading zeros, no trailing
- * zeros after a point, no exponent, at most 3 zeros after "0.", and at
- * most 15 digits after those (decimals of 15 significant digits or
- * fewer read as distinct doubles, DBL_DIG, so such a text is the
- * shortest that reads back, and the only one of its length). */
-int loft__echo_form(const char *s, size_t n);
-/* loft_parse_num of s[0..n) into *x, noting its text in e (may be NULL)
- * when it has the form; 0, or -1 when s is not a finite number. */
-int loft__echo_parse(struct loft__echo *e, const char *s, size_t n, double *x);
-/* loft_put_num(w, x), with x's noted text from e when there is one and
- * w writes shortest digits (w->digits 0); e may be NULL. */
-void loft__echo_put(const struct loft__echo *e, struct loft_writer *w, double x);
-/* loft_put_row of v[0..n) through loft__echo_put. */
-void loft__echo_row(const struct loft__echo *e, struct loft_writer *w,
-    const double *v, int n);
-/* Write the n points p (3 numbers each) as rows of dim numbers, with
- * the texts of e (may be NULL; see struct loft__echo). */
-void loft__pts_put(struct loft_writer *w, const struct loft__echo *e,
-    const double *p, size_t n, int dim);
-/* Complain about line of the document, printf-style; counts it. */
-void loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
-#if defined(__GNUC__)
-	__attribute__((format(printf, 3, 4)))
-#endif
-	;
-/* A record was written to c->w from mark on: 0 when it is whole and
- * finite, else -1 after taking it out and complaining at line. */
-int loft__cadin_done(struct loft_cadin *c, size_t mark, long line);
-/* Write " key=VALUE", s[0..n) with '%', '#' and bytes outside 33..126
- * as %XX (loft.5's attribute values); nothing for n == 0. */
-void loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
-    size_t n);
-/* The pieces an arc of radius r and sweep angle a (radians) needs for
- * c->tol: chords, or cubic pieces; -1 when more than LOFT_CADIN_ARC_MAX. */
-long loft__arc_chords(const struct loft_cadin *c, double r, double a);
-long loft__arc_cubics(const struct loft_cadin *c, double r, double a);
-/* The cubic row P_A P_B P'_A P'_B of the Bezier b[0..4) (dim each). */
-void loft__bezier_hermite(const double *b, int dim, double *row);
-/* s[0..n) for a message: at most size - 1 bytes of it into buf, each
- * control byte as '?', so that a message stays one line; returns buf. */
-const char *loft__cadin_quote(char *buf, size_t size, const char *s, size_t n);
-/* Whether s[0..n) is word, ignoring ASCII case. */
-int loft__word_is(const char *s, size_t n, const char *word);
 
 #endif

@@ -1,6 +1,9 @@
 /*
- * loft.h: the one public header of libloft, the geometry and stream
- * library behind the loft programs.
+ * loft.h: the geometry core of libloft, the library behind the loft
+ * programs.  loftprog.h, the program layer (streams over stdio, the
+ * read-compute-write loop, reporting, options, designs from records,
+ * writers), is written on this header alone; loftcad.h, the CAD formats,
+ * on that one.  As Lua keeps lua.h apart from lauxlib.h.
  *
  * Conventions, for every function below:
  *  - Arrays are caller-owned.  Points are stored row by row: point i of a
@@ -9,15 +12,19 @@
  *    code on failure, and then fill the caller's struct loft_error with a
  *    message (no trailing newline) and, where the failure belongs to one
  *    row of the input, that row's index.
- *  - The library never prints on its own and never exits.  The functions
- *    that write (the writer, loft_run) write only to the streams they are
- *    handed.
+ *  - The core never prints, never touches a stdio stream and never
+ *    exits; it has no run loop.  A record (struct loft_record) is plain data here: the
+ *    core reads its type, attributes and rows, never a stream.
+ *  - Preconditions are stated in each contract; those that are cheap to
+ *    check are checked, and a broken one returns an error code (LOFT_EINPUT
+ *    unless the contract says otherwise), never undefined behaviour.
+ *    Throughout, dim is 2 or 3 (LOFT_MAXDIM) and pointers are not NULL
+ *    unless a contract says a NULL is allowed.
  */
 #ifndef LOFT_H
 #define LOFT_H
 
 #include <stddef.h>
-#include <stdio.h>
 
 #define LOFT_MAXDIM 3           /* curves live in the plane or in space */
 
@@ -37,7 +44,8 @@ struct loft_error {
 	char msg[256];
 };
 
-/* Fill err with a printf-style message; row may be -1.  Returns code. */
+/* Fill err with a printf-style message; row may be -1.  Returns code.
+ * err may be NULL (nothing is filled).  (error.c) */
 int loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
 #if defined(__GNUC__)
 	__attribute__((format(printf, 4, 5)))
@@ -83,14 +91,15 @@ int loft_parse_word(const char *s, const char *const *words, int *i,
  * Format x into buf (at least LOFT_NUMBUF bytes) and return the length.
  * digits == 0 writes the shortest text that reads back to the same double
  * (lossless); digits 1..17 rounds to that many significant digits,
- * except where that would round past the largest double (then lossless).
- * Minus zero is written as 0.  x must be finite.
+ * except where that would round past the largest double (then lossless);
+ * any other digits is taken as 0.  Minus zero is written as 0.  x must
+ * be finite (a NaN or infinity is written as printf's %g writes it).
  */
 #define LOFT_NUMBUF 32
 int loft_format_num(char *buf, double x, int digits);
 
 /* ------------------------------------------------------------------ */
-/* Stream records (stream.c)                                           */
+/* Records (record.c): what a stream holds, as plain data              */
 
 struct loft_attr {
 	char *key;
@@ -127,145 +136,57 @@ const char *loft_attr(const struct loft_record *rec, const char *key);
 /* The input line of row (for messages); the record's line if row < 0. */
 long loft_row_line(const struct loft_record *rec, long row);
 
-struct loft_reader;
-
-/* A reader over fp, whose messages call it name.  NULL: out of memory. */
-struct loft_reader *loft_reader_new(FILE *fp, const char *name);
-void loft_reader_free(struct loft_reader *rd);
-
 /*
- * Read the next record into rec.  Returns 1 when a record was read, 0 at
- * the end of the stream, LOFT_READ_BAD when a malformed record, or one
- * too large for memory, was read and skipped (err says what and where;
- * the next call goes on after it), LOFT_READ_FAIL on a read error or
- * when memory ran out otherwise (err says which).
+ * Copy src into dst, which is zeroed or holds an earlier record (its
+ * storage is reused).  Returns 0 or LOFT_ENOMEM.  Free dst with
+ * loft_record_free.
  */
-#define LOFT_READ_BAD  (-1)
-#define LOFT_READ_FAIL (-2)
-int loft_read(struct loft_reader *rd, struct loft_record *rec,
-    struct loft_error *err);
-
-/*
- * The writer collects the text of the records a program makes from one
- * input record, so that they go out whole or not at all.  digits is as
- * for loft_format_num.  A writer starts zeroed, with digits set.
- */
-struct loft_writer {
-	char *buf;
-	size_t len, cap;
-	int digits;
-	int bad;                /* a number was not finite, or out of memory */
-	int col;                /* numbers written on the current line */
-};
-
-void loft_put_type(struct loft_writer *w, const char *type);
-void loft_put_attr(struct loft_writer *w, const char *key, const char *val);
-void loft_put_num(struct loft_writer *w, double x);
-void loft_put_row(struct loft_writer *w, const double *v, int n);
-void loft_end_line(struct loft_writer *w);
-void loft_end_record(struct loft_writer *w);   /* the blank line */
-void loft_writer_free(struct loft_writer *w);
-
-/*
- * Copy the record's attributes to w's current header line, except those
- * whose keys appear in the NULL-terminated list skip.
- */
-void loft_put_attrs_except(struct loft_writer *w, const struct loft_record *rec,
-    const char *const *skip);
+int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
 
 /* ------------------------------------------------------------------ */
-/* The read-compute-write loop shared by every program (run.c)         */
-
-struct loft_run;
+/* Record types (types.c): what each can be, in one table              */
 
 /*
- * A program's record handler.  It reads rec, writes what it makes to
- * run->w, and returns 0; or returns a LOFT_E* code with err filled, and
- * then whatever it wrote is dropped.
+ * What a record of a type can be, a set of these.  A program asks the
+ * table (loft_record_is), never compares type names, so a new type is a
+ * row of loft_types and the operations it names.
  */
-typedef int (*loft_handler)(struct loft_run *run, const struct loft_record *rec,
-    struct loft_error *err);
-
-struct loft_run {
-	const char *prog;       /* for messages: "prog: FILE:LINE: ..." */
-	FILE *out, *msg;        /* standard output and standard error */
-	struct loft_writer w;
-	loft_handler handle;
-	void *ctx;              /* the program's options */
-	int status;             /* 0, or 1 once anything went wrong */
+enum {
+	LOFT_KIND_KNOTS = 1,    /* knots a curve is fitted through (points) */
+	LOFT_KIND_CURVE = 2,    /* a curve (loft_curve_from_record) */
+	LOFT_KIND_SEGMENTS = 4, /* a curve of Hermite segments, one a row,
+	                           with end derivatives (loft_curve_segments) */
+	LOFT_KIND_CONTROL = 8,  /* its rows are Bezier control points */
+	LOFT_KIND_SURFACE = 16, /* a surface (loft_surface_from_record) */
+	LOFT_KIND_MEMBER = 32   /* a member of a design (loft_design_add) */
 };
 
-/*
- * Read every named file ("-" is standard input; no names: standard
- * input), hand each record to run->handle, and write what it made to
- * run->out, one input record's output whole at a time.  Bad records and
- * unreadable files get one message on run->msg each and set status 1;
- * the loop goes on.  Returns the exit status: 0, or 1 when anything was
- * reported or a write failed.
- */
-int loft_run_files(struct loft_run *run, int nfiles, char **files);
+struct loft__curve_type;        /* curve.c's evaluation of a curve type */
+struct loft__surface_type;      /* surface.c's of a surface type */
 
-/*
- * For a program that makes its output from its options, not from input:
- * write what run->w holds to run->out, whole or (when it holds a number
- * that is not finite) not at all with a message, flush, free the writer,
- * and return the exit status as loft_run_files does.
- */
-int loft_run_made(struct loft_run *run);
+struct loft_type {
+	const char *name;       /* the header's type word */
+	int kinds;              /* LOFT_KIND_* */
+	int degree;             /* of a curve's pieces (cubic 3); 0 when the
+	                           record says (bezier) or it is no curve */
+	const struct loft__curve_type *curve;           /* or NULL */
+	const struct loft__surface_type *surface;       /* or NULL */
+};
 
-/*
- * For programs that write one document from all the records (loftplot):
- * after loft_run_files has handed every record to a handler that kept
- * what it needs and wrote nothing, write doc[0..len) to run->out and
- * flush it, with loft_run_files' manners for a failed write (a message
- * on run->msg, none for a closed pipe).  Returns the exit status:
- * run->status, or 1 when the write failed.
- */
-int loft_run_write(struct loft_run *run, const char *doc, size_t len);
+/* Every record type of loft.5, ended by one whose name is NULL. */
+extern const struct loft_type loft_types[];
 
-/*
- * A program's usage text ("usage: prog ...") and exit: with status 0 (-h)
- * the text goes to standard output, and a failed write makes it "prog:
- * write error: reason" on standard error (none for a closed pipe) and
- * exit 1; with another status (a usage error) it goes to standard error.
- */
-void loft_usage(const char *text, int status)
-#if defined(__GNUC__)
-	__attribute__((noreturn))
-#endif
-	;
+/* The type called name, or NULL when there is none; a NULL name (a
+ * record of no header) is `points`. */
+const struct loft_type *loft_type_named(const char *name);
 
-/*
- * A usage error and exit 2: "prog: -opt msg" (or "prog: msg" when opt is
- * 0) on standard error, then the usage text there (loft_usage).  Every
- * option a program cannot take ends here.
- */
-void loft_usage_error(const char *usage, int opt, const char *msg)
-#if defined(__GNUC__)
-	__attribute__((noreturn))
-#endif
-	;
+/* The type of rec (loft_type_named of its type word), or NULL. */
+const struct loft_type *loft_record_type(const struct loft_record *rec);
 
-/*
- * The long options of every program, called first in main: when
- * argv[1] is --help, loft_usage(usage, 0); when it is --version, the
- * line "prog (loft) VERSION" on standard output and exit 0 (1 with a
- * message when the write fails, as loft_usage).  Returns otherwise, with
- * argv unchanged.  Precondition: usage is "usage: prog ...".
- */
-void loft_opt_long(int argc, char *argv[], const char *usage);
+/* Whether rec's type can be every kind in kinds (LOFT_KIND_* or'd);
+ * 0 for a type not in the table. */
+int loft_record_is(const struct loft_record *rec, int kinds);
 
-/*
- * The option -p DIGITS of every program that writes numbers: a whole
- * number 1 to 17, the significant digits w writes (loft_put_num).
- * Returns 0, or LOFT_EINPUT with err saying why (w unchanged).
- */
-int loft_opt_digits(const char *arg, struct loft_writer *w,
-    struct loft_error *err);
-
-/* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
-void loft_report(struct loft_run *run, const struct loft_record *rec,
-    const struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
 /* Cubic segments (cubic.c)                                            */
@@ -297,7 +218,7 @@ int loft_normalise(const double *chord, const double *ta, const double *tb,
     int dim, double alpha, double *ma, double *mb);
 
 /* ------------------------------------------------------------------ */
-/* Fitting a spline through knots (fit.c, cspline.c)                   */
+/* Fitting a spline through knots (fit.c, cspline.c, fair.c, knots.c)  */
 
 enum loft_method { LOFT_MANNING, LOFT_FERGUSON, LOFT_CHORD, LOFT_FAIR };
 enum loft_sign { LOFT_SIGN_POSITIVE, LOFT_SIGN_TURN };
@@ -377,7 +298,8 @@ size_t loft_merge_knots(const double *p, size_t n, int dim, int closed,
  * Estimate the unit tangent at the first of the knots a, b, c (a curve
  * from a through b to c): the tangent at a of the circle through them,
  * or the direction a to b where they are collinear and in order.  With
- * c == NULL, the chord direction a to b.  Returns 0 or LOFT_EGEOM.
+ * c == NULL, the chord direction a to b.  Precondition, checked: dim 2
+ * or 3.  Returns 0, LOFT_EINPUT (dim) or LOFT_EGEOM.
  */
 int loft_end_tangent(const double *a, const double *b, const double *c, int dim,
     double *t, struct loft_error *err);
@@ -704,9 +626,10 @@ struct loft_expr;
 
 /*
  * Compile the expression src (grammar in expr.c and bezapprox(1)) whose
- * variables are the letters of vars, at most two ("t", or "uv").  Returns
- * the expression, to be freed with loft_expr_free; or NULL with err
- * filled and *col set to the 1-based column where the text went wrong.
+ * variables are the letters of vars, one or two ("t", or "uv"; checked:
+ * any other count is LOFT_EINPUT, *col 0).  Returns the expression, to
+ * be freed with loft_expr_free; or NULL with err filled and *col set to
+ * the 1-based column where the text went wrong.
  */
 struct loft_expr *loft_expr_parse(const char *src, const char *vars, int *col,
     struct loft_error *err);
@@ -829,40 +752,6 @@ int loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
     double *ctl, double *error, struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
-/* Whole records, and whole designs (stream.c, run.c)                  */
-
-/*
- * Copy src into dst, which is zeroed or holds an earlier record (its
- * storage is reused).  Returns 0 or LOFT_ENOMEM.  Free dst with
- * loft_record_free.
- */
-int loft_record_copy(struct loft_record *dst, const struct loft_record *src);
-
-/* Write rec to w as it was read: header, attributes, rows, blank line. */
-void loft_put_record(struct loft_writer *w, const struct loft_record *rec);
-
-/*
- * A handler of a whole design: all n records of the input at once.  It
- * writes what it makes to run->w and returns 0, or reports each problem
- * with loft_report (or on run->msg) and returns nonzero; then nothing is
- * written.
- */
-typedef int (*loft_design_handler)(struct loft_run *run,
-    const struct loft_record *recs, size_t n);
-
-/*
- * Read every record of the named files (as loft_run_files does: "-" is
- * standard input, no names: standard input) and hand them all, in
- * order, to design, once.  When any record was bad or any file
- * unreadable, each gets its message as in loft_run_files, design is not
- * called, and nothing is written.  Otherwise what design wrote goes out
- * whole, or nothing when it failed.  run->handle is not used.  Returns
- * the exit status: 0, or 1 when anything was reported or a write failed.
- */
-int loft_run_design(struct loft_run *run, int nfiles, char **files,
-    loft_design_handler design);
-
-/* ------------------------------------------------------------------ */
 /* MacCallum's quartic curves (quartic.c)                              */
 
 /*
@@ -921,8 +810,9 @@ struct loft_drag_info {
  * H5(u); nearer an end, that segment and the one across the end (the
  * first and last are neighbours on a closed curve) change together by
  * the two-segment rule, or, where there is none, the central rule
- * applies.  Returns 0 and fills info, or LOFT_EINPUT (U outside 0 to
- * nseg) or LOFT_EGEOM (the point is an end of an open curve, which
+ * applies.  Preconditions, checked: nseg > 0, dim 2 or 3, U from 0 to
+ * nseg.  Returns 0 and fills info, or LOFT_EINPUT (a precondition
+ * broken) or LOFT_EGEOM (the point is an end of an open curve, which
  * cannot move).
  */
 int loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
@@ -1020,7 +910,10 @@ int loft_patch_id(const struct loft_record *rec, long *id,
 
 /*
  * Append a patch with coefficients b, id and no neighbours (scale
- * factors 1).  Returns 0 or LOFT_ENOMEM.
+ * factors 1).  Preconditions, checked: dim 2 or 3, id from 1 to
+ * 1000000000 (as loft_patch_id reads it); an id already in d is
+ * loft_design_check's to find.  Returns 0, LOFT_EINPUT (a precondition
+ * broken, d unchanged) or LOFT_ENOMEM.
  */
 int loft_design_new(struct loft_design *d, const double *b, int dim,
     long id, struct loft_error *err);
@@ -1041,27 +934,6 @@ int loft_design_check(const struct loft_design *d, size_t *bad,
     struct loft_error *err);
 
 /*
- * Read the `patch` records among recs[0..n) into d, in order (other
- * records are left to the caller), and check the design.  Each bad
- * record or link gets its message through loft_report.  Returns 0, or
- * nonzero after reporting.
- */
-int loft_design_from_records(struct loft_run *run,
-    const struct loft_record *recs, size_t n, struct loft_design *d);
-
-/*
- * For programs that read patches only: report each record of recs[0..n)
- * that is not a `patch` ("TYPE record: PROG reads patch records").
- * Returns 0 if there is none, else nonzero after reporting them all.
- */
-int loft_design_only_patches(struct loft_run *run,
-    const struct loft_record *recs, size_t n);
-
-/* Write patch i of d as a `patch` record, keeping its other attributes. */
-void loft_design_put(struct loft_writer *w, const struct loft_design *d,
-    size_t i);
-
-/*
  * Section 5: split patch i along u = t (dir 0) or v = t (dir 1) into
  * two patches with new ids (d->maxid + 1, + 2), the first (parameter
  * 0 to t) in its place at i, the second appended at d->n - 1; scale
@@ -1079,8 +951,10 @@ int loft_design_split(struct loft_design *d, size_t i, int dir, double t,
  * Section 4: drag the point (u, v) of patch i by delta.  Nearer than
  * edge to an edge with one neighbour sharing all of it, the two patches
  * change by one bi-quartic bump over both; otherwise (hh) alone changes
- * by delta / (H5(u) H5(v)).  Returns 0 and fills info, or LOFT_EGEOM
- * when the point is on an edge that the drag cannot move.
+ * by delta / (H5(u) H5(v)).  Preconditions, checked: i < d->n, u and
+ * v in [0, 1], delta finite.  Returns 0 and fills info, or LOFT_EINPUT
+ * (a precondition broken, d unchanged) or LOFT_EGEOM when the point is
+ * on an edge that the drag cannot move.
  */
 int loft_design_drag(struct loft_design *d, size_t i, double u, double v,
     const double *delta, double edge, struct loft_drag_info *info,
@@ -1101,9 +975,11 @@ struct loft_join_info {
  * principal becomes that edge, and its cross-boundary derivatives those
  * of the principal times the ratio of the scale factors, so slopes are
  * continuous; both are linked as neighbours.  Edges farther apart than
- * LOFT_JOIN_GAP of the larger patch's size do not meet.  Returns 0 and
- * fills info, or LOFT_EGEOM (no edge within reach, an edge already
- * linked, or a neighbour of the subsidiary that the join would break).
+ * LOFT_JOIN_GAP of the larger patch's size do not meet.  Preconditions,
+ * checked: ip and is < d->n, both of one dim.  Returns 0 and fills info,
+ * or LOFT_EINPUT (a precondition broken, d unchanged), LOFT_EGEOM (the
+ * same patch twice, no edge within reach, an edge already linked, or a
+ * neighbour of the subsidiary that the join would break).
  */
 #define LOFT_JOIN_GAP 0.05
 int loft_design_join(struct loft_design *d, size_t ip, size_t is,
@@ -1127,9 +1003,10 @@ void loft_patch_bilinear(const double *corner, int dim, double *b);
  * edge v = 0 and c[1] the edge v = 1, both running in u; c[2] the edge
  * u = 0 and c[3] the edge u = 1, both running in v; by Coons' bilinearly
  * blended construction.  Corners must agree within LOFT_CORNER_TOL of
- * the curves' size; the corners are taken from c[0] and c[1].  Returns
- * 0, or LOFT_EGEOM naming the corner that does not match, with row the
- * index of the curve whose end misses.
+ * the curves' size; the corners are taken from c[0] and c[1].
+ * Precondition, checked: dim 2 or 3.  Returns 0, LOFT_EINPUT (dim), or
+ * LOFT_EGEOM naming the corner that does not match, with row the index
+ * of the curve whose end misses.
  */
 #define LOFT_CORNER_TOL 1e-9
 int loft_patch_coons(const double *const *c, int dim, double *b,
@@ -1264,8 +1141,9 @@ int loft_grade_steps_fit(const struct loft_grade_frame *f, double lstep,
  * dw wider across it about f->ref, exactly L + dl by W + dw, into q (2n
  * numbers; not p).  With mirror, q is instead the mirror image, about
  * the line through ref along the length axis, in reverse order, so it
- * turns the same way round.  Returns 0, or LOFT_EGEOM when L + dl or
- * W + dw is not positive (the message starts "leaves the outline").
+ * turns the same way round.  Precondition, checked: q is not p.
+ * Returns 0, LOFT_EINPUT (q is p), or LOFT_EGEOM when L + dl or W + dw
+ * is not positive (the message starts "leaves the outline").
  */
 int loft_grade_outline(const struct loft_grade_frame *f, const double *p,
     size_t n, double dl, double dw, int mirror, double *q,
@@ -1278,38 +1156,6 @@ int loft_grade_outline(const struct loft_grade_frame *f, const double *p,
  */
 void loft_grade_direction(const struct loft_grade_frame *f, double dl,
     double dw, int mirror, const double *t, double *q);
-
-/* ------------------------------------------------------------------ */
-/* Output split into files, each written whole (outfiles.c)            */
-
-struct loft_outfile {
-	char *name;
-	char *buf;
-	size_t len, cap;
-};
-
-/* Files by name, in the order first named.  Starts zeroed. */
-struct loft_outfiles {
-	struct loft_outfile *f;
-	size_t n, cap;
-};
-
-/*
- * Append text[0..len) to the file called name in s (a new one at the
- * end if s has none).  Returns 0 or LOFT_ENOMEM.
- */
-int loft_outfiles_add(struct loft_outfiles *s, const char *name,
-    const char *text, size_t len, struct loft_error *err);
-
-/*
- * Write f whole: to a new temporary file beside it, then renamed over
- * f->name.  Returns 0, or LOFT_EIO or LOFT_ENOMEM with a message that
- * starts with the file's name ("NAME: cannot create: reason"); then no
- * file is left behind and an old one of that name is untouched.
- */
-int loft_outfile_write(const struct loft_outfile *f, struct loft_error *err);
-
-void loft_outfiles_free(struct loft_outfiles *s);
 
 /* ------------------------------------------------------------------ */
 /* Lofting: a design of patches through section curves (skin.c)         */
@@ -1417,59 +1263,5 @@ int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
     double tol, struct loft_cut *out, struct loft_error *err);
 
 void loft_cut_free(struct loft_cut *c);
-/* Reading CAD documents into records (cadread.c, dxfread.c,          */
-/* svgread.c, csvread.c)                                               */
-
-/* The formats, by the names of fromcad -f. */
-enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV };
-extern const char *const loft_cadin_format_name[];       /* NULL-ended */
-
-/*
- * Circular and elliptic arcs are not polynomial, so the readers
- * approximate them: DXF arcs (bulges, ARC, CIRCLE) by chords, SVG arcs
- * by cubic pieces, each within a distance of the true arc.  That
- * distance is tol (in the output's units) when tol > 0, else
- * LOFT_CADIN_ARC_REL times the arc's radius (its larger semi-axis): a
- * hundredth of a millimetre on a 100 mm radius, finer than a cutter's
- * kerf, and scale-free.  An arc that would need more than
- * LOFT_CADIN_ARC_MAX pieces for tol is refused (a tol far below the
- * arc's size is a mistake, not a request for a million points).
- */
-#define LOFT_CADIN_ARC_REL 1e-4
-#define LOFT_CADIN_ARC_MAX 100000
-
-/*
- * A reading: the records go to w, each whole (a record that fails is
- * taken back out of w); each problem found is handed to complain with
- * the document's line (1-based) and a message of no newline, and
- * counted in nbad.  The reader goes on after each problem.
- */
-struct loft_cadin {
-	double tol;             /* arcs: see LOFT_CADIN_ARC_REL; 0: relative */
-	struct loft_writer *w;
-	void (*complain)(void *ctx, long line, const char *msg);
-	void *ctx;
-	long nbad;
-};
-
-/*
- * The format of the document buf[0..len), told from its content: a
- * binary or ASCII DXF, an XML document (SVG), or a text whose first line
- * names columns (CSV).  Returns the enum loft_cadin_format, or -1 when it
- * is none of them (len 0 included).
- */
-int loft_cadin_sniff(const char *buf, size_t len);
-
-/*
- * Read the whole document buf[0..len) of the given format into records
- * (fromcad(1) and loft(5) say which records each element becomes).
- * Returns 0 when all of it was read; LOFT_EINPUT when anything was
- * complained about (the rest was read); LOFT_ENOMEM when memory ran out
- * (complained about too; what was read before may be in w).
- */
-int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c);
-int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
-int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
-int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);
 
 #endif

@@ -1,6 +1,6 @@
 /*
  * loftcad.h: loft's curves and surfaces written into CAD documents (DXF,
- * SVG at true scale, STEP, IGES, STL) for tocad(1).
+ * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1).
  *
  * Every record is first put in exact Bezier form (bezform.c): a curve as
  * polynomial pieces of one degree, a surface as tensor-product Bezier
@@ -13,6 +13,15 @@
  * that takes only meshes.  A record whose kind the format has no callback
  * for is an error, and the document goes on without it.
  *
+ * The loft stream writer (loftprog.h) is not one of these formats: a
+ * format is handed a record's geometry in Bezier form, while a stream
+ * keeps each record as it is, its own type, rows and attributes (a
+ * cubic's Hermite rows, a patch's MacCallum coefficients and neighbour
+ * links); written back from Bezier form, a cubic would come out a
+ * bezier record and a patch a bezier-surface that no longer names its
+ * neighbours.  OBJ (obj.c) is also written record by record into a
+ * program's stream writer (loft_cad_attach), as sample -f obj does.
+ *
  * Conventions as in loft.h: caller-owned arrays, 0 or a LOFT_E* code,
  * and the library never prints.  The document is made in memory and
  * handed back whole (loft_cad_finish), so nothing reaches the output
@@ -21,7 +30,7 @@
 #ifndef LOFTCAD_H
 #define LOFTCAD_H
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* ------------------------------------------------------------------ */
 /* Exact Bezier forms of the record types (bezform.c)                  */
@@ -146,6 +155,9 @@ struct loft_cad_entry {
 };
 extern const struct loft_cad_entry loft_cad_formats[];
 
+/* The format of loft_cad_formats called name, or NULL. */
+const struct loft_cad_format *loft_cad_format_named(const char *name);
+
 /* The document being made. */
 struct loft_cad_doc {
 	const struct loft_cad_format *f;
@@ -192,6 +204,18 @@ int loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err);
 
 void loft_cad_free(struct loft_cad_doc *d);
 
+/*
+ * For a program that writes a format record by record into its own
+ * writer w (sample -f obj), not a document made whole at the end:
+ * loft_cad_attach moves w's text and digits into d's body, so that the
+ * format's callbacks (begin_record, polyline, mesh, ...), called by the
+ * program, append to it; loft_cad_detach moves it all back to w,
+ * whose record then goes out whole or not at all as loft_run makes it.
+ * d comes from loft_cad_init; between the two calls w is not used.
+ */
+void loft_cad_attach(struct loft_cad_doc *d, struct loft_writer *w);
+void loft_cad_detach(struct loft_cad_doc *d, struct loft_writer *w);
+
 /* Append n raw bytes to the document. */
 void loft_cad_put(struct loft_cad_doc *d, const void *s, size_t n);
 
@@ -213,7 +237,8 @@ void loft_cad_puts(struct loft_cad_doc *d, const char *s);
  */
 int loft_cad_real(char *buf, double x);
 
-/* Append x losslessly as loft_format_num writes it (no space before). */
+/* Append x as loft_format_num writes it (no space before), with the
+ * body's digits: 0 (lossless) unless a program set d->out.digits. */
 void loft_cad_putnum(struct loft_cad_doc *d, double x);
 
 /*

@@ -6,46 +6,11 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
-
-int
-loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
-{
-	va_list ap;
-
-	if (err == NULL)
-		return code;
-	err->row = row;
-	va_start(ap, fmt);
-	vsnprintf(err->msg, sizeof err->msg, fmt, ap);
-	va_end(ap);
-	return code;
-}
-
-int
-loft__grow(void **buf, size_t *cap, size_t need, size_t sz)
-{
-	size_t n = *cap ? *cap : 16;
-	void *p;
-
-	if (need <= *cap)
-		return 0;
-	while (n < need) {
-		if (n > ((size_t)-1 / 2) / sz)
-			return -1;
-		n *= 2;
-	}
-	if ((p = realloc(*buf, n * sz)) == NULL)
-		return -1;
-	*buf = p;
-	*cap = n;
-	return 0;
-}
 
 static int
 isdigit_(int c)
@@ -293,6 +258,8 @@ loft_format_num(char *buf, double x, int digits)
 	uint64_t d;
 	int e, n, rc, sign = 0;
 
+	if (digits < 0 || digits > 17)
+		digits = 0;
 	if (x == 0 || !isfinite(x)) {
 		if (x == 0)
 			x = 0;  /* minus zero prints as 0 */

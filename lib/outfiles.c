@@ -2,6 +2,7 @@
  * outfiles.c: output split into named files, each collected in memory
  * and written whole: to a temporary name beside it, then renamed, so a
  * reader never sees half a file and a failed run leaves the old one.
+ * Program layer (loftprog.h): it writes files.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -9,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "loftprog.h"
 #include "internal.h"
 
 /* The process's umask (reading it means setting it; put back at once),

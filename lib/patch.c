@@ -3,6 +3,7 @@
  * to 6): evaluation, `patch` records and designs of patches that name
  * their neighbours, splitting, dragging, joining, and first patches.
  */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -159,7 +160,7 @@ loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
 {
 	int rc = loft_curve_from_record(rec, c, err);
 
-	if (rc == 0 && c->eval == NULL)
+	if (rc == 0 && !loft_record_is(rec, LOFT_KIND_SEGMENTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "a %s record: want a "
 		    "curve of cubic or quartic segments", c->type);
 	return rc;
@@ -199,6 +200,9 @@ loft_patch_coons(const double *const *cv, int dim, double *b,
 	double corner[4 * LOFT_MAXDIM], lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
 	double size = 0;
 
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "boundary curves of %d "
+		    "coordinates: want 2 or 3", dim);
 	for (int q = 0; q < 4; q++)
 		for (int e = 0; e < 2; e++)
 			for (int c = 0; c < dim; c++) {
@@ -494,6 +498,12 @@ loft_design_new(struct loft_design *d, const double *b, int dim, long id,
 {
 	struct loft_patch *p;
 
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "a patch of %d "
+		    "coordinates: want 2 or 3", dim);
+	if (id < 1 || id > ID_MAX)
+		return loft_fail(err, LOFT_EINPUT, -1, "id %ld: want a whole "
+		    "number from 1 to %ld", id, ID_MAX);
 	if (design_grow(d, err) != 0 || index_reserve(d, 1) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	index_add(d, id, d->n);
@@ -530,7 +540,7 @@ loft_design_add(struct loft_design *d, const struct loft_record *rec,
 	int dim = rec->ncols / 5, rc;
 	long id;
 
-	if (rec->type == NULL || strcmp(rec->type, "patch") != 0)
+	if (!loft_record_is(rec, LOFT_KIND_MEMBER))
 		return loft_fail(err, LOFT_EINPUT, -1, "not a patch record");
 	if (loft__patch_shape(rec, err) != 0)
 		return LOFT_EINPUT;
@@ -734,63 +744,6 @@ loft_design_check(const struct loft_design *d, size_t *bad,
 	}
 	free(all);
 	return rc;
-}
-
-static void
-put_real_attr(struct loft_writer *w, const char *key, double x)
-{
-	char buf[LOFT_NUMBUF];
-
-	loft_format_num(buf, x, 0);
-	loft_put_attr(w, key, buf);
-}
-
-void
-loft_design_put(struct loft_writer *w, const struct loft_design *d, size_t i)
-{
-	static const char *const ours[] = { "id", "su", "sv", "u0", "u1",
-	    "v0", "v1", NULL };
-	const struct loft_patch *p = &d->p[i];
-	char buf[64 + 3 * LOFT_NUMBUF];
-
-	loft_put_type(w, "patch");
-	snprintf(buf, sizeof buf, "%ld", p->id);
-	loft_put_attr(w, "id", buf);
-	if (p->scale[0] != 1)
-		put_real_attr(w, "su", p->scale[0]);
-	if (p->scale[1] != 1)
-		put_real_attr(w, "sv", p->scale[1]);
-	for (int e = 0; e < 4; e++) {
-		char *list = NULL;
-		size_t len = 0, cap = 0;
-
-		for (size_t k = 0; k < p->nlink[e]; k++) {
-			const struct loft_link *l = &p->link[e][k];
-			char a[LOFT_NUMBUF], b[LOFT_NUMBUF];
-			int n;
-
-			loft_format_num(a, l->a, 0);
-			loft_format_num(b, l->b, 0);
-			n = l->a == 0 && l->b == 1 ?
-			    snprintf(buf, sizeof buf, ",%ld", l->id) :
-			    snprintf(buf, sizeof buf, ",%ld:%s:%s", l->id, a, b);
-			if (loft__grow((void **)&list, &cap, len + n + 1, 1)) {
-				w->bad = LOFT_ENOMEM;
-				break;
-			}
-			memcpy(list + len, buf, (size_t)n + 1);
-			len += n;
-		}
-		if (len > 0 && !w->bad)
-			loft_put_attr(w, loft_edge_name[e], list + 1);
-		free(list);
-	}
-	if (p->rec != NULL)
-		loft_put_attrs_except(w, p->rec, ours);
-	loft_end_line(w);
-	for (int r = 0; r < 5; r++)
-		loft_put_row(w, BIJ(p->b, r, 0, p->dim), 5 * p->dim);
-	loft_end_record(w);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1046,13 +999,25 @@ loft_design_drag(struct loft_design *d, size_t i, double u, double v,
     struct loft_error *err)
 {
 	static const double h5[5] = { 0, 0, 0, 0, 1 };
-	struct loft_patch *p = &d->p[i];
+	struct loft_patch *p;
 	double rho[4] = { u, 1 - u, v, 1 - v }, c[LOFT_MAXDIM], hd;
-	int e = 0, dim = p->dim;
+	int e = 0, dim;
 	long qi;
 	int f;
 
 	memset(info, 0, sizeof *info);
+	if (i >= d->n)
+		return loft_fail(err, LOFT_EINPUT, -1, "patch %zu of a design "
+		    "of %zu", i, d->n);
+	p = &d->p[i];
+	dim = p->dim;
+	if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
+		return loft_fail(err, LOFT_EINPUT, -1, "(u, v) = (%g, %g) is "
+		    "outside the patch", u, v);
+	for (int k = 0; k < dim; k++)
+		if (!isfinite(delta[k]))
+			return loft_fail(err, LOFT_EINPUT, -1, "the drag is not "
+			    "finite");
 	info->piece = (long)i;
 	info->other = -1;
 	for (int k = 1; k < 4; k++)
@@ -1215,11 +1180,20 @@ int
 loft_design_join(struct loft_design *d, size_t ip, size_t is,
     struct loft_join_info *info, struct loft_error *err)
 {
-	struct loft_patch *p = &d->p[ip], *s = &d->p[is];
+	struct loft_patch *p, *s;
 	double qp[5 * LOFT_MAXDIM], qs[5 * LOFT_MAXDIM], best = -1;
-	int dim = p->dim, g[2];
+	int dim, g[2];
 
 	memset(info, 0, sizeof *info);
+	if (ip >= d->n || is >= d->n)
+		return loft_fail(err, LOFT_EINPUT, -1, "patches %zu and %zu of "
+		    "a design of %zu", ip, is, d->n);
+	p = &d->p[ip];
+	s = &d->p[is];
+	dim = p->dim;
+	if (s->dim != dim)
+		return loft_fail(err, LOFT_EINPUT, -1, "patches of %d and %d "
+		    "coordinates", dim, s->dim);
 	if (ip == is)
 		return loft_fail(err, LOFT_EGEOM, -1, "a patch cannot be joined "
 		    "to itself");
@@ -1283,51 +1257,4 @@ loft_design_join(struct loft_design *d, size_t ip, size_t is,
 	edge_mismatch(p, info->edge_p, s, info->edge_s, info->reversed,
 	    &info->pos_after, &info->slope_after);
 	return 0;
-}
-
-/* ------------------------------------------------------------------ */
-/* Reading a design in a program */
-
-int
-loft_design_only_patches(struct loft_run *run, const struct loft_record *recs,
-    size_t n)
-{
-	struct loft_error err;
-	int rc = 0;
-
-	for (size_t i = 0; i < n; i++)
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0) {
-			rc = loft_fail(&err, LOFT_EINPUT, -1, "%s record: %s "
-			    "reads patch records", recs[i].type ? recs[i].type :
-			    "point", run->prog);
-			err.line = 0;
-			loft_report(run, &recs[i], &err);
-		}
-	return rc;
-}
-
-int
-loft_design_from_records(struct loft_run *run, const struct loft_record *recs,
-    size_t n, struct loft_design *d)
-{
-	struct loft_error err;
-	size_t bad;
-	int rc = 0;
-
-	for (size_t i = 0; i < n; i++) {
-		if (recs[i].type == NULL || strcmp(recs[i].type, "patch") != 0)
-			continue;
-		err.line = 0;
-		if (loft_design_add(d, &recs[i], &err) != 0) {
-			loft_report(run, &recs[i], &err);
-			rc = LOFT_EINPUT;
-		}
-	}
-	if (rc == 0 && loft_design_check(d, &bad, &err) != 0) {
-		err.line = 0;
-		err.row = -1;
-		loft_report(run, d->p[bad].rec, &err);
-		rc = LOFT_EINPUT;
-	}
-	return rc;
 }

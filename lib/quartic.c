@@ -149,6 +149,9 @@ loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
 	memset(info, 0, sizeof *info);
 	if (nseg == 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "curve has no segments");
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "a curve of %d "
+		    "coordinates: want 2 or 3", dim);
 	if (!(U >= 0 && U <= (double)nseg))
 		return loft_fail(err, LOFT_EINPUT, -1, "-u %g is outside the "
 		    "curve's parameter range 0 to %zu", U, nseg);

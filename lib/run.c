@@ -2,11 +2,13 @@
  * run.c: the read-compute-write loop every program shares, and its
  * manners: one message per bad record, output whole records only, go on
  * after a bad record or an unreadable file, fail on a write error.
+ * Program layer (loftprog.h): it reads and writes FILEs and prints.
  */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "loftprog.h"
 #include "internal.h"
 #include "version.h"
 

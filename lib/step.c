@@ -6,6 +6,7 @@
  * loft's), all in one GEOMETRIC_SET of a shape representation whose
  * length unit is tocad -u's.  A curve's name is its record's size= and
  * id=, as DXF's layers.  Curves in the plane get z = 0.
+ * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdlib.h>
 #include <string.h>

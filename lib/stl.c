@@ -4,6 +4,7 @@
  * vertices welded, so patches that share an edge leave no crack there,
  * and oriented consistently), each facet with its unit normal,
  * counter-clockwise seen from where the normal points.  Binary STL holds single-precision floats, little-endian.
+ * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdint.h>
 #include <string.h>

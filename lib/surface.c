@@ -1,13 +1,14 @@
 /*
  * surface.c: surface records of every type behind one interface, so
- * that the programs that evaluate surfaces (sample, and later loftplot)
- * learn a new type in one place: a row in the table below.
+ * that the programs that evaluate surfaces (sample, loftplot) learn a
+ * new type in one place: its operations below, named from its row of
+ * types.c's table.
  */
 #include <string.h>
 
 #include "internal.h"
 
-struct surface_type {
+struct loft__surface_type {
 	const char *name;
 	/* check rec's rows and attributes; set s->dim, s->m, s->n */
 	int (*check)(const struct loft_record *rec, struct loft_surface *s,
@@ -186,34 +187,32 @@ eval2_bezier_surface(const struct loft_surface *s, double u, double v,
 	    dvv);
 }
 
-static const struct surface_type types[] = {
-	{ "patch", check_patch, eval_patch, eval2_patch, box_patch },
+const struct loft__surface_type loft__patch_type =
+	{ "patch", check_patch, eval_patch, eval2_patch, box_patch };
+const struct loft__surface_type loft__bezier_surface_type =
 	{ "bezier-surface", check_bezier_surface, eval_bezier_surface,
-	    eval2_bezier_surface, box_bezier_surface },
-};
+	    eval2_bezier_surface, box_bezier_surface };
 
-static const struct surface_type *
-find_type(const char *name)
+/* The surface operations of rec's type, or NULL: it is no surface. */
+static const struct loft__surface_type *
+find_type(const struct loft_record *rec)
 {
-	if (name == NULL)
-		return NULL;
-	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
-		if (strcmp(name, types[i].name) == 0)
-			return &types[i];
-	return NULL;
+	const struct loft_type *t = loft_record_type(rec);
+
+	return t != NULL ? t->surface : NULL;
 }
 
 int
 loft_is_surface(const struct loft_record *rec)
 {
-	return find_type(rec->type) != NULL;
+	return find_type(rec) != NULL;
 }
 
 int
 loft_surface_from_record(const struct loft_record *rec,
     struct loft_surface *s, struct loft_error *err)
 {
-	const struct surface_type *t = find_type(rec->type);
+	const struct loft__surface_type *t = find_type(rec);
 
 	if (t == NULL)
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record is no "
@@ -232,7 +231,7 @@ loft_surface_from_record(const struct loft_record *rec,
 void
 loft_surface_from_patch(const double *b, int dim, struct loft_surface *s)
 {
-	const struct surface_type *t = find_type("patch");
+	const struct loft__surface_type *t = &loft__patch_type;
 
 	memset(s, 0, sizeof *s);
 	s->type = t->name;

@@ -9,6 +9,7 @@
  * exact (L, Q, C); of higher degree (quartics, beziers) cubics with the
  * piece's end points and end tangents, halved until each is within the
  * tolerance (the control points of their difference bound it).
+ * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdlib.h>
 #include <string.h>

@@ -5,12 +5,13 @@
  * Each subpath of a path is a record: a `cubic` record where it has a
  * curve (C, S, Q, T exactly, A within c->tol), a knot record where it is
  * straight segments only, as polylines and polygons are.
+ * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "cadread.h"
 
 /* Elements nested deeper are not read: a real drawing nests a few
  * levels, and a bound keeps the stack fixed however hostile the file. */

@@ -80,6 +80,95 @@ test_split_missing_neighbour(void)
 	loft_design_free(&d);
 }
 
+/*
+ * The preconditions of loft_design_new, loft_design_drag and
+ * loft_design_join, broken one at a time: each an error code, the
+ * design unchanged, where they read past d->p or took any dim and id.
+ */
+static void
+test_design_preconditions(void)
+{
+	static const double corner[8] = { 0, 0, 1, 0, 0, 1, 1, 1 };
+	static const double delta[2] = { 0.1, 0 }, nan_delta[2] = { NAN, 0 };
+	struct loft_design d = { 0 };
+	struct loft_drag_info info;
+	struct loft_join_info jinfo;
+	struct loft_error err;
+	double b[75], before[75];
+
+	loft_patch_bilinear(corner, 2, b);
+	CHECK(loft_design_new(&d, b, 4, 1, &err) == LOFT_EINPUT && d.n == 0,
+	    "a patch of 4 coordinates was added");
+	CHECK(loft_design_new(&d, b, 2, 0, &err) == LOFT_EINPUT && d.n == 0,
+	    "a patch of id 0 was added");
+	CHECK(loft_design_new(&d, b, 2, 1000000001L, &err) == LOFT_EINPUT &&
+	    d.n == 0, "a patch of id 1000000001 was added");
+	CHECK(loft_design_new(&d, b, 2, 1, &err) == 0, "new: %s", err.msg);
+	memcpy(before, d.p[0].b, 50 * sizeof *b);
+	CHECK(loft_design_drag(&d, 1, 0.5, 0.5, delta, 0.1, &info, &err) ==
+	    LOFT_EINPUT, "drag of patch 1 of 1 is not LOFT_EINPUT");
+	CHECK(loft_design_drag(&d, 0, 1.5, 0.5, delta, 0.1, &info, &err) ==
+	    LOFT_EINPUT, "drag at u = 1.5 is not LOFT_EINPUT");
+	CHECK(loft_design_drag(&d, 0, 0.5, NAN, delta, 0.1, &info, &err) ==
+	    LOFT_EINPUT, "drag at v = NaN is not LOFT_EINPUT");
+	CHECK(loft_design_drag(&d, 0, 0.5, 0.5, nan_delta, 0.1, &info, &err) ==
+	    LOFT_EINPUT, "a drag by NaN is not LOFT_EINPUT");
+	CHECK(memcmp(before, d.p[0].b, 50 * sizeof *b) == 0,
+	    "a refused drag changed the patch");
+	CHECK(loft_design_join(&d, 0, 1, &jinfo, &err) == LOFT_EINPUT,
+	    "join with patch 1 of 1 is not LOFT_EINPUT");
+	for (int k = 24; k >= 0; k--) {         /* the patch in space */
+		b[3 * k + 2] = 0;
+		b[3 * k + 1] = b[2 * k + 1];
+		b[3 * k] = b[2 * k];
+	}
+	CHECK(loft_design_new(&d, b, 3, 2, &err) == 0, "new: %s", err.msg);
+	CHECK(loft_design_join(&d, 0, 1, &jinfo, &err) == LOFT_EINPUT,
+	    "join of a plane and a space patch is not LOFT_EINPUT");
+	loft_design_free(&d);
+}
+
+/*
+ * Preconditions of the core checked where they were not: a dim other
+ * than 2 or 3 (arrays of LOFT_MAXDIM overrun), an expression of three
+ * variables (x[2] read), grading into the knots' own array (each knot
+ * read after it was overwritten), digits outside 0..17.
+ */
+static void
+test_core_preconditions(void)
+{
+	static const double a[4] = { 0, 0, 0, 0 }, b[4] = { 1, 0, 0, 0 };
+	static const double knots[6] = { 0, 0, 10, 0, 10, 3 };
+	const double *cv[4] = { a, a, a, a };
+	struct loft_grade_frame f;
+	struct loft_drag_info info;
+	struct loft_error err;
+	double t[4], q[5 * 4] = { 0 }, same[6];
+	char buf[LOFT_NUMBUF];
+	int col;
+
+	CHECK(loft_end_tangent(a, b, NULL, 4, t, &err) == LOFT_EINPUT,
+	    "a tangent in 4 dimensions is not LOFT_EINPUT");
+	CHECK(loft_patch_coons(cv, 4, q, &err) == LOFT_EINPUT,
+	    "a Coons patch in 4 dimensions is not LOFT_EINPUT");
+	CHECK(loft_quartic_drag(q, 1, 4, 0, 0.5, b, 0.1, &info, &err) ==
+	    LOFT_EINPUT, "a quartic drag in 4 dimensions is not LOFT_EINPUT");
+	CHECK(loft_expr_parse("u", "uvw", &col, &err) == NULL && col == 0,
+	    "an expression of three variables compiled");
+	CHECK(loft_expr_parse("u", "", &col, &err) == NULL && col == 0,
+	    "an expression of no variables compiled");
+	memcpy(same, knots, sizeof same);
+	CHECK(loft_grade_frame(same, 3, 0, NULL, &f, &err) == 0, "frame: %s",
+	    err.msg);
+	CHECK(loft_grade_outline(&f, same, 3, 1, 1, 0, same, &err) ==
+	    LOFT_EINPUT && memcmp(same, knots, sizeof same) == 0,
+	    "grading in place is not LOFT_EINPUT, the knots unchanged");
+	loft_format_num(buf, 0.1, 18);
+	CHECK(strcmp(buf, "0.1") == 0, "digits 18: '%s', want 0.1", buf);
+	loft_format_num(buf, 0.1, -1);
+	CHECK(strcmp(buf, "0.1") == 0, "digits -1: '%s', want 0.1", buf);
+}
+
 /* loft_parse_int near and past LONG_MAX: it wrapped (num.c, UBSan). */
 static void
 test_parse_int_wrap(void)
@@ -275,6 +364,8 @@ main(void)
 {
 	test_normal_no_pieces();
 	test_split_missing_neighbour();
+	test_design_preconditions();
+	test_core_preconditions();
 	test_parse_int_wrap();
 	test_scaled_norm();
 	test_bezier_surface();

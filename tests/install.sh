@@ -30,6 +30,7 @@ for c in cmd/*.c; do
 done
 echo "bin/libloft.a lib/libloft.a" >>"$T/want"
 echo "lib/loft.h include/loft.h" >>"$T/want"
+echo "lib/loftprog.h include/loftprog.h" >>"$T/want"
 echo "lib/loftcad.h include/loftcad.h" >>"$T/want"
 for m in man/*.[157]; do
 	echo "$m share/man/man${m##*.}/${m##*/}" >>"$T/want"

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "cadread.h"
 #include "check.h"
 
 static uint64_t rng = 0x2545f4914f6cdd1dULL;

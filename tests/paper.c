@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "loft.h"
+#include "loftprog.h"
 #include "check.h"
 
 #define MAXKNOTS 100000

@@ -57,7 +57,7 @@ size_hull=15        # the design's box: 10 x 10 x 5, diagonal 15
 
 usage_ok tocad
 fails 2 "-f names the format" "$B/tocad $T/ins.cubic"
-fails 2 "-f 'obj': want dxf, svg, step, iges or stl" "$B/tocad -f obj $T/ins.cubic"
+fails 2 "-f 'ps': want dxf, svg, step, iges, stl or obj" "$B/tocad -f ps $T/ins.cubic"
 fails 2 "want a tolerance above 0" "$B/tocad -f dxf -t 0 $T/ins.cubic"
 fails 2 "-u 'ft'" "$B/tocad -f svg -u ft $T/ins.cubic"
 
@@ -732,6 +732,50 @@ step_eval "$T/out" "$T/ins.pts" >"$T/val"; within "step: the good curve after a 
 run "$B/tocad -f dxf -t 1e-300 $T/ins.cubic"
 status 1
 says "needs more than 65536 steps a piece"
+
+# ---- OBJ ---------------------------------------------------------------------
+
+# obj_check FILE: OBJ parsed by its definition (v x y z; l, p and f
+# elements of 1-based vertex indices) with every vertex checked against
+# the hyperbolic paraboloid z = x y that the bilinear patch through
+# (0,0,0) (1,0,0) (0,1,0) (1,1,1) is: "vertices faces lines points
+# bad-indices unused-vertices worst-|z-xy|"
+obj_check() {
+	awk '$1 == "v" { nv++; x[nv] = $2; y[nv] = $3; z[nv] = $4; next }
+	$1 == "f" || $1 == "l" || $1 == "p" {
+		n[$1]++
+		for (i = 2; i <= NF; i++) {
+			if ($i !~ /^[0-9]+$/ || $i < 1 || $i > nv) bad++
+			used[$i] = 1
+		}
+		next }
+	$1 != "o" && NF { bad++ }
+	END { for (i = 1; i <= nv; i++) { if (!(i in used)) unused++
+		e = z[i] - x[i] * y[i]; if (e < 0) e = -e; if (e > w) w = e }
+	    printf "%d %d %d %d %d %d %.3g\n", nv, n["f"], n["l"], n["p"],
+	        bad, unused, w }' "$1"
+}
+$B/patchnew -c 0,0,0 -c 1,0,0 -c 0,1,0 -c 1,1,1 >"$T/saddle.patch"
+run "$B/tocad -f obj -n 6 $T/saddle.patch"
+cp "$T/out" "$T/saddle.obj"
+set -- $(obj_check "$T/saddle.obj")
+# one patch of 6 x 6 steps: 49 vertices, 72 triangles
+[ "$1 $2 $3 $4 $5 $6" = "49 72 0 0 0 0" ] && ok ||
+    no "obj: vertices faces lines points bad unused: $*, want 49 72 0 0 0 0"
+echo "$7" >"$T/val"; within "obj: vertices on z = x y" 1e-14
+# a curve and knots beside the surface: their own elements, indices on
+printf '0 0\n1 1\n2 0\n' >"$T/three.knots"
+run "$B/tocad -f obj -n 4 $T/saddle.patch $T/three.knots $T/space.cubic"
+set -- $(awk '$1 != "v" || NF == 4' "$T/out" | obj_check /dev/stdin)
+[ "$3 $4 $5" = "1 1 0" ] && ok || no "obj: lines points bad: $3 $4 $5, want 1 1 0"
+grep -q '^o points$' "$T/out" && grep -q '^o surfaces$' "$T/out" && ok ||
+    no "obj: no objects named points and surfaces"
+# sample -f obj goes through the same format: each surface its own mesh
+$B/sample -f obj -n 6 "$T/saddle.patch" "$T/saddle.patch" >"$T/s.obj"
+set -- $(obj_check "$T/s.obj")
+[ "$1 $2 $5 $6" = "98 144 0 0" ] && ok ||
+    no "sample -f obj: vertices faces bad unused: $1 $2 $5 $6, want 98 144 0 0"
+echo "$7" >"$T/val"; within "sample -f obj: vertices on z = x y" 1e-14
 
 # ---- units and determinism ---------------------------------------------------
 

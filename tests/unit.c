@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "loft.h"
+#include "loftprog.h"
 #include "check.h"
 
 /* ------------------------------------------------------------------ */
@@ -507,6 +507,87 @@ test_grade(void)
 	CHECK(loft_grade_frame(sq, 2, 0, NULL, &f, &err) == 0, "-a x");
 }
 
+/*
+ * The table of record types against loft.5, which names six (its
+ * sections "Point records", cubic, quartic, patch, bezier and
+ * bezier-surface) and says what each is; and each kind against what the
+ * functions behind it accept: a record of a type that can be a curve is
+ * one, of one that cannot is refused, and so for surfaces and design
+ * members.  A row added without its operations fails here.
+ */
+static void
+test_types(void)
+{
+	static const struct {
+		const char *name;
+		int kinds;
+		int ncols;              /* of a record of that type */
+		int nrows;
+	} manual[] = {
+		{ "points", LOFT_KIND_KNOTS, 2, 3 },
+		{ "cubic", LOFT_KIND_CURVE | LOFT_KIND_SEGMENTS, 8, 1 },
+		{ "quartic", LOFT_KIND_CURVE | LOFT_KIND_SEGMENTS, 10, 1 },
+		{ "bezier", LOFT_KIND_CURVE | LOFT_KIND_CONTROL, 2, 4 },
+		{ "patch", LOFT_KIND_SURFACE | LOFT_KIND_MEMBER, 10, 5 },
+		{ "bezier-surface", LOFT_KIND_SURFACE | LOFT_KIND_CONTROL, 3, 4 },
+	};
+	size_t n = sizeof manual / sizeof manual[0], count = 0;
+	double num[64] = { 0 };
+	long rowline[8] = { 0 };
+
+	for (const struct loft_type *t = loft_types; t->name != NULL; t++)
+		count++;
+	CHECK(count == n, "%zu types in the table, loft.5 has %zu", count, n);
+	CHECK(loft_type_named(NULL) == loft_type_named("points"),
+	    "a record of no header is not a points record");
+	CHECK(loft_type_named("curve") == NULL, "a type that is none");
+	for (size_t i = 0; i < n; i++) {
+		const struct loft_type *t = loft_type_named(manual[i].name);
+		struct loft_attr attr[3] = { { "id", "1" }, { "m", "1" },
+		    { "n", "1" } };
+		struct loft_record rec = { 0 };
+		struct loft_curve c;
+		struct loft_surface sf;
+		struct loft_design d = { 0 };
+		struct loft_error err;
+		int is_curve, is_surface, is_member;
+
+		CHECK(t != NULL, "%s: not in the table", manual[i].name);
+		if (t == NULL)
+			continue;
+		CHECK(t->kinds == manual[i].kinds, "%s: kinds %d, want %d",
+		    t->name, t->kinds, manual[i].kinds);
+		for (size_t k = 0; k < sizeof num / sizeof num[0]; k++)
+			num[k] = (double)(k % 7) - 3;   /* no two rows alike */
+		rec.type = (char *)manual[i].name;
+		rec.attr = attr;
+		rec.nattr = 3;
+		rec.num = num;
+		rec.ncols = manual[i].ncols;
+		rec.nrows = (size_t)manual[i].nrows;
+		rec.rowline = rowline;
+		CHECK(loft_record_is(&rec, t->kinds) &&
+		    !loft_record_is(&rec, t->kinds | LOFT_KIND_MEMBER << 1),
+		    "%s: loft_record_is", t->name);
+		is_curve = loft_curve_from_record(&rec, &c, &err) == 0;
+		is_surface = loft_surface_from_record(&rec, &sf, &err) == 0;
+		is_member = loft_design_add(&d, &rec, &err) == 0;
+		CHECK(is_curve == !!(t->kinds & LOFT_KIND_CURVE),
+		    "%s: a curve %d", t->name, is_curve);
+		CHECK(!is_curve || (t->degree == 0) ==
+		    !!(t->kinds & LOFT_KIND_CONTROL), "%s: degree %d",
+		    t->name, t->degree);
+		CHECK(is_surface == !!(t->kinds & LOFT_KIND_SURFACE),
+		    "%s: a surface %d", t->name, is_surface);
+		CHECK(is_member == !!(t->kinds & LOFT_KIND_MEMBER),
+		    "%s: a design member %d", t->name, is_member);
+		CHECK((loft_curve_segments(&rec, &c, &err) == 0) ==
+		    !!(t->kinds & LOFT_KIND_SEGMENTS), "%s: segments",
+		    t->name);
+		loft_design_free(&d);
+	}
+}
+
 int
 main(void)
 {
@@ -524,5 +605,6 @@ main(void)
 	test_baselines_open();
 	test_grade();
 	test_crosses();
+	test_types();
 	return check_done("unit");
 }

@@ -7,7 +7,7 @@
  */
 #include <stdio.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 int
 main(int argc, char *argv[])

@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "loft.h"
+#include "loftprog.h"
 
 /* abort with a note on standard error: the fuzzer saves the input */
 #define FUZZ_ASSERT(cond, what) do { \

@@ -29,6 +29,6 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	o.most = 100000;
 	run.w.digits = data[1] % 18;
 	fuzz_records(&run, data + 2, size - 2);
-	free(o.u);
+	opts_free(&o);
 	return 0;
 }
