@@ -24,6 +24,7 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/skin.o bin/obj/cut.o bin/obj/cadread.o \
           bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
 LIBOBJ += $(CADOBJ)
+LIBOBJ += bin/obj/approx.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o
 # PROGS is the one list of programs: their binaries and pages follow
@@ -33,6 +34,7 @@ TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
           bin/test/hostile bin/test/oom.so bin/test/arclen \
           bin/test/cad
+TESTS  += bin/test/noisy
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
