@@ -34,7 +34,7 @@ TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
           bin/test/hostile bin/test/oom.so bin/test/arclen \
           bin/test/cad
-TESTS  += bin/test/noisy
+TESTS  += bin/test/noisy bin/test/nearest
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)

@@ -45,6 +45,7 @@ suite bin/test/hostile
 suite sh tests/oom.sh
 suite bin/test/arclen
 suite sh tests/measure.sh
+suite sh tests/approx.sh
 suite sh tests/install.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

