@@ -36,6 +36,7 @@ TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/cad
 TESTS  += bin/test/noisy bin/test/nearest
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff
+BENCH  += bin/test/noisy
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
@@ -78,6 +79,14 @@ bench: all $(BENCH)
 # Hobby's and (with libspiro) Spiro's on uneven closed knots (issue 13)
 compare: all
 	@sh tests/bench/compare.sh
+
+# make compare-approx: splinefit -e beside scipy's smoothing spline on 60
+# noisy outlines, the table of issue 14 (skipped without scipy)
+compare-approx: all bin/test/noisy
+	@if /usr/bin/python3 -c 'import scipy, numpy' 2>/dev/null; then \
+	    /usr/bin/python3 tests/bench/approx_scipy.py; else \
+	    echo "compare-approx: skipped (no /usr/bin/python3 with scipy)"; fi
+.PHONY: compare-approx
 
 demo: all
 	bin/grade -r -3:4 man/figures/insole.knots | bin/splinefit | \

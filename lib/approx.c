@@ -73,6 +73,10 @@
  * APPROX_KSAMPLES times a span; a curvature times the length below
  * APPROX_FLAT has no sign. */
 #define APPROX_WIGGLE 0.05
+/* A removal that straightens a wiggle may take this many new knots (one:
+ * more brought back as many inflexions as they took) elsewhere near
+ * it, where the points then ask for them. */
+#define APPROX_RELOCATE 1
 #define APPROX_KSAMPLES 16
 #define APPROX_FLAT 1e-9
 
@@ -949,28 +953,37 @@ wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
 static int
 relocate(struct work *w, size_t changes)
 {
-	size_t worst = ALL_SPANS, ja, jb;
-	double far = 0, turn, ss;
+	size_t ja, jb;
+	double turn, ss;
 
 	keep_try(w);
-	for (size_t i = 0; i < w->n; i++)
-		if (w->near[i] && w->spanmax[w->fj[i]] > far) {
-			far = w->spanmax[w->fj[i]];
-			worst = w->fj[i];
-		}
-	if (worst == ALL_SPANS || split(w, worst) == 0)
-		return 0;
-	for (size_t i = 0; i < w->n; i++)
-		w->near[i] = (unsigned char)in_window(w, w->fj[i], worst);
-	if (local_sweeps(w, worst, &ss) > w->tol)
-		return 0;
-	for (size_t i = 0; i < w->n; i++)
-		w->dist[i] = project(w, w->q + i * w->dim, &w->fj[i], &w->fu[i]);
-	span_max(w);
-	for (size_t j = 0; j < nseg_of(w); j++)
-		if (w->spanmax[j] > w->tol)
+	for (int t = 0; t < APPROX_RELOCATE; t++) {
+		size_t worst = ALL_SPANS;
+		double far = 0;
+		int over = 0;
+
+		for (size_t i = 0; i < w->n; i++)
+			if (w->near[i] && w->spanmax[w->fj[i]] > far) {
+				far = w->spanmax[w->fj[i]];
+				worst = w->fj[i];
+			}
+		if (worst == ALL_SPANS || split(w, worst) == 0)
 			return 0;
-	return wiggle(w, 0, &ja, &jb, &turn) < changes;
+		for (size_t i = 0; i < w->n; i++)
+			w->near[i] = (unsigned char)in_window(w, w->fj[i], worst);
+		local_sweeps(w, worst, &ss);
+		for (size_t i = 0; i < w->n; i++)
+			w->dist[i] = project(w, w->q + i * w->dim, &w->fj[i],
+			    &w->fu[i]);
+		span_max(w);
+		for (size_t j = 0; j < nseg_of(w); j++)
+			over |= w->spanmax[j] > w->tol;
+		if (!over)
+			return wiggle(w, 0, &ja, &jb, &turn) < changes;
+		for (size_t i = 0; i < w->n; i++)
+			w->near[i] = (unsigned char)(w->dist[i] > w->tol);
+	}
+	return 0;
 }
 
 /*
