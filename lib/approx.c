@@ -18,8 +18,14 @@
  *   - split: every span with a point farther than the tolerance gets a
  *     knot at its middle (on the curve, so the curve hardly changes),
  *     and the sweeps begin again.
- * So the knots are as few as halving the spans that need it gives, and
- * each is the balance of many points.  Everything is relative to the
+ * Once every point is within the tolerance, each knot in turn is tried
+ * without (remove_knots): it goes where the points near it stay within
+ * the tolerance and their squared distances grow by no more than noise
+ * would (APPROX_NEED); then each wiggle, a short stretch of curvature
+ * of the other sign between two inflexions (APPROX_WIGGLE), loses a
+ * knot that holds it where the points allow (straighten).  So the
+ * knots are as few as the points show a need of, each the balance of
+ * many points, and an inflexion is kept only where the points ask.  Everything is relative to the
  * spans and the tolerance: nothing depends on the units.  A closed
  * outline is started at its lexicographically least point (or its
  * first corner), which is the same point wherever the input starts.
@@ -856,90 +862,86 @@ remove_knots(struct work *w)
 	}
 }
 
+/* The turn at sample t of the plane curve (APPROX_KSAMPLES a span, at
+ * the middles of equal parts): the curvature times the length of the
+ * part, in *x; returns its sign, 0 where the curvature times the
+ * length of the curve is below APPROX_FLAT. */
+static int
+sample_turn(const struct work *w, size_t t, double *x)
+{
+	size_t ns = nseg_of(w);
+	double p[2], d1[2], d2[2], v, k;
+	double u = ((t % APPROX_KSAMPLES) + 0.5) / APPROX_KSAMPLES;
+
+	span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
+	v = hypot(d1[0], d1[1]);
+	*x = 0;
+	if (!(v > 0))
+		return 0;
+	k = (d1[0] * d2[1] - d1[1] * d2[0]) / (v * v * v);
+	*x = k * v / APPROX_KSAMPLES;
+	if (!(fabs(*x) * ns > APPROX_FLAT))
+		return 0;
+	return k > 0 ? 1 : -1;
+}
+
 /*
- * The runs of one sign of the curvature of a plane curve, sampled
- * APPROX_KSAMPLES times a span: the count of sign changes, and the
- * weakest run between two of them whose turn (the integral of the
- * curvature along it) is below APPROX_WIGGLE and above floor, its spans
- * *ja to *jb and turn *turn (*turn = HUGE_VAL: none).
+ * The sign changes of the curvature of a plane curve (its inflexions),
+ * returned, and its weakest wiggle: the run of one sign between two
+ * changes whose turn (the integral of the curvature along it) is least,
+ * below APPROX_WIGGLE and above floor: its spans *ja to *jb (cyclically
+ * on a closed curve) and its turn *turn, HUGE_VAL when there is none.
  */
 static size_t
 wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
     double *turn)
 {
-	size_t ns = nseg_of(w), total = ns * APPROX_KSAMPLES, changes = 0;
-	size_t start = 0, first_end = 0;
-	double sum = 0, first_sum = 0;
-	int sign = 0, first_sign = 0, runs = 0;
+	size_t total = nseg_of(w) * APPROX_KSAMPLES, t0 = 0, start, changes = 0;
+	int sign = 0, last = 0;
+	double sum = 0, x;
 
 	*turn = HUGE_VAL;
-	for (size_t t = 0; t <= total; t++) {
-		double p[2], d1[2], d2[2], v, k = 0, ds = 0;
-		int sg = 0;
-		size_t j = t < total ? t / APPROX_KSAMPLES : 0;
-		double u = ((t % APPROX_KSAMPLES) + 0.5) / APPROX_KSAMPLES;
+	if (w->closed) {
+		/* start at a change, so that every run lies between two */
+		for (size_t t = 0; t < total; t++) {
+			int sg = sample_turn(w, t, &x);
 
-		if (t < total) {
-			span_eval(w, j, u, p, d1, d2);
-			v = hypot(d1[0], d1[1]);
-			if (v > 0) {
-				k = (d1[0] * d2[1] - d1[1] * d2[0]) / (v * v * v);
-				ds = v / APPROX_KSAMPLES;
-			}
-			/* no sign below a line's curvature */
-			if (fabs(k) * ds * ns > APPROX_FLAT)
-				sg = k > 0 ? 1 : -1;
+			last = sg ? sg : last;
 		}
-		if (t < total && (sg == 0 || sg == sign || sign == 0)) {
-			if (sign == 0)
-				sign = sg;
-			sum += k * ds;
+		for (; t0 < total; t0++) {
+			int sg = sample_turn(w, t0, &x);
+
+			if (sg && sg != last)
+				break;
+			last = sg ? sg : last;
+		}
+		if (t0 == total)
+			return 0;
+	}
+	start = t0;
+	for (size_t i = 0; i <= total; i++) {
+		size_t t = (t0 + i) % total;
+		int sg = i < total ? sample_turn(w, t, &x) : 0;
+
+		if (i < total && (sg == 0 || sg == sign || sign == 0)) {
+			sign = sign ? sign : sg;
+			sum += x;
 			continue;
 		}
-		/* a run ends at t: from start, of sign, turning sum */
-		if (runs == 0) {
-			first_sign = sign;
-			first_sum = sum;
-			first_end = t;
-		} else if (t < total || !w->closed) {
-			/* a run between two changes (the last, of an open
-			 * curve, has none after it) */
-			if (t < total && fabs(sum) < APPROX_WIGGLE &&
-			    fabs(sum) > floor && fabs(sum) < *turn) {
-				*turn = fabs(sum);
-				*ja = start / APPROX_KSAMPLES;
-				*jb = (t - 1) / APPROX_KSAMPLES;
-			}
+		/* a run from start to t ends; an open curve's first and last
+		 * have no change beyond them */
+		if ((w->closed || (start != 0 && i < total)) &&
+		    fabs(sum) < APPROX_WIGGLE && fabs(sum) > floor &&
+		    fabs(sum) < *turn) {
+			*turn = fabs(sum);
+			*ja = start / APPROX_KSAMPLES;
+			*jb = ((t + total - 1) % total) / APPROX_KSAMPLES;
 		}
-		if (t < total) {
-			runs++;
+		if (i < total || w->closed)
 			changes++;
-			start = t;
-			sign = sg;
-			sum = k * ds;
-		} else if (w->closed && runs > 0) {
-			/* the last run goes on into the first */
-			if (sign == first_sign) {
-				sum += first_sum;
-			} else {
-				changes++;
-				if (fabs(first_sum) < APPROX_WIGGLE &&
-				    fabs(first_sum) > floor &&
-				    fabs(first_sum) < *turn) {
-					*turn = fabs(first_sum);
-					*ja = 0;
-					*jb = (first_end - 1) / APPROX_KSAMPLES;
-				}
-			}
-			if (fabs(sum) < APPROX_WIGGLE && fabs(sum) > floor &&
-			    fabs(sum) < *turn) {
-				*turn = fabs(sum);
-				*ja = start / APPROX_KSAMPLES;
-				*jb = sign == first_sign ?
-				    (first_end - 1) / APPROX_KSAMPLES :
-				    ns - 1;
-			}
-		}
+		start = t;
+		sign = sg;
+		sum = x;
 	}
 	return changes;
 }
