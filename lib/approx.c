@@ -102,7 +102,8 @@
 struct work {
 	int dim, closed;
 	size_t n, m, shift;     /* points, knots, where the outline starts */
-	double tol;
+	double tol;             /* in the scaled units */
+	int e;                  /* the points are scaled by 2^-e */
 	const double *q;        /* the points from the start */
 	double *qbuf;           /* their copy, for a closed outline */
 	double *sm, *s;         /* moving average; its length to each point */
@@ -1111,7 +1112,8 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 		return loft_fail(err, LOFT_ENOCONV, (long)info->where,
 		    "tolerance %g not met: the largest distance reached is "
 		    "%g, from point %zu, with %zu knots after %d round%s of "
-		    "splitting%s", w->tol, worst, info->where + 1, w->m, round,
+		    "splitting%s", o->tol, ldexp(worst, w->e), info->where + 1,
+		    w->m, round,
 		    round == 1 ? "" : "s", round >= o->maxround ? "" :
 		    " (no span left to split)");
 	return 0;
@@ -1125,7 +1127,8 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	struct work w = { 0 };
 	struct loft_approx_info dummy;
 	size_t *corner = NULL;
-	int rc;
+	double big = 0;
+	int rc, e;
 
 	if (info == NULL)
 		info = &dummy;
@@ -1135,7 +1138,12 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	w.dim = dim;
 	w.closed = o->closed;
 	w.n = n;
-	w.tol = o->tol;
+	/* the points scaled by a power of two (exactly) into the unit box,
+	 * so that no square of a distance overflows or underflows */
+	for (size_t i = 0; i < n; i++)
+		big = fmax(big, vmaxabs(p + i * dim, dim));
+	e = w.e = ilogb(big);
+	w.tol = ldexp(o->tol, -e);
 	loft_fit_defaults(&w.fit);
 	w.fit.method = LOFT_FAIR;
 	w.fit.closed = o->closed;
@@ -1151,15 +1159,21 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	}
 	w.shift = start_point(o, p, n, dim);
 	for (size_t i = 0; i < n; i++)
-		vcopy(w.qbuf + i * dim, p + ((i + w.shift) % n) * dim, dim);
+		for (int k = 0; k < dim; k++)
+			w.qbuf[i * dim + k] = ldexp(p[((i + w.shift) % n) * dim +
+			    k], -e);
 	w.q = w.qbuf;
 	for (size_t c = 0; c < o->ncorner; c++)
 		corner[c] = (o->corner[c] + n - w.shift) % n;
 	rc = approx_run(&w, o, corner, info, err);
-	if (rc == 0)
+	info->dist = ldexp(info->dist, e);
+	if (rc == 0) {
 		put_segments(&w, seg);
-	else
+		for (size_t i = 0; i < 4 * dim * info->nseg; i++)
+			seg[i] = ldexp(seg[i], e);
+	} else {
 		info->nseg = 0;
+	}
 	free(corner);
 	work_free(&w);
 	return rc;

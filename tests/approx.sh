@@ -140,6 +140,16 @@ le "ellipse in inches: distance to the curve in mm" "$(hausdorff e e3)" 0.012
 le "ellipse in inches: distance of its points, in inches" \
     "$(field max "$($D "$T/e3in.dense" "$T/e3.pts")")" \
     "$(awk 'BEGIN { print 1.2 / 25.4 + 1e-5 }')"
+# units near the ends of the doubles: 1e-300 and 1e300 times, the same
+# knots (squares of distances there would underflow or overflow)
+for f in 1e-300 1e300; do
+	awk -v f=$f '/^[-0-9]/ { printf "%.17g %.17g\n", $1 * f, $2 * f }' \
+	    "$T/e.pts" >"$T/e4.pts"
+	"$B/splinefit" -e "$(awk -v f=$f 'BEGIN { printf "%.17g", 1.2 * f }')" \
+	    "$T/e4.pts" >"$T/e4.cubic" && ok || no "ellipse times $f fails"
+	[ "$(grep -c '^[-0-9]' "$T/e4.cubic")" = "$k" ] && ok ||
+	    no "ellipse times $f: $(grep -c '^[-0-9]' "$T/e4.cubic") knots, not $k"
+done
 
 # ---- the insole of man/figures/insole.knots, fitted: the truth ----------
 I="insole man/figures/insole.knots"
