@@ -24,7 +24,7 @@ struct opts {
 	double *knots;                  /* the knots kept after merging */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
-	size_t segcap;
+	size_t segcap, rowcap;          /* numbers in seg; rows in keep */
 };
 
 static const char usage_text[] =
@@ -69,30 +69,36 @@ record_tangent(const struct loft_record *rec, const char *key, int dim,
 }
 
 /* Room for the segments of n knots of dim coordinates, twice, and for
- * the knots, their rows and corners. */
+ * the knots, their rows and corners: each grown by its own need (a
+ * record of fewer coordinates but more knots than the last needs more
+ * rows, not more numbers). */
 static int
 grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 {
-	size_t need = 4 * (size_t)dim * n;
+	size_t need = 4 * (size_t)dim * n, rows = n;
 	void *v;
 
-	if (need <= o->segcap)
+	if (need <= o->segcap && n <= o->rowcap)
 		return 0;
+	need = need > o->segcap ? need : o->segcap;
+	rows = rows > o->rowcap ? rows : o->rowcap;
 	if ((v = realloc(o->seg, need * sizeof *o->seg)) != NULL)
 		o->seg = v;
 	if (v && (v = realloc(o->other, need * sizeof *o->other)) != NULL)
 		o->other = v;
-	if (v && (v = realloc(o->knots, need / 4 * sizeof *o->knots)) != NULL)
+	if (v && (v = realloc(o->knots, LOFT_MAXDIM * rows *
+	    sizeof *o->knots)) != NULL)
 		o->knots = v;
-	if (v && (v = realloc(o->keep, n * sizeof *o->keep)) != NULL)
+	if (v && (v = realloc(o->keep, rows * sizeof *o->keep)) != NULL)
 		o->keep = v;
-	if (v && (v = realloc(o->into, n * sizeof *o->into)) != NULL)
+	if (v && (v = realloc(o->into, rows * sizeof *o->into)) != NULL)
 		o->into = v;
-	if (v && (v = realloc(o->corner, n * sizeof *o->corner)) != NULL)
+	if (v && (v = realloc(o->corner, rows * sizeof *o->corner)) != NULL)
 		o->corner = v;
 	if (v == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	o->segcap = need;
+	o->rowcap = rows;
 	return 0;
 }
 

@@ -247,6 +247,13 @@ set -- $l
 [ "$#" = 2 ] && [ "$1" = "$(($2 + 1))" ] && ok ||
     no "unmet tolerance: line and point disagree: $(cat "$T/err")"
 
+# a record of fewer coordinates and more rows than the one before: its
+# rows got the room of the numbers (found by tests/fuzz/splinefit; shows
+# under make check-san and check-valgrind)
+run "printf 'points\n0 0 1\n2 1 0\n\npoints\n0 0\n1 1\n3 30\n' | $B/splinefit -o"
+status 0
+[ "$(grep -c '^cubic' "$T/out")" = 2 ] && ok || no "two records: $(cat "$T/out")"
+
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then
 	"$PY" tests/bench/approx_scipy.py -q -n 6 >"$T/scipy" 2>&1 && ok ||
