@@ -33,6 +33,7 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
           bin/obj/design.o $(CADINOBJ) $(CADOBJ)
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
+LIBOBJ += bin/obj/approx.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o
 # PROGS is the one list of programs: their binaries and pages follow
@@ -44,6 +45,8 @@ TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/cad
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
           bin/bench/numbers
+BENCH  += bin/test/noisy
+TESTS  += bin/test/noisy bin/test/nearest
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
@@ -53,7 +56,7 @@ MAN7    = man/loft.7
 EXAMPLES = $(addprefix man/examples/,README knots toe.knots insole.knots \
           arc.knots hull.knots seam.knots insole.dxf many-insoles.knots \
           v0.knots v1.knots u0.knots u1.knots hull.patch split.patch \
-          pieces.patch hull.design)
+          pieces.patch hull.design noisy-insole.pts)
 EXDIR   = $(DESTDIR)$(PREFIX)/share/loft/examples
 
 all: $(BINS) $(LIB)
@@ -105,6 +108,14 @@ bench: all $(BENCH)
 compare: all
 	@sh tests/bench/compare.sh
 
+# make compare-approx: splinefit -e beside scipy's smoothing spline on 60
+# noisy outlines, the table of issue 14 (skipped without scipy)
+compare-approx: all bin/test/noisy
+	@if /usr/bin/python3 -c 'import scipy, numpy' 2>/dev/null; then \
+	    /usr/bin/python3 tests/bench/approx_scipy.py; else \
+	    echo "compare-approx: skipped (no /usr/bin/python3 with scipy)"; fi
+.PHONY: compare-approx
+
 demo: all
 	bin/grade -r -3:4 man/figures/insole.knots | bin/splinefit | \
 	    bin/loftplot -l size > bin/insoles.svg
@@ -152,7 +163,8 @@ EXBIN   = bin
 examples: all
 	mkdir -p $(MKEX)
 	cp man/figures/insole.knots man/figures/arc.knots \
-	    man/figures/hull.knots man/figures/insole.dxf $(MKEX)/
+	    man/figures/hull.knots man/figures/insole.dxf \
+	    man/figures/noisy-insole.pts $(MKEX)/
 	cp man/figures/manning-fig14.knots $(MKEX)/seam.knots
 	$(EXBIN)/grade -r -3:4 -m man/figures/insole.knots \
 	    >$(MKEX)/many-insoles.knots

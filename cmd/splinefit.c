@@ -18,11 +18,13 @@ struct opts {
 	int start_dim, end_dim;         /* coordinates given with -S, -E */
 	int verbose;
 	double merge;                   /* -d, or -1: the default distance */
+	double approx;                  /* -e: the tolerance, or 0 */
+	int rounds;                     /* -i with -e: rounds of splitting */
 	double *seg, *other;            /* scratch, grown as records need */
 	double *knots;                  /* the knots kept after merging */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
-	size_t segcap;
+	size_t segcap, rowcap;          /* numbers in seg; rows in keep */
 };
 
 static const char usage_text[] =
@@ -30,7 +32,10 @@ static const char usage_text[] =
     "[-k positive|turn]\n"
     "                 [-m fair|manning|ferguson|chord] [-t tol] [-i maxiter] "
     "[-p digits]\n"
-    "                 [-v] [-d dist] [file ...]\n";
+    "                 [-v] [-d dist] [file ...]\n"
+    "       splinefit -e tol [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] "
+    "[-i rounds] [-p digits]\n"
+    "                 [-v] [file ...]\n";
 
 /*
  * The end tangent named key ("start" or "end"): the one -S or -E gave,
@@ -57,30 +62,36 @@ record_tangent(const struct loft_record *rec, const char *key, int dim,
 }
 
 /* Room for the segments of n knots of dim coordinates, twice, and for
- * the knots, their rows and corners. */
+ * the knots, their rows and corners: each grown by its own need (a
+ * record of fewer coordinates but more knots than the last needs more
+ * rows, not more numbers). */
 static int
 grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 {
-	size_t need = 4 * (size_t)dim * n;
+	size_t need = 4 * (size_t)dim * n, rows = n;
 	void *v;
 
-	if (need <= o->segcap)
+	if (need <= o->segcap && n <= o->rowcap)
 		return 0;
+	need = need > o->segcap ? need : o->segcap;
+	rows = rows > o->rowcap ? rows : o->rowcap;
 	if ((v = realloc(o->seg, need * sizeof *o->seg)) != NULL)
 		o->seg = v;
 	if (v && (v = realloc(o->other, need * sizeof *o->other)) != NULL)
 		o->other = v;
-	if (v && (v = realloc(o->knots, need / 4 * sizeof *o->knots)) != NULL)
+	if (v && (v = realloc(o->knots, LOFT_MAXDIM * rows *
+	    sizeof *o->knots)) != NULL)
 		o->knots = v;
-	if (v && (v = realloc(o->keep, n * sizeof *o->keep)) != NULL)
+	if (v && (v = realloc(o->keep, rows * sizeof *o->keep)) != NULL)
 		o->keep = v;
-	if (v && (v = realloc(o->into, n * sizeof *o->into)) != NULL)
+	if (v && (v = realloc(o->into, rows * sizeof *o->into)) != NULL)
 		o->into = v;
-	if (v && (v = realloc(o->corner, n * sizeof *o->corner)) != NULL)
+	if (v && (v = realloc(o->corner, rows * sizeof *o->corner)) != NULL)
 		o->corner = v;
 	if (v == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	o->segcap = need;
+	o->rowcap = rows;
 	return 0;
 }
 
@@ -262,12 +273,99 @@ report(struct loft_run *run, const struct loft_record *rec, size_t n,
 	fputc('\n', run->msg);
 }
 
+/*
+ * The cubic record of the nseg segments in o->seg, with the nc joints
+ * corner[] (0-based, increasing) as its corners=.  Returns 0, or
+ * LOFT_ENOMEM with nothing written.
+ */
+static int
+put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
+    int closed, const size_t *corner, size_t nc, struct loft_error *err)
+{
+	static const char *const consumed[] = { "start", "end", "closed",
+	    "corners", NULL };
+	struct opts *o = run->ctx;
+	size_t mark = run->w.len;
+
+	loft_put_type(&run->w, "cubic");
+	loft_put_attr(&run->w, "closed", closed ? "1" : "0");
+	if (put_corners(&run->w, corner, nc, err) != 0) {
+		run->w.len = mark;
+		return LOFT_ENOMEM;
+	}
+	loft_put_attrs_except(&run->w, rec, consumed);
+	loft_end_line(&run->w);
+	for (size_t i = 0; i < nseg; i++)
+		loft_put_row(&run->w, o->seg + i * 4 * rec->ncols,
+		    4 * rec->ncols);
+	loft_end_record(&run->w);
+	return 0;
+}
+
+/*
+ * -e: the joints of the nseg segments in o->seg that are the nc corner
+ * points o->corner[] of rec (loft_approx keeps each corner a knot, at
+ * the point itself), in o->corner as joints, increasing; their count.
+ */
+static size_t
+approx_corners(struct opts *o, const struct loft_record *rec, size_t nseg,
+    size_t nc)
+{
+	int dim = rec->ncols;
+	size_t c = 0;
+
+	for (size_t j = 0; j < nseg && nc > 0; j++)
+		for (size_t k = 0; k < nc; k++)
+			if (memcmp(o->seg + j * 4 * dim, rec->num +
+			    o->corner[k] * dim, dim * sizeof *rec->num) == 0) {
+				o->keep[c++] = j;
+				break;
+			}
+	memcpy(o->corner, o->keep, c * sizeof *o->corner);
+	return c;
+}
+
+/* -e: the fair curve within o->approx of the points (loft_approx). */
+static int
+approx_record(struct loft_run *run, const struct loft_record *rec,
+    const struct loft_fit_opts *fit, size_t nc, struct loft_error *err)
+{
+	struct opts *o = run->ctx;
+	struct loft_approx_opts ao;
+	struct loft_approx_info info;
+	int rc, dim = rec->ncols;
+
+	loft_approx_defaults(&ao);
+	ao.tol = o->approx;
+	ao.closed = fit->closed;
+	ao.have_start = fit->have_start;
+	ao.have_end = fit->have_end;
+	memcpy(ao.start, fit->start, sizeof ao.start);
+	memcpy(ao.end, fit->end, sizeof ao.end);
+	ao.corner = o->corner;
+	ao.ncorner = nc;
+	if (o->rounds > 0)
+		ao.maxround = o->rounds;
+	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
+	    err)) != 0)
+		return rc;
+	if (o->verbose) {
+		fprintf(run->msg, "splinefit: %s:%ld: %zu points, %zu knots "
+		    "kept, largest distance %.3g (tolerance %g) from the point "
+		    "of line %ld", rec->file, rec->line, rec->nrows,
+		    info.nknots, info.dist, o->approx,
+		    loft_row_line(rec, (long)info.where));
+		measures(run->msg, o->seg, info.nseg, dim, fit->closed);
+		fputc('\n', run->msg);
+	}
+	nc = approx_corners(o, rec, info.nseg, nc);
+	return put_curve(run, rec, info.nseg, fit->closed, o->corner, nc, err);
+}
+
 static int
 fit_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
 {
-	static const char *const consumed[] = { "start", "end", "closed",
-	    "corners", NULL };
 	struct opts *o = run->ctx;
 	struct loft_fit_opts fit = o->fit;
 	struct loft_fit_info info;
@@ -293,6 +391,8 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_ENOMEM;
 	if (record_corners(o, rec, &nc, err) != 0)
 		return LOFT_EINPUT;
+	if (o->approx > 0)
+		return approx_record(run, rec, &fit, nc, err);
 	dist = o->merge >= 0 ? o->merge : loft_merge_distance(rec->num, n, dim);
 	m = merge(o, rec, fit.closed, dist, &nc);
 	if (m < n && m < (fit.closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN))
@@ -311,15 +411,8 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	merge_notes(run, rec, m, dist);
 	if (o->verbose)
 		report(run, rec, m, &fit, &info, nseg);
-	loft_put_type(&run->w, "cubic");
-	loft_put_attr(&run->w, "closed", fit.closed ? "1" : "0");
-	if (put_corners(&run->w, o->corner, nc, err) != 0)
+	if (put_curve(run, rec, nseg, fit.closed, o->corner, nc, err) != 0)
 		return LOFT_ENOMEM;
-	loft_put_attrs_except(&run->w, rec, consumed);
-	loft_end_line(&run->w);
-	for (size_t i = 0; i < nseg; i++)
-		loft_put_row(&run->w, o->seg + i * 4 * dim, 4 * dim);
-	loft_end_record(&run->w);
 	return 0;
 }
 
@@ -343,6 +436,18 @@ parse_vector(int c, const char *arg, double *v, int *have, int *dim)
 	*have = 1;
 }
 
+/* -e TOL: a positive number */
+static int
+parse_tolerance(const char *arg, double *tol, struct loft_error *err)
+{
+	if (loft_parse_real(arg, 0, DBL_MAX, tol, err) != 0)
+		return LOFT_EINPUT;
+	if (*tol > 0)
+		return 0;
+	return loft_fail(err, LOFT_EINPUT, -1, "'%s': want a positive "
+	    "number (the largest distance from a point to the curve)", arg);
+}
+
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
@@ -354,12 +459,12 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "splinefit", .out = stdout,
 	    .msg = stderr, .handle = fit_record, .ctx = &o };
 	struct loft_error err;
-	int c, status, rc = 0, word;
+	int c, status, rc = 0, word, fitting = 0;
 	long whole;
 
 	loft_fit_defaults(&o.fit);
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:vh")) != -1) {
+	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:e:vh")) != -1) {
 		switch (c) {
 		case 'o': o.fit.closed = 0; break;
 		case 'S': parse_vector(c, optarg, o.fit.start,
@@ -367,18 +472,19 @@ main(int argc, char *argv[])
 		case 'E': parse_vector(c, optarg, o.fit.end, &o.fit.have_end,
 		    &o.end_dim); break;
 		case 'a': rc = loft_parse_real(optarg, 0.5, 1, &o.fit.alpha,
-		    &err); break;
+		    &err); fitting = c; break;
 		case 'k': rc = loft_parse_word(optarg, signs, &word, &err);
-		    o.fit.sign = word; break;
+		    o.fit.sign = word; fitting = c; break;
 		case 'm': rc = loft_parse_word(optarg, methods, &word, &err);
-		    o.fit.method = word; break;
+		    o.fit.method = word; fitting = c; break;
 		case 't': rc = loft_parse_real(optarg, 1e-15, 1, &o.fit.tol,
 		    &err); break;
 		case 'i': rc = loft_parse_int(optarg, 1, 1000000, &whole, &err);
-		    o.fit.maxiter = whole; break;
+		    o.fit.maxiter = o.rounds = whole; break;
 		case 'p': rc = loft_opt_digits(optarg, &run.w, &err); break;
 		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
-		    &err); break;
+		    &err); fitting = c; break;
+		case 'e': rc = parse_tolerance(optarg, &o.approx, &err); break;
 		case 'v': o.verbose = 1; break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
@@ -389,6 +495,9 @@ main(int argc, char *argv[])
 	if (o.fit.closed && (o.fit.have_start || o.fit.have_end))
 		loft_usage_error(usage_text, 0, "-S and -E give the ends of "
 		    "an open curve: use them with -o");
+	if (o.approx > 0 && fitting)
+		loft_usage_error(usage_text, fitting, "chooses how to fit through "
+		    "knots: -e approximates, by the fair curve");
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);
 	free(o.other);

@@ -330,6 +330,70 @@ double loft_tangent_distance(const double *a, const double *b, size_t nseg,
 int loft_fit_crosses(const double *seg, size_t nseg, int closed);
 
 /* ------------------------------------------------------------------ */
+/* Approximating noisy points by a fair curve (approx.c)               */
+
+/* Fewest points a closed and an open approximation take. */
+#define LOFT_APPROX_MIN_CLOSED 4
+#define LOFT_APPROX_MIN_OPEN   3
+
+/* Rounds of splitting spans at most, by default: each round at most
+ * doubles the knots, so 2^40 more than the first: the limit is reached
+ * only by a tolerance below the points' noise, where the spans are
+ * split down to single points. */
+#define LOFT_APPROX_ROUNDS 40
+
+struct loft_approx_opts {
+	double tol;             /* every point within this of the curve, > 0 */
+	int closed;
+	int have_start, have_end;       /* open curves: given end tangents */
+	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
+	const size_t *corner;   /* corner points (0-based, increasing), or NULL */
+	size_t ncorner;
+	int maxround;           /* rounds of splitting at most, >= 1 */
+};
+
+/* Closed, no corners, no end tangents, LOFT_APPROX_ROUNDS; tol is the
+ * caller's to set. */
+void loft_approx_defaults(struct loft_approx_opts *o);
+
+struct loft_approx_info {
+	size_t nknots, nseg;    /* the curve's knots and segments */
+	double dist;            /* the largest distance of a point from it */
+	size_t where;           /* that point (0-based) */
+	int rounds;             /* rounds of splitting taken */
+};
+
+/*
+ * Approximate the n points p (dimension dim, 2 or 3), samples in order
+ * along an outline (closed when o->closed), by the fair spline of
+ * loft_fit's LOFT_FAIR through knots of its own choosing, as few as
+ * halving spans finds, placed so that every point is within o->tol of
+ * the curve (the distance from the point to its nearest point on the
+ * curve, in the points' units).  The knots are not the points: each is
+ * where the residuals of the points on its two spans balance, so the
+ * curve passes through the middle of the noise.  Corners
+ * o->corner[0..ncorner), indices of points, each greater than the one
+ * before, are knots at those very points where the tangent breaks (as
+ * loft_fit's corners); o->start, o->end (when have_start, have_end)
+ * the end tangents of an open curve.  The result does not depend on the
+ * points' units, nor on which point a closed outline starts at (the
+ * knots are the same; the segments are rotated to start near p[0]).
+ * Writes the segments to seg, 4 * dim numbers each in the row layout of
+ * loft_cubic_eval, at most n of them: seg must hold 4 * dim * n
+ * doubles.  info (may be NULL) gets the knots, segments, the largest
+ * distance and its point.  Returns 0, or LOFT_EINPUT (dim, tol not
+ * positive and finite, tol at least half the diagonal of the points'
+ * box), LOFT_EGEOM (fewer than LOFT_APPROX_MIN_CLOSED or
+ * LOFT_APPROX_MIN_OPEN points, points all on a line, a fit that fails),
+ * LOFT_ENOCONV (the tolerance not met in o->maxround rounds or with
+ * every span too short to split: info->dist and info->where say what
+ * was reached, err->row is that point; nothing in seg), LOFT_ENOMEM.
+ */
+int loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_approx_info *info,
+    struct loft_error *err);
+
+/* ------------------------------------------------------------------ */
 /* Curves of any record type, for programs that evaluate them (curve.c) */
 
 /*

@@ -53,6 +53,7 @@ suite bin/test/arclen
 slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh
+slow sh tests/approx.sh
 suite sh tests/synopsis.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -48,6 +48,12 @@ awk -v n=101 'BEGIN { for (k = 0; k < n; k++) { print "points"
 	    printf "%d %.17g %.17g\n", k, x, 0.5 * cos(2 * t) + 0.002 * k }
 	print "" } }' >$W/sections.knots || exit 1
 $B/splinefit -o $W/sections.knots >$W/sections101.cubic || exit 1
+# issue 14: the insole of man/figures/insole.knots, 10^5 and 10^4
+# points with 0.3 mm of noise, for splinefit -e 1.6 (5.3 sigma)
+bin/test/noisy -n 100000 -s 0.3 -r 14 insole man/figures/insole.knots \
+    >$W/noisy100000.pts || exit 1
+bin/test/noisy -n 10000 -s 0.3 -r 14 insole man/figures/insole.knots \
+    >$W/noisy10000.pts || exit 1
 awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
     $B/splinefit -o >$W/sections.cubic || exit 1
 $B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
@@ -120,6 +126,9 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ sample-n25 "$B/sample -n 25 $W/insoles.cubic"
 	case_ patchloft "$B/patchloft $W/sections.cubic"
 	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
+	case_ approx "$B/splinefit -e 1.6 $W/noisy100000.pts"
+	case_ approx-small "$B/splinefit -e 1.6 $W/noisy10000.pts"
+	case_ interp-noisy "$B/splinefit -d 0 $W/noisy100000.pts"
 	rep=$((rep + 1))
 done
 echo
@@ -143,3 +152,7 @@ $W/timeit -r $OUT fromcad/dxf-numbers fromcad/dxf-awk
 echo "bench: fromcad of an SVG path of 10^6 segments over one of 10^5" \
     "(linear: about 10)"
 $W/timeit -r $OUT fromcad-path/fromcad-path-small
+echo "bench: splinefit -e 1.6 of 10^5 noisy points of the insole (under" \
+    "1 s), over interpolating them (-d 0: every point a knot), and over" \
+    "10^4 of them (linear: about 10)"
+$W/timeit -r $OUT approx/interp-noisy approx/approx-small

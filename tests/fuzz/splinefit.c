@@ -5,6 +5,8 @@
  *   (bits 1 and 2 both: -m manning; neither: the fair default)
  *   bit 3  -k turn     bit 4  -i 3          bit 5  -v
  *   bit 6  -S 1,0[,0]  bit 7  -E 0,1[,1]    (with -o)
+ * Byte 1's bit 6 (digits from the other bits, as before, otherwise):
+ * -e 0.1 -i 3, the approximation (issue 14).
  */
 #include "../../cmd/splinefit.c"
 #include "fuzz.h"
@@ -47,6 +49,10 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		o.end_dim = 2 + (data[1] >> 7);
 	}
 	run.w.digits = (data[1] & 0x7f) % 18;
+	if (data[1] & 0x40) {
+		o.approx = 0.1;
+		o.rounds = 3;
+	}
 	fuzz_records(&run, data + 2, size - 2);
 	free(o.seg);
 	free(o.other);

@@ -1,0 +1,1180 @@
+/*
+ * approx.c: a fair curve near noisy points (splinefit -e).  The points
+ * are samples of an outline, in order along it; the curve is the fair
+ * spline of fair.c (least bending energy over the G2 cubics) through a
+ * few knots that are not the points but are placed so that every point
+ * is within the tolerance of the curve.
+ *
+ * The knots start few (APPROX_START_SPANS spans, evenly along a moving
+ * average of the points) and are then, in rounds:
+ *   - moved (corrected): the curve is fitted through them, each point is
+ *     projected onto it (its foot), and each knot moves by the mean of
+ *     the residuals (point minus foot) of the points on its two spans,
+ *     weighted by the hat function of the spans (1 at the knot, 0 at its
+ *     neighbours).  A knot moved so is where the residuals near it
+ *     balance: the condition of least squares for a curve that follows
+ *     its knots locally, which a fair spline does.  A few sweeps settle
+ *     it; the noise averages out over the points of two spans;
+ *   - split: every span with a point farther than the tolerance gets a
+ *     knot at its middle (on the curve, so the curve hardly changes),
+ *     and the sweeps begin again.
+ * Once every point is within the tolerance, each knot in turn is tried
+ * without (remove_knots): it goes where the points near it stay within
+ * the tolerance and their squared distances grow by no more than noise
+ * would (APPROX_NEED); then each wiggle, a short stretch of curvature
+ * of the other sign between two inflexions (APPROX_WIGGLE), loses a
+ * knot that holds it where the points allow (straighten).  So the
+ * knots are as few as the points show a need of, each the balance of
+ * many points, and an inflexion is kept only where the points ask.  Everything is relative to the
+ * spans and the tolerance: nothing depends on the units.  A closed
+ * outline is started at its lexicographically least point (or its
+ * first corner), which is the same point wherever the input starts.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Spans to start with, over the whole outline: an ellipse needs about
+ * this many, an insole a few more; fewer would make the first feet of
+ * the points too coarse. */
+#define APPROX_START_SPANS 8
+
+/* The moving average that gives the points' first parameter (their
+ * distance along it) and the first knots spans this fraction of the
+ * points either side: enough to calm the noise, little enough not to
+ * cut a corner of the outline by more than a correction undoes. */
+#define APPROX_SMOOTH 0.01
+
+/* Correction sweeps at most per round, and a round's sweeps stop once
+ * no knot moves more than APPROX_SETTLED of the tolerance. */
+#define APPROX_SWEEPS 12
+#define APPROX_SETTLED 1e-3
+
+/* A span is split only where at least this many points lie on it: a
+ * knot between fewer is no average. */
+#define APPROX_SPLIT_MIN 2
+
+/* Knots are removed, after the tolerance is met, only from curves of at
+ * most this many (each removal is tried), and each try moves the knots
+ * of APPROX_WINDOW spans either side of the one it merges, in
+ * APPROX_TRY_SWEEPS sweeps over the points on them. */
+#define APPROX_REMOVE_MAX 256
+#define APPROX_WINDOW 2
+#define APPROX_TRY_SWEEPS 4
+
+/* A removal is kept only where the squares of the distances of the
+ * points near it grow by less than this many times the variance of
+ * the noise (estimated by the mean square distance of all the points):
+ * a knot the points do not ask for adds about one or two variances (a
+ * chi-square of one or two degrees of freedom, which passes 16 once in
+ * some thousands); one they ask for adds many.  So the knots that stay are those the points show a need of,
+ * and the curve keeps to the outline rather than using the tolerance. */
+#define APPROX_NEED 16.0
+
+/* A run of curvature of one sign between two inflexions is a wiggle
+ * when it turns the tangent by less than this (radians): a few
+ * degrees, far below any shape a designer draws between inflexions and
+ * above what noise on a straight stretch makes a knot hold.  Sampled
+ * APPROX_KSAMPLES times a span; a curvature times the length below
+ * APPROX_FLAT has no sign. */
+#define APPROX_WIGGLE 0.05
+/* A removal that straightens a wiggle may take this many new knots (one:
+ * more brought back as many inflexions as they took) elsewhere near
+ * it, where the points then ask for them. */
+#define APPROX_RELOCATE 1
+#define APPROX_KSAMPLES 16
+#define APPROX_FLAT 1e-9
+
+/* Newton steps at most projecting a point onto the curve, each at most
+ * APPROX_MAXSTEP in u; stop below APPROX_FOOT in u. */
+#define APPROX_NEWTON 16
+#define APPROX_MAXSTEP 0.5
+/* A foot is found once a Newton step moves it less than this fraction
+ * of the tolerance along the curve: the distance is then right to far
+ * less (its error is second order in the step). */
+#define APPROX_FOOT 1e-7
+
+/* Points within this fraction of their extent from the line through
+ * the two farthest apart are on that line. */
+#define APPROX_LINE 1e-9
+
+struct work {
+	int dim, closed;
+	size_t n, m, shift;     /* points, knots, where the outline starts */
+	double tol;             /* in the scaled units */
+	int e;                  /* the points are scaled by 2^-e */
+	const double *q;        /* the points from the start */
+	double *qbuf;           /* their copy, for a closed outline */
+	double *sm, *s;         /* moving average; its length to each point */
+	size_t *fj;             /* the foot of each point: span, u */
+	double *fu, *dist;
+	double *k, *acc, *wsum; /* knots; a sweep's sums */
+	unsigned char *fixed;   /* corners stay where they are */
+	size_t *corner, nc;     /* knots that are corners */
+	size_t *kidx;           /* the first knots' points */
+	double *seg;            /* the curve through the knots */
+	double *pow;            /* its spans in powers of u */
+	double *spanmax;        /* the largest distance on each span */
+	double *sk, *sseg, *sfu;        /* a try's saved knots, curve, feet */
+	size_t *sfj;
+	unsigned char *sfixed, *tried, *near;  /* near: points of a try */
+	unsigned char *stried;
+	double *sdist;
+	size_t sm0;
+	struct loft_fit_opts fit;
+};
+
+static void
+work_free(struct work *w)
+{
+	free(w->qbuf);
+	free(w->sm);
+	free(w->s);
+	free(w->fj);
+	free(w->fu);
+	free(w->dist);
+	free(w->k);
+	free(w->acc);
+	free(w->wsum);
+	free(w->fixed);
+	free(w->corner);
+	free(w->kidx);
+	free(w->seg);
+	free(w->pow);
+	free(w->spanmax);
+	free(w->sk);
+	free(w->sseg);
+	free(w->sfu);
+	free(w->sfj);
+	free(w->sfixed);
+	free(w->tried);
+	free(w->near);
+	free(w->stried);
+	free(w->sdist);
+}
+
+static int
+work_alloc(struct work *w, size_t n, int dim)
+{
+	size_t m = n + 2;
+
+	w->qbuf = malloc(n * dim * sizeof *w->qbuf);
+	w->sm = malloc(n * dim * sizeof *w->sm);
+	w->s = malloc((n + 1) * sizeof *w->s);
+	w->fj = malloc(n * sizeof *w->fj);
+	w->fu = malloc(n * sizeof *w->fu);
+	w->dist = malloc(n * sizeof *w->dist);
+	w->k = malloc(m * dim * sizeof *w->k);
+	w->acc = malloc(m * dim * sizeof *w->acc);
+	w->wsum = malloc(m * sizeof *w->wsum);
+	w->fixed = malloc(m);
+	w->corner = malloc(m * sizeof *w->corner);
+	w->kidx = malloc(m * sizeof *w->kidx);
+	w->seg = malloc(4 * dim * m * sizeof *w->seg);
+	w->pow = malloc(4 * dim * m * sizeof *w->pow);
+	w->spanmax = malloc(m * sizeof *w->spanmax);
+	w->sk = malloc(m * dim * sizeof *w->sk);
+	w->sseg = malloc(4 * dim * m * sizeof *w->sseg);
+	w->sfu = malloc(n * sizeof *w->sfu);
+	w->sfj = malloc(n * sizeof *w->sfj);
+	w->sfixed = malloc(m);
+	w->tried = malloc(m);
+	w->near = malloc(n);
+	w->stried = malloc(m);
+	w->sdist = malloc(n * sizeof *w->sdist);
+	return w->qbuf && w->sm && w->s && w->fj && w->fu && w->dist && w->k &&
+	    w->acc && w->wsum && w->fixed && w->corner && w->kidx && w->seg &&
+	    w->spanmax && w->pow && w->sk && w->sseg && w->sfu && w->sfj && w->sfixed &&
+	    w->tried && w->near && w->stried && w->sdist ? 0 : -1;
+}
+
+/* The checks of the points and the tolerance, before any work. */
+static int
+check_input(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, struct loft_error *err)
+{
+	size_t need = o->closed ? LOFT_APPROX_MIN_CLOSED : LOFT_APPROX_MIN_OPEN;
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM], far = 0, off = 0;
+	size_t b = 0;
+
+	if (dim < 2 || dim > LOFT_MAXDIM)
+		return loft_fail(err, LOFT_EINPUT, -1, "points have %d "
+		    "coordinates; 2 or 3 are needed", dim);
+	if (!(o->tol > 0) || !isfinite(o->tol))
+		return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g: want a "
+		    "positive number", o->tol);
+	if (n < need)
+		return loft_fail(err, LOFT_EGEOM, -1, "%zu point%s: %s "
+		    "approximation needs at least %zu", n, n == 1 ? "" : "s",
+		    o->closed ? "a closed" : "an open", need);
+	vcopy(lo, p, dim);
+	vcopy(hi, p, dim);
+	for (size_t i = 1; i < n; i++)
+		for (int c = 0; c < dim; c++) {
+			lo[c] = fmin(lo[c], p[i * dim + c]);
+			hi[c] = fmax(hi[c], p[i * dim + c]);
+		}
+	vsub(d, hi, lo, dim);
+	if (o->tol >= vnorm(d, dim) / 2)
+		return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g is larger "
+		    "than the outline: every point is within it of the middle "
+		    "of their box (half its diagonal is %g)", o->tol,
+		    vnorm(d, dim) / 2);
+	for (size_t i = 1; i < n; i++)
+		if (vdist(p + i * dim, p, dim) > far) {
+			far = vdist(p + i * dim, p, dim);
+			b = i;
+		}
+	/* the distance of each point from the line p[0] p[b] */
+	vsub(d, p + b * dim, p, dim);
+	vunit(d, dim);
+	for (size_t i = 0; i < n; i++) {
+		double r[LOFT_MAXDIM];
+
+		vsub(r, p + i * dim, p, dim);
+		vaxpy(r, -vdot(r, d, dim), d, dim);
+		off = fmax(off, vnorm(r, dim));
+	}
+	if (!(off > APPROX_LINE * far))
+		return loft_fail(err, LOFT_EGEOM, -1, "the points all lie on a "
+		    "line: no outline to approximate");
+	return 0;
+}
+
+/* Where a closed outline starts: its first corner, else its
+ * lexicographically least point (the same wherever the input starts). */
+static size_t
+start_point(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim)
+{
+	size_t a = 0;
+
+	if (!o->closed)
+		return 0;
+	if (o->ncorner > 0)
+		return o->corner[0];
+	for (size_t i = 1; i < n; i++)
+		for (int c = 0; c < dim; c++) {
+			double x = p[i * dim + c], y = p[a * dim + c];
+
+			if (x != y) {
+				if (x < y)
+					a = i;
+				break;
+			}
+		}
+	return a;
+}
+
+/* The moving average of the points, and the length along it to each
+ * point (s[n]: the whole, round the closing chord when closed). */
+static int
+smooth(struct work *w)
+{
+	size_t n = w->n, hw = (size_t)(APPROX_SMOOTH * n);
+	int dim = w->dim;
+	double *pre = malloc((n + 1) * dim * sizeof *pre);
+
+	if (pre == NULL)
+		return -1;
+	/* pre[i]: the sum of the first i points */
+	memset(pre, 0, dim * sizeof *pre);
+	for (size_t i = 0; i < n; i++)
+		for (int c = 0; c < dim; c++)
+			pre[(i + 1) * dim + c] = pre[i * dim + c] +
+			    w->q[i * dim + c];
+	for (size_t i = 0; i < n; i++) {
+		size_t h = hw;
+
+		if (!w->closed) {
+			h = i < h ? i : h;
+			h = n - 1 - i < h ? n - 1 - i : h;
+		}
+		if (h > (n - 1) / 2)
+			h = (n - 1) / 2;
+		for (int c = 0; c < dim; c++) {
+			/* points i - h .. i + h, round the end when closed */
+			double sum;
+			size_t lo = (i + n - h) % n, hi = (i + h) % n;
+
+			if (lo <= hi)
+				sum = pre[(hi + 1) * dim + c] - pre[lo * dim + c];
+			else
+				sum = pre[n * dim + c] - pre[lo * dim + c] +
+				    pre[(hi + 1) * dim + c];
+			w->sm[i * dim + c] = sum / (2 * h + 1);
+		}
+	}
+	free(pre);
+	w->s[0] = 0;
+	for (size_t i = 1; i <= n; i++)
+		w->s[i] = w->s[i - 1] + (i < n || w->closed ?
+		    vdist(w->sm + (i % n) * dim, w->sm + (i - 1) * dim, dim) : 0);
+	return 0;
+}
+
+/* The count of spans. */
+static size_t
+nseg_of(const struct work *w)
+{
+	return w->closed ? w->m : w->m - 1;
+}
+
+/* Add knot at point i (a corner: the point itself, fixed). */
+static void
+add_knot(struct work *w, size_t i, int corner)
+{
+	size_t j = w->m++;
+
+	w->kidx[j] = i;
+	w->fixed[j] = (unsigned char)corner;
+	vcopy(w->k + j * w->dim, (corner ? w->q : w->sm) + i * w->dim, w->dim);
+	if (corner)
+		w->corner[w->nc++] = j;
+}
+
+/*
+ * The first knots: the corners (and the ends of an open outline), and
+ * between each two of them spans of even length along the average, as
+ * many as their share of APPROX_START_SPANS, two at least where there
+ * are points enough (a closed curve needs three knots).  The feet of
+ * the points: their span, and u by length along the average.
+ */
+static void
+first_knots(struct work *w, const size_t *corner, size_t ncorner)
+{
+	size_t n = w->n, nb = 0, *br = w->fj;   /* fj as scratch */
+	double total = w->s[n];
+
+	w->m = w->nc = 0;
+	if (w->closed && ncorner == 0)
+		br[nb++] = 0;
+	if (!w->closed && (ncorner == 0 || corner[0] != 0))
+		br[nb++] = 0;
+	for (size_t c = 0; c < ncorner; c++)
+		br[nb++] = corner[c];
+	if (!w->closed && br[nb - 1] != n - 1)
+		br[nb++] = n - 1;
+	if (w->closed)
+		br[nb] = n;
+	for (size_t b = 0; b < nb - !w->closed; b++) {
+		size_t i0 = br[b], i1 = br[b + 1], spans, last = i0;
+		double len = w->s[i1] - w->s[i0];
+		int corner_here = ncorner > 0 && (w->closed || b > 0 ||
+		    corner[0] == 0);
+
+		add_knot(w, i0, corner_here);
+		spans = (size_t)(APPROX_START_SPANS * len / total + 0.5);
+		if (spans < 2)
+			spans = i1 - i0 >= 2 ? 2 : 1;
+		for (size_t t = 1, i = i0; t < spans; t++) {
+			double at = w->s[i0] + len * t / spans;
+
+			while (i < i1 && w->s[i + 1] <= at)
+				i++;
+			if (i > last && i < i1)
+				add_knot(w, last = i, 0);
+		}
+	}
+	if (!w->closed)
+		add_knot(w, n - 1, ncorner > 0 && corner[ncorner - 1] == n - 1);
+	for (size_t j = 0; j < nseg_of(w); j++) {
+		size_t a = w->kidx[j], b = j + 1 < w->m ? w->kidx[j + 1] : n;
+		double len = w->s[b] - w->s[a];
+
+		for (size_t i = a; i < b; i++) {
+			w->fj[i] = j;
+			w->fu[i] = len > 0 ? (w->s[i] - w->s[a]) / len : 0;
+		}
+	}
+	if (!w->closed) {
+		w->fj[n - 1] = w->m - 2;
+		w->fu[n - 1] = 1;
+	}
+}
+
+/* The point of span j at u, and its first two derivatives (unless
+ * d1 is NULL), from the powers of u. */
+static inline void
+span_eval(const struct work *w, size_t j, double u, double *p, double *d1,
+    double *d2)
+{
+	int d = w->dim;
+	const double *c = w->pow + j * 4 * d;
+
+	for (int k = 0; k < d; k++) {
+		double c1 = c[d + k], c2 = c[2 * d + k], c3 = c[3 * d + k];
+
+		p[k] = c[k] + u * (c1 + u * (c2 + u * c3));
+		if (d1 != NULL) {
+			d1[k] = c1 + u * (2 * c2 + 3 * u * c3);
+			d2[k] = 2 * c2 + 6 * u * c3;
+		}
+	}
+}
+
+/*
+ * Move the foot (*j, *u) of x by Newton's method on (C(u) - x).C'(u)
+ * to the nearest point of the curve near it, passing from span to span;
+ * returns the distance.
+ */
+static double
+project(const struct work *w, const double *x, size_t *j, double *u)
+{
+	int dim = w->dim;
+	size_t jj = *j, ns = nseg_of(w);
+	double uu = *u, p[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+	double r[LOFT_MAXDIM], done = APPROX_FOOT * w->tol;
+
+	for (int it = 0; it < APPROX_NEWTON; it++) {
+		double f, v, fp, du;
+
+		span_eval(w, jj, uu, p, d1, d2);
+		vsub(r, p, x, dim);
+		f = vdot(d1, r, dim);
+		v = vdot(d1, d1, dim);
+		fp = v + vdot(d2, r, dim);
+		if (!(fp > 0))
+			fp = v;
+		if (!(fp > 0))
+			break;
+		du = -f / fp;
+		if (du > APPROX_MAXSTEP)
+			du = APPROX_MAXSTEP;
+		else if (du < -APPROX_MAXSTEP)
+			du = -APPROX_MAXSTEP;
+		uu += du;
+		if (uu < 0) {
+			if (jj > 0 || w->closed) {
+				jj = jj > 0 ? jj - 1 : ns - 1;
+				uu += 1;
+			} else {
+				uu = 0;
+			}
+		} else if (uu > 1) {
+			if (jj + 1 < ns || w->closed) {
+				jj = jj + 1 < ns ? jj + 1 : 0;
+				uu -= 1;
+			} else {
+				uu = 1;
+			}
+		}
+		if (du * du * v < done * done)
+			break;
+	}
+	span_eval(w, jj, uu, p, NULL, NULL);
+	*j = jj;
+	*u = uu;
+	return vdist(p, x, dim);
+}
+
+/* The spans of the curve in powers of u, for projecting. */
+static void
+powers(struct work *w)
+{
+	for (size_t j = 0; j < nseg_of(w); j++) {
+		const double *g = w->seg + j * 4 * w->dim;
+		double *c = w->pow + j * 4 * w->dim;
+
+		for (int k = 0, d = w->dim; k < d; k++) {
+			double pa = g[k], pb = g[d + k], da = g[2 * d + k];
+			double db = g[3 * d + k];
+
+			c[k] = pa;
+			c[d + k] = da;
+			c[2 * d + k] = 3 * (pb - pa) - 2 * da - db;
+			c[3 * d + k] = 2 * (pa - pb) + da + db;
+		}
+	}
+}
+
+/* The curve through the knots. */
+static int
+fit_curve(struct work *w, struct loft_error *err)
+{
+	struct loft_fit_opts fo = w->fit;
+	struct loft_error ferr;
+
+	fo.corner = w->nc > 0 ? w->corner : NULL;
+	fo.ncorner = w->nc;
+	if (loft_fit(&fo, w->k, w->m, w->dim, w->seg, NULL, &ferr) != 0)
+		return loft_fail(err, LOFT_EGEOM, -1, "the curve through %zu "
+		    "knots fails: %s", w->m, ferr.msg);
+	powers(w);
+	return 0;
+}
+
+/* Fit the curve through the knots and project every point onto it;
+ * the largest distance into *worst (its point *at). */
+static int
+fit_project(struct work *w, double *worst, size_t *at, struct loft_error *err)
+{
+	size_t ns = nseg_of(w);
+
+	if (fit_curve(w, err) != 0)
+		return LOFT_EGEOM;
+	*worst = 0;
+	*at = 0;
+	for (size_t j = 0; j < ns; j++)
+		w->spanmax[j] = 0;
+	for (size_t i = 0; i < w->n; i++) {
+		double d = project(w, w->q + i * w->dim, &w->fj[i], &w->fu[i]);
+
+		if (!isfinite(d))
+			return loft_fail(err, LOFT_EGEOM, -1, "the curve through "
+			    "%zu knots overflows", w->m);
+		w->dist[i] = d;
+		if (d > w->spanmax[w->fj[i]])
+			w->spanmax[w->fj[i]] = d;
+		if (d > *worst) {
+			*worst = d;
+			*at = i;
+		}
+	}
+	return 0;
+}
+
+/* One sweep: each free knot moves by the hat-weighted mean residual of
+ * the points on its spans.  Returns the largest move. */
+static double
+correct(struct work *w)
+{
+	int dim = w->dim;
+	size_t m = w->m;
+	double big = 0;
+
+	memset(w->acc, 0, m * dim * sizeof *w->acc);
+	memset(w->wsum, 0, m * sizeof *w->wsum);
+	for (size_t i = 0; i < w->n; i++) {
+		size_t a = w->fj[i], b = a + 1 < m ? a + 1 : 0;
+		double p[LOFT_MAXDIM], r[LOFT_MAXDIM], u = w->fu[i];
+
+		span_eval(w, a, u, p, NULL, NULL);
+		vsub(r, w->q + i * dim, p, dim);
+		vaxpy(w->acc + a * dim, 1 - u, r, dim);
+		vaxpy(w->acc + b * dim, u, r, dim);
+		w->wsum[a] += 1 - u;
+		w->wsum[b] += u;
+	}
+	for (size_t j = 0; j < m; j++) {
+		double d[LOFT_MAXDIM];
+
+		if (w->fixed[j] || !(w->wsum[j] > 0))
+			continue;
+		vscale(d, 1 / w->wsum[j], w->acc + j * dim, dim);
+		vaxpy(w->k + j * dim, 1, d, dim);
+		big = fmax(big, vnorm(d, dim));
+	}
+	return big;
+}
+
+/*
+ * Split every span with a point farther than the tolerance (only ==
+ * ALL_SPANS) or span only, where it has at least APPROX_SPLIT_MIN
+ * points, at its middle, while the knots number at most the points.
+ * Returns how many were split.
+ */
+#define ALL_SPANS ((size_t)-1)
+static size_t
+split(struct work *w, size_t only)
+{
+	int dim = w->dim;
+	size_t ns = nseg_of(w), *count = w->kidx, add = 0, *to = w->corner;
+	double *kn = w->acc;    /* the new knots, in the sums' room */
+	unsigned char *fx = (unsigned char *)w->wsum;
+
+	memset(count, 0, ns * sizeof *count);
+	for (size_t i = 0; i < w->n; i++)
+		count[w->fj[i]]++;
+	for (size_t j = 0; j < ns; j++) {
+		count[j] = (only == j || (only == ALL_SPANS &&
+		    w->spanmax[j] > w->tol)) &&
+		    count[j] >= APPROX_SPLIT_MIN && w->m + add < w->n;
+		add += count[j];
+	}
+	if (add == 0)
+		return 0;
+	/* knots and their flags, the new after the span's first; to[j]: where
+	 * knot j goes */
+	for (size_t j = 0, t = 0; j < w->m; j++) {
+		vcopy(kn + t * dim, w->k + j * dim, dim);
+		fx[t] = w->fixed[j];
+		to[j] = t++;
+		if (j < ns && count[j]) {
+			loft_cubic_eval(w->seg + j * 4 * dim, dim, 0.5,
+			    kn + t * dim, NULL, NULL);
+			fx[t++] = 0;
+		}
+	}
+	for (size_t i = 0; i < w->n; i++) {
+		size_t j = w->fj[i];
+
+		if (count[j]) {
+			w->fj[i] = to[j] + (w->fu[i] >= 0.5);
+			w->fu[i] = w->fu[i] >= 0.5 ? 2 * w->fu[i] - 1 :
+			    2 * w->fu[i];
+		} else {
+			w->fj[i] = to[j];
+		}
+	}
+	w->m += add;
+	memcpy(w->k, kn, w->m * dim * sizeof *w->k);
+	memcpy(w->fixed, fx, w->m);
+	w->nc = 0;
+	for (size_t j = 0; j < w->m; j++)
+		if (w->fixed[j])
+			w->corner[w->nc++] = j;
+	return add;
+}
+
+/* Whether span j is within APPROX_WINDOW spans of span c. */
+static int
+in_window(const struct work *w, size_t j, size_t c)
+{
+	size_t ns = nseg_of(w), d = j >= c ? j - c : c - j;
+
+	if (w->closed && ns - d < d)
+		d = ns - d;
+	return d <= APPROX_WINDOW;
+}
+
+/* Remove knot r (free, not an end), its two spans merged into one;
+ * returns the merged span. */
+static size_t
+remove_knot(struct work *w, size_t r)
+{
+	int dim = w->dim;
+	size_t m = w->m, before = r > 0 ? r - 1 : m - 1;
+	size_t merged = r > 0 ? r - 1 : m - 2;
+
+	for (size_t i = 0; i < w->n; i++) {
+		size_t j = w->fj[i];
+
+		if (j == before) {
+			w->fj[i] = merged;
+			w->fu[i] /= 2;
+		} else if (j == r) {
+			w->fj[i] = merged;
+			w->fu[i] = 0.5 + w->fu[i] / 2;
+		} else {
+			w->fj[i] = j > r ? j - 1 : j;
+		}
+	}
+	memmove(w->k + r * dim, w->k + (r + 1) * dim,
+	    (m - r - 1) * dim * sizeof *w->k);
+	memmove(w->fixed + r, w->fixed + r + 1, m - r - 1);
+	memmove(w->tried + r, w->tried + r + 1, m - r - 1);
+	w->m--;
+	w->nc = 0;
+	for (size_t j = 0; j < w->m; j++)
+		if (w->fixed[j])
+			w->corner[w->nc++] = j;
+	return merged;
+}
+
+/*
+ * The sweeps of a try, on the points marked near (those of the spans
+ * within APPROX_WINDOW of span c), moving the knots between those
+ * spans; returns the largest distance of those points after, or
+ * HUGE_VAL when the fit fails, and the sum of their squares in *ss.
+ */
+static double
+local_sweeps(struct work *w, size_t c, double *ss)
+{
+	int dim = w->dim;
+	size_t m = w->m;
+	double worst = 0;
+	struct loft_error err;
+
+	if (fit_curve(w, &err) != 0)
+		return HUGE_VAL;
+	for (int s = 0; s <= APPROX_TRY_SWEEPS; s++) {
+		memset(w->acc, 0, m * dim * sizeof *w->acc);
+		memset(w->wsum, 0, m * sizeof *w->wsum);
+		worst = 0;
+		*ss = 0;
+		for (size_t i = 0; i < w->n; i++) {
+			size_t a, b;
+			double p[LOFT_MAXDIM], r[LOFT_MAXDIM], u, d;
+
+			if (!w->near[i])
+				continue;
+			d = project(w, w->q + i * dim, &w->fj[i], &w->fu[i]);
+			worst = fmax(worst, d);
+			*ss += d * d;
+			a = w->fj[i], b = a + 1 < m ? a + 1 : 0, u = w->fu[i];
+			span_eval(w, a, u, p, NULL, NULL);
+			vsub(r, w->q + i * dim, p, dim);
+			vaxpy(w->acc + a * dim, 1 - u, r, dim);
+			vaxpy(w->acc + b * dim, u, r, dim);
+			w->wsum[a] += 1 - u;
+			w->wsum[b] += u;
+		}
+		if (s == APPROX_TRY_SWEEPS || !(worst <= HUGE_VAL))
+			break;
+		for (size_t j = 0; j < m; j++) {
+			/* knot j joins spans j - 1 and j */
+			size_t prev = j > 0 ? j - 1 : nseg_of(w) - 1;
+
+			if (w->fixed[j] || !(w->wsum[j] > 0) ||
+			    (!w->closed && (j == 0 || j == m - 1)) ||
+			    !in_window(w, j, c) || !in_window(w, prev, c))
+				continue;
+			vaxpy(w->k + j * dim, 1 / w->wsum[j], w->acc + j * dim,
+			    dim);
+		}
+		if (fit_curve(w, &err) != 0)
+			return HUGE_VAL;
+	}
+	return worst;
+}
+
+/* The largest distance on each span, from the points' feet. */
+static void
+span_max(struct work *w)
+{
+	for (size_t j = 0; j < nseg_of(w); j++)
+		w->spanmax[j] = 0;
+	for (size_t i = 0; i < w->n; i++)
+		if (w->dist[i] > w->spanmax[w->fj[i]])
+			w->spanmax[w->fj[i]] = w->dist[i];
+}
+
+/* Whether knot j may be removed: free, not an end, and more left than
+ * a curve needs (one more, to keep room to bend). */
+static int
+removable(const struct work *w, size_t j)
+{
+	size_t mins = w->closed ? LOFT_MIN_CLOSED + 1 : LOFT_MIN_OPEN + 1;
+
+	return w->m > mins && !w->fixed[j] &&
+	    (w->closed || (j > 0 && j + 1 < w->m));
+}
+
+static void
+save_state(struct work *w)
+{
+	int dim = w->dim;
+
+	memcpy(w->sk, w->k, w->m * dim * sizeof *w->k);
+	memcpy(w->sseg, w->seg, 4 * dim * nseg_of(w) * sizeof *w->seg);
+	memcpy(w->sfixed, w->fixed, w->m);
+	memcpy(w->stried, w->tried, w->m);
+	memcpy(w->sfj, w->fj, w->n * sizeof *w->fj);
+	memcpy(w->sfu, w->fu, w->n * sizeof *w->fu);
+	memcpy(w->sdist, w->dist, w->n * sizeof *w->dist);
+	w->sm0 = w->m;
+}
+
+static void
+restore_state(struct work *w)
+{
+	int dim = w->dim;
+
+	w->m = w->sm0;
+	memcpy(w->k, w->sk, w->m * dim * sizeof *w->k);
+	memcpy(w->seg, w->sseg, 4 * dim * nseg_of(w) * sizeof *w->seg);
+	memcpy(w->fixed, w->sfixed, w->m);
+	memcpy(w->tried, w->stried, w->m);
+	memcpy(w->fj, w->sfj, w->n * sizeof *w->fj);
+	memcpy(w->fu, w->sfu, w->n * sizeof *w->fu);
+	memcpy(w->dist, w->sdist, w->n * sizeof *w->dist);
+	powers(w);
+	w->nc = 0;
+	for (size_t j = 0; j < w->m; j++)
+		if (w->fixed[j])
+			w->corner[w->nc++] = j;
+}
+
+/*
+ * Remove knot r (the state saved first) and settle the knots near it:
+ * returns the largest distance of the points near it after (HUGE_VAL
+ * when the fit fails) and how much the sum of their squares grew in
+ * *grow.  The caller keeps it, or restores the state.
+ */
+static double
+try_remove(struct work *w, size_t r, double *grow)
+{
+	size_t c;
+	double before = 0, after = 0, d;
+
+	save_state(w);
+	c = remove_knot(w, r);
+	for (size_t i = 0; i < w->n; i++) {
+		w->near[i] = (unsigned char)in_window(w, w->fj[i], c);
+		if (w->near[i])
+			before += w->dist[i] * w->dist[i];
+	}
+	d = local_sweeps(w, c, &after);
+	*grow = after - before;
+	return d;
+}
+
+/* A try kept: the distances of the points near it, and the spans'. */
+static void
+keep_try(struct work *w)
+{
+	for (size_t i = 0; i < w->n; i++)
+		if (w->near[i])
+			w->dist[i] = project(w, w->q + i * w->dim, &w->fj[i],
+			    &w->fu[i]);
+	span_max(w);
+}
+
+/*
+ * Once the tolerance is met: try removing each free knot, those whose
+ * spans have the most room first (the least largest distance), and
+ * keep each removal after which the points near it are still within the
+ * tolerance and fit nearly as well (APPROX_NEED).
+ */
+static void
+remove_knots(struct work *w)
+{
+	double var = 0;
+
+	for (size_t i = 0; i < w->n; i++)
+		var += w->dist[i] * w->dist[i];
+	var /= w->n;
+	memset(w->tried, 0, w->m);
+	for (;;) {
+		size_t best = w->m, ns = nseg_of(w);
+		double room = HUGE_VAL, grow, d;
+
+		for (size_t j = 0; j < w->m; j++) {
+			size_t prev = j > 0 ? j - 1 : ns - 1;
+
+			if (w->tried[j] || !removable(w, j))
+				continue;
+			d = fmax(w->spanmax[prev], w->spanmax[j]);
+			if (d < room) {
+				room = d;
+				best = j;
+			}
+		}
+		if (best == w->m)
+			return;
+		w->tried[best] = 1;
+		d = try_remove(w, best, &grow);
+		if (d <= w->tol && grow < APPROX_NEED * var)
+			keep_try(w);
+		else
+			restore_state(w);
+	}
+}
+
+/* The turn at sample t of the plane curve (APPROX_KSAMPLES a span, at
+ * the middles of equal parts): the curvature times the length of the
+ * part, in *x; returns its sign, 0 where the curvature times the
+ * length of the curve is below APPROX_FLAT. */
+static int
+sample_turn(const struct work *w, size_t t, double *x)
+{
+	size_t ns = nseg_of(w);
+	double p[2], d1[2], d2[2], v, k;
+	double u = ((t % APPROX_KSAMPLES) + 0.5) / APPROX_KSAMPLES;
+
+	span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
+	v = hypot(d1[0], d1[1]);
+	*x = 0;
+	if (!(v > 0))
+		return 0;
+	k = (d1[0] * d2[1] - d1[1] * d2[0]) / (v * v * v);
+	*x = k * v / APPROX_KSAMPLES;
+	if (!(fabs(*x) * ns > APPROX_FLAT))
+		return 0;
+	return k > 0 ? 1 : -1;
+}
+
+/*
+ * The sign changes of the curvature of a plane curve (its inflexions),
+ * returned, and its weakest wiggle: the run of one sign between two
+ * changes whose turn (the integral of the curvature along it) is least,
+ * below APPROX_WIGGLE and above floor: its spans *ja to *jb (cyclically
+ * on a closed curve) and its turn *turn, HUGE_VAL when there is none.
+ */
+static size_t
+wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
+    double *turn)
+{
+	size_t total = nseg_of(w) * APPROX_KSAMPLES, t0 = 0, start, changes = 0;
+	int sign = 0, last = 0;
+	double sum = 0, x;
+
+	*turn = HUGE_VAL;
+	if (w->closed) {
+		/* start at a change, so that every run lies between two */
+		for (size_t t = 0; t < total; t++) {
+			int sg = sample_turn(w, t, &x);
+
+			last = sg ? sg : last;
+		}
+		for (; t0 < total; t0++) {
+			int sg = sample_turn(w, t0, &x);
+
+			if (sg && sg != last)
+				break;
+			last = sg ? sg : last;
+		}
+		if (t0 == total)
+			return 0;
+	}
+	start = t0;
+	for (size_t i = 0; i <= total; i++) {
+		size_t t = (t0 + i) % total;
+		int sg = i < total ? sample_turn(w, t, &x) : 0;
+
+		if (i < total && (sg == 0 || sg == sign || sign == 0)) {
+			sign = sign ? sign : sg;
+			sum += x;
+			continue;
+		}
+		/* a run from start to t ends; an open curve's first and last
+		 * have no change beyond them */
+		if ((w->closed || (start != 0 && i < total)) &&
+		    fabs(sum) < APPROX_WIGGLE && fabs(sum) > floor &&
+		    fabs(sum) < *turn) {
+			*turn = fabs(sum);
+			*ja = start / APPROX_KSAMPLES;
+			*jb = ((t + total - 1) % total) / APPROX_KSAMPLES;
+		}
+		if (i < total || w->closed)
+			changes++;
+		start = t;
+		sign = sg;
+		sum = x;
+	}
+	return changes;
+}
+
+/*
+ * A removal that straightened a wiggle but left points near it beyond
+ * the tolerance: split the span nearby with the farthest point instead,
+ * settle the knots near it, and keep that if every point is within the
+ * tolerance and the inflexions are still fewer than changes.
+ */
+static int
+relocate(struct work *w, size_t changes)
+{
+	size_t ja, jb;
+	double turn, ss;
+
+	keep_try(w);
+	for (int t = 0; t < APPROX_RELOCATE; t++) {
+		size_t worst = ALL_SPANS;
+		double far = 0;
+		int over = 0;
+
+		for (size_t i = 0; i < w->n; i++)
+			if (w->near[i] && w->spanmax[w->fj[i]] > far) {
+				far = w->spanmax[w->fj[i]];
+				worst = w->fj[i];
+			}
+		if (worst == ALL_SPANS || split(w, worst) == 0)
+			return 0;
+		for (size_t i = 0; i < w->n; i++)
+			w->near[i] = (unsigned char)in_window(w, w->fj[i], worst);
+		local_sweeps(w, worst, &ss);
+		for (size_t i = 0; i < w->n; i++)
+			w->dist[i] = project(w, w->q + i * w->dim, &w->fj[i],
+			    &w->fu[i]);
+		span_max(w);
+		for (size_t j = 0; j < nseg_of(w); j++)
+			over |= w->spanmax[j] > w->tol;
+		if (!over)
+			return wiggle(w, 0, &ja, &jb, &turn) < changes;
+		for (size_t i = 0; i < w->n; i++)
+			w->near[i] = (unsigned char)(w->dist[i] > w->tol);
+	}
+	return 0;
+}
+
+/*
+ * Straighten the wiggles: a stretch of curvature of the other sign
+ * between two inflexions that turns by less than APPROX_WIGGLE is
+ * noise a knot holds, not a shape the tolerance asks for.  For each,
+ * weakest first, remove the first knot on or next to it after which
+ * the points are within the tolerance and there are fewer inflexions.
+ */
+static void
+straighten(struct work *w)
+{
+	double floor = 0, turn, grow;
+	size_t ja, jb;
+
+	if (w->dim != 2)
+		return;
+	memset(w->tried, 0, w->m);
+	for (;;) {
+		size_t changes = wiggle(w, floor, &ja, &jb, &turn), m = w->m;
+		int done = 0;
+
+		if (turn == HUGE_VAL)
+			return;
+		for (size_t t = 0; t <= (jb + m - ja) % m + 1 && !done; t++) {
+			size_t r = (ja + t) % m;
+			size_t a2, b2;
+			double t2;
+
+			if (!removable(w, r))
+				continue;
+			if (try_remove(w, r, &grow) <= w->tol &&
+			    wiggle(w, 0, &a2, &b2, &t2) < changes) {
+				keep_try(w);
+				done = 1;
+			} else if (wiggle(w, 0, &a2, &b2, &t2) < changes &&
+			    relocate(w, changes)) {
+				done = 1;
+			} else {
+				restore_state(w);
+			}
+		}
+		if (!done)
+			floor = turn;
+	}
+}
+
+/* The segments into seg from the start of the input: a closed curve's
+ * rotated so the span of the input's first point comes first. */
+static void
+put_segments(const struct work *w, double *seg)
+{
+	size_t ns = nseg_of(w), row = 4 * w->dim, first = 0;
+
+	if (w->closed)
+		first = w->fj[(w->n - w->shift) % w->n];
+	for (size_t j = 0; j < ns; j++)
+		memcpy(seg + j * row, w->seg + ((j + first) % ns) * row,
+		    row * sizeof *seg);
+}
+
+void
+loft_approx_defaults(struct loft_approx_opts *o)
+{
+	memset(o, 0, sizeof *o);
+	o->closed = 1;
+	o->maxround = LOFT_APPROX_ROUNDS;
+}
+
+/* Correction sweeps until the knots settle (APPROX_SWEEPS at most). */
+static int
+settle(struct work *w, double *worst, size_t *at, struct loft_error *err)
+{
+	for (int s = 0; s < APPROX_SWEEPS; s++) {
+		double move = correct(w);
+
+		if (fit_project(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+		if (move < APPROX_SETTLED * w->tol)
+			break;
+	}
+	return 0;
+}
+
+static int
+approx_run(struct work *w, const struct loft_approx_opts *o,
+    const size_t *corner, struct loft_approx_info *info,
+    struct loft_error *err)
+{
+	double worst;
+	size_t at;
+	int round, removed = 0;
+
+	if (smooth(w) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	first_knots(w, corner, o->ncorner);
+	if (fit_project(w, &worst, &at, err) != 0)
+		return LOFT_EGEOM;
+	for (round = 1;; round++) {
+		if (settle(w, &worst, &at, err) != 0)
+			return LOFT_EGEOM;
+		if (worst <= w->tol && !removed) {
+			removed = 1;
+			if (w->m <= APPROX_REMOVE_MAX) {
+				remove_knots(w);
+				straighten(w);
+			}
+			if (fit_project(w, &worst, &at, err) != 0 ||
+			    settle(w, &worst, &at, err) != 0)
+				return LOFT_EGEOM;
+		}
+		if (worst <= w->tol || round >= o->maxround || split(w, ALL_SPANS) == 0)
+			break;
+		if (fit_project(w, &worst, &at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	info->nknots = w->m;
+	info->nseg = nseg_of(w);
+	info->dist = worst;
+	info->where = (at + w->shift) % w->n;
+	info->rounds = round;
+	if (worst > w->tol)
+		return loft_fail(err, LOFT_ENOCONV, (long)info->where,
+		    "tolerance %g not met: the largest distance reached is "
+		    "%g, from point %zu, with %zu knots after %d round%s of "
+		    "splitting%s", o->tol, ldexp(worst, w->e), info->where + 1,
+		    w->m, round,
+		    round == 1 ? "" : "s", round >= o->maxround ? "" :
+		    " (no span left to split)");
+	return 0;
+}
+
+int
+loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_approx_info *info,
+    struct loft_error *err)
+{
+	struct work w = { 0 };
+	struct loft_approx_info dummy;
+	size_t *corner = NULL;
+	double big = 0;
+	int rc, e;
+
+	if (info == NULL)
+		info = &dummy;
+	memset(info, 0, sizeof *info);
+	if ((rc = check_input(o, p, n, dim, err)) != 0)
+		return rc;
+	w.dim = dim;
+	w.closed = o->closed;
+	w.n = n;
+	/* the points scaled by a power of two (exactly) into the unit box,
+	 * so that no square of a distance overflows or underflows */
+	for (size_t i = 0; i < n; i++)
+		big = fmax(big, vmaxabs(p + i * dim, dim));
+	e = w.e = ilogb(big);
+	w.tol = ldexp(o->tol, -e);
+	loft_fit_defaults(&w.fit);
+	w.fit.method = LOFT_FAIR;
+	w.fit.closed = o->closed;
+	w.fit.have_start = !o->closed && o->have_start;
+	w.fit.have_end = !o->closed && o->have_end;
+	vcopy(w.fit.start, o->start, dim);
+	vcopy(w.fit.end, o->end, dim);
+	if (work_alloc(&w, n, dim) != 0 ||
+	    (corner = malloc((o->ncorner + 1) * sizeof *corner)) == NULL) {
+		work_free(&w);
+		free(corner);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	w.shift = start_point(o, p, n, dim);
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < dim; k++)
+			w.qbuf[i * dim + k] = ldexp(p[((i + w.shift) % n) * dim +
+			    k], -e);
+	w.q = w.qbuf;
+	for (size_t c = 0; c < o->ncorner; c++)
+		corner[c] = (o->corner[c] + n - w.shift) % n;
+	rc = approx_run(&w, o, corner, info, err);
+	info->dist = ldexp(info->dist, e);
+	if (rc == 0) {
+		put_segments(&w, seg);
+		for (size_t i = 0; i < 4 * dim * info->nseg; i++)
+			seg[i] = ldexp(seg[i], e);
+	} else {
+		info->nseg = 0;
+	}
+	free(corner);
+	work_free(&w);
+	return rc;
+}
