@@ -279,25 +279,26 @@ joint(const struct loft_bcurve *c, size_t j, int exact)
 }
 
 /*
- * The points of the joints the record's corners= names, into *out
- * (malloc'd, c->dim numbers each, *n of them; NULL and 0 when it has
- * none): joint j from 1 to c->npieces, and on an open curve its end,
- * npieces + 1; in increasing order.  Returns 0, LOFT_EINPUT or
+ * The points the record's corners= names, into *out (malloc'd, dim
+ * numbers each, *n of them; NULL and 0 when it has none): numbers from 1
+ * to max in increasing order, what (from 1 to max, "joint" or "knot"
+ * for the message), point k at at(src, k).  Returns 0, LOFT_EINPUT or
  * LOFT_ENOMEM.
  */
 static int
-corner_points(const struct loft_record *rec, const struct loft_bcurve *c,
-    int exact, double **out, size_t *n, struct loft_error *err)
+corner_points(const struct loft_record *rec, size_t max, int dim,
+    const char *what, const double *(*at)(const void *, size_t),
+    const void *src, double **out, size_t *n, struct loft_error *err)
 {
 	const char *v = loft_attr(rec, "corners"), *s = v;
-	size_t max = c->closed ? c->npieces : c->npieces + 1, last = 0;
+	size_t last = 0;
 	double *p;
 
 	*out = NULL;
 	*n = 0;
 	if (v == NULL)
 		return 0;
-	if ((p = malloc((strlen(v) / 2 + 1) * (size_t)c->dim * sizeof *p)) ==
+	if ((p = malloc((strlen(v) / 2 + 1) * (size_t)dim * sizeof *p)) ==
 	    NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	for (;;) {
@@ -309,11 +310,12 @@ corner_points(const struct loft_record *rec, const struct loft_bcurve *c,
 		if (len == 0 || i < len || j < 1 || j > max || j <= last) {
 			free(p);
 			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
-			    "corners=%s: want joint numbers from 1 to %zu in "
-			    "increasing order, separated by commas", v, max);
+			    "corners=%s: want %s numbers from 1 to %zu in "
+			    "increasing order, separated by commas", v, what,
+			    max);
 		}
-		memcpy(p + *n * (size_t)c->dim, joint(c, j, exact),
-		    (size_t)c->dim * sizeof *p);
+		memcpy(p + *n * (size_t)dim, at(src, j), (size_t)dim *
+		    sizeof *p);
 		++*n;
 		last = j;
 		if (s[len] == '\0')
@@ -322,6 +324,30 @@ corner_points(const struct loft_record *rec, const struct loft_bcurve *c,
 	}
 	*out = p;
 	return 0;
+}
+
+/* A curve's joint j (corner_points' at): of its polyline or its exact
+ * form, as corner_points' caller chose. */
+struct joints {
+	const struct loft_bcurve *c;
+	int exact;
+};
+
+static const double *
+joint_at(const void *src, size_t j)
+{
+	const struct joints *js = src;
+
+	return joint(js->c, j, js->exact);
+}
+
+/* A knot record's row k (from 1; corner_points' at). */
+static const double *
+knot_at(const void *src, size_t k)
+{
+	const struct loft_record *rec = src;
+
+	return rec->num + (k - 1) * (size_t)rec->ncols;
 }
 
 /* ---- records -------------------------------------------------------- */
@@ -391,7 +417,9 @@ add_points(struct loft_cad_doc *d, const struct loft_record *rec,
 {
 	struct loft_cad_item it;
 	char name[128];
-	double box[6];
+	double box[6], *turn = NULL;
+	size_t nturn = 0;
+	int rc;
 
 	if (d->f->points == NULL)
 		return cannot(d, "point", "a set of knots, no curve (fit one "
@@ -402,8 +430,15 @@ add_points(struct loft_cad_doc *d, const struct loft_record *rec,
 	if (item(d, rec, &it, name, sizeof name, rec->num, rec->nrows,
 	    rec->ncols, box, err) != 0)
 		return LOFT_EGEOM;
-	return end_item(d, begin_item(d, &it, box) ||
-	    d->f->points(d, rec->num, rec->nrows, rec->ncols));
+	/* knots named corners= (fromcad's turn points) are turn points */
+	if (d->f->turns != NULL && (rc = corner_points(rec, rec->nrows,
+	    rec->ncols, "knot", knot_at, rec, &turn, &nturn, err)) != 0)
+		return rc;
+	rc = begin_item(d, &it, box) ||
+	    d->f->points(d, rec->num, rec->nrows, rec->ncols) ||
+	    (nturn > 0 && d->f->turns(d, turn, nturn, rec->ncols));
+	free(turn);
+	return end_item(d, rc);
 }
 
 static int
@@ -417,6 +452,7 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	char name[128];
 	double box[6], *turn = NULL;
 	size_t np, nturn = 0;
+	struct joints js;
 	int rc, exact;
 
 	if (loft_curve_from_record(rec, &c, err) != 0)
@@ -442,7 +478,10 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	    err) != 0)
 		return LOFT_EGEOM;
 	exact = d->f->curve != NULL && (d->o.exact || d->f->polyline == NULL);
-	if (d->f->turns != NULL && (rc = corner_points(rec, &bc, exact,
+	js.c = &bc;
+	js.exact = exact;
+	if (d->f->turns != NULL && (rc = corner_points(rec, bc.closed ?
+	    bc.npieces : bc.npieces + 1, bc.dim, "joint", joint_at, &js,
 	    &turn, &nturn, err)) != 0)
 		return rc;
 	if (!exact && (rc = make_polyline(d, &s, &bc, it.tol, err)) != 0) {

@@ -267,6 +267,18 @@ for s in "" "-s"; do
 	    ok || no "dxf $s: turn points '$(dxf_turns - "$T/turn$s.dxf" | tr '\n' ,)', want the corner knots"
 done
 [ -z "$(dxf_turns -v "$T/turn.dxf")" ] && ok || no "dxf: turn points off the polyline's vertices"
+# knots that name corners (fromcad's D6673 boundaries): layer-3 POINTs
+# at every knot, and layer-2 turn points at knots 2 and 4, the knots'
+# own coordinates; a knot number past the record is refused
+printf 'points corners=2,4\n0 0\n40 0\n40 20\n0 20\n' >"$T/kturn.knots"
+run "$B/tocad -f dxf $T/kturn.knots"
+status 0
+[ "$(dxf_turns - "$T/out" | tr '\n' ,)" = "40 0,0 20," ] && ok ||
+    no "dxf of knots with corners=2,4: turn points '$(dxf_turns - "$T/out" | tr '\n' ,)', want 40 0 and 0 20"
+printf 'points corners=2,5\n0 0\n40 0\n40 20\n0 20\n' >"$T/kturn5.knots"
+run "$B/tocad -f dxf $T/kturn5.knots"
+status 1
+says "kturn5.knots:1: attribute corners=2,5: want knot numbers from 1 to 4 in increasing order, separated by commas"
 # a corners= that names no joint (of 2 pieces, open: 1 to 3), out of
 # order or not a number: a message each, the other records written
 printf 'cubic closed=0 corners=%s\n0 0 1 0 1 0 1 0\n1 0 1 1 0 1 0 1\n\n' 2 3 4 0 2,2 x >"$T/badturn"
