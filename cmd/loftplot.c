@@ -172,12 +172,14 @@ box_join(struct box *b, const struct box *c)
  * The view -v: a linear map of a point or vector of dim coordinates to
  * the plane (so it maps cubic pieces to cubic pieces).  iso is the
  * orthographic view from the direction (1, 1, 1): z up, x to the lower
- * left, y to the lower right.
+ * left, y to the lower right.  Coordinates beyond dim are 0 (a
+ * record's are 2 or 3; p[k] for k >= dim is not read).
  */
 static void
 project(enum view v, const double *p, int dim, double *q)
 {
-	double x = p[0], y = p[1], z = dim > 2 ? p[2] : 0;
+	double x = dim > 0 ? p[0] : 0, y = dim > 1 ? p[1] : 0,
+	    z = dim > 2 ? p[2] : 0;
 
 	switch (v) {
 	default: q[0] = x; q[1] = y; break;     /* V_XY */
@@ -230,6 +232,15 @@ struct extent {
 	struct box box;
 	double right[2];
 };
+
+/* No point seen yet. */
+static void
+extent_empty(struct extent *e)
+{
+	box_empty(&e->box);
+	e->right[0] = -HUGE_VAL;
+	e->right[1] = 0;
+}
 
 static void
 see(struct extent *e, const double *q)
@@ -810,7 +821,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	double mid[LOFT_MAXDIM], centre[2];
 	int rc, surface = 0, dim = pc->dim;
 
-	box_empty(&e.box);
+	extent_empty(&e);
 	pc->kmax = 0;           /* this record's own, for pc->rec */
 	if (loft_record_is(rec, LOFT_KIND_KNOTS)) {
 		if ((rc = draw_points(pc, rec, &e, err)) == 0)
@@ -868,7 +879,7 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 	size_t npt = pc->npt, nst = pc->nst;
 	struct extent e;
 
-	box_empty(&e.box);
+	extent_empty(&e);
 	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: -K reads "
 		    "knots (point records)", rec->type);

@@ -1,6 +1,7 @@
 /*
  * loftcad.h: loft's curves and surfaces written into CAD documents (DXF,
- * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1).
+ * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1), and loftplot(1)'s
+ * SVG picture.
  *
  * Every record is first put in exact Bezier form (bezform.c): a curve as
  * polynomial pieces of one degree, a surface as tensor-product Bezier
@@ -21,6 +22,12 @@
  * bezier record and a patch a bezier-surface that no longer names its
  * neighbours.  OBJ (obj.c) is also written record by record into a
  * program's stream writer (loft_cad_attach), as sample -f obj does.
+ *
+ * loftplot's picture (svgplot.c, loft_cad_svgplot) is a format outside
+ * loft_cad_formats: loftplot calls its callbacks itself, with points
+ * already projected to its view's plane; an item's style class, colour
+ * and width say how each record is drawn, and two callbacks only the
+ * picture sets, box and label, write the labels' grounds and texts.
  *
  * Conventions as in loft.h: caller-owned arrays, 0 or a LOFT_E* code,
  * and the library never prints.  The document is made in memory and
