@@ -1,7 +1,7 @@
 /*
  * svgplot.c: the SVG picture of loftplot(1), a format of loftcad.h's
- * writer interface: a frame of opts.frame, PICTURE_PX pixels on its
- * larger side, whatever the drawing's units; each record a path styled
+ * writer interface: a frame of opts.frame, opts.picture_px pixels on
+ * its larger side, whatever the drawing's units; each record a path styled
  * by its item's class (a comb's teeth faint, tangents dashed, markers
  * filled, control points hollow), in its colour and stroke width; then
  * the labels' grounds (box) and the labels (label) over everything.
