@@ -169,8 +169,8 @@ plot_begin(struct loft_cad_doc *d)
 	return 0;
 }
 
-/* Leave the group of the lines (for the labels' grounds), and with
- * labels 1, enter the group of the labels. */
+/* Go on to part of the picture: out of the group of the lines (for
+ * the labels' grounds), and for IN_LABELS into the group of the labels. */
 static void
 to_part(struct loft_cad_doc *d, enum part part)
 {
