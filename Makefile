@@ -35,7 +35,8 @@ CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
 LIBOBJ += bin/obj/approx.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
-          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o
+          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
+          bin/obj/svgplot.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)

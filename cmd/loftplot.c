@@ -11,23 +11,20 @@
  * of the good ones is written whole, and loftplot exits 1.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#include "loftprog.h"
+#include "loftcad.h"
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640
 /* Sizes in pixels of that picture, so that they do not depend on the
- * drawing's units: curve and thin strokes, knot marker radius, labels. */
-#define CURVE_PX 1.5
+ * drawing's units: thin strokes (curves are LOFT_PLOT_CURVE_PX, labels
+ * LOFT_PLOT_FONT_PX high, markers as svgplot.c draws them). */
 #define THIN_PX 0.6
 /* -t tangents: dashed, so heavier than the thin lines to be seen. */
 #define TANGENT_PX 1.1
-#define KNOT_PX 2.5
-#define FONT_PX 12
 /* An estimate of a label's advance per character, as a fraction of the
  * font size, generous for digits and signs in a sans-serif face. */
 #define CHAR_EM 0.62
@@ -48,13 +45,6 @@
  * sharp corner must not shrink the curve to a speck in a frame the comb
  * fills. */
 #define COMB_CAP 0.5
-/* Coordinates are written to this fraction of the picture's larger side,
- * 1/1600 of a pixel: below anything a screen or printer shows, yet short
- * text. */
-#define RESOLUTION 1e-6
-/* Decimals of a coordinate at most: the smallest subnormal, 4.9e-324,
- * at RESOLUTION of itself, needs 330. */
-#define MAX_DECIMALS 340
 
 /* Kinds of stroke, in the order they are drawn (later on top). */
 enum kind {
@@ -137,15 +127,6 @@ struct pic {
 	int failed;             /* out of memory */
 };
 
-/* The picture's text, built in memory and written at once. */
-struct doc {
-	char *buf;
-	size_t len, cap;
-	int bad;
-	int decimals;           /* of every coordinate */
-	double px;              /* one pixel in the drawing's units */
-};
-
 static const char usage_text[] =
     "usage: loftplot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
     "[-l key]\n            [-n steps] [-v xy|yz|xz|iso] [file ...]\n";
@@ -191,12 +172,14 @@ box_join(struct box *b, const struct box *c)
  * The view -v: a linear map of a point or vector of dim coordinates to
  * the plane (so it maps cubic pieces to cubic pieces).  iso is the
  * orthographic view from the direction (1, 1, 1): z up, x to the lower
- * left, y to the lower right.
+ * left, y to the lower right.  Coordinates beyond dim are 0 (a
+ * record's are 2 or 3; p[k] for k >= dim is not read).
  */
 static void
 project(enum view v, const double *p, int dim, double *q)
 {
-	double x = p[0], y = p[1], z = dim > 2 ? p[2] : 0;
+	double x = dim > 0 ? p[0] : 0, y = dim > 1 ? p[1] : 0,
+	    z = dim > 2 ? p[2] : 0;
 
 	switch (v) {
 	default: q[0] = x; q[1] = y; break;     /* V_XY */
@@ -209,30 +192,13 @@ project(enum view v, const double *p, int dim, double *q)
 	}
 }
 
-static int
-grow(void **buf, size_t *cap, size_t need, size_t sz)
-{
-	size_t n = *cap ? *cap : 64;
-	void *b;
-
-	if (need <= *cap)
-		return 0;
-	while (n < need)
-		n *= 2;
-	if ((b = realloc(*buf, n * sz)) == NULL)
-		return -1;
-	*buf = b;
-	*cap = n;
-	return 0;
-}
-
 /* Start a stroke of kind for the current record; NULL: out of memory. */
 static struct stroke *
 new_stroke(struct pic *pc, enum kind kind, int rec)
 {
 	struct stroke *s;
 
-	if (grow((void **)&pc->st, &pc->stcap, pc->nst + 1, sizeof *pc->st))
+	if (loft_grow((void **)&pc->st, &pc->stcap, pc->nst + 1, sizeof *pc->st))
 		return NULL;
 	s = &pc->st[pc->nst++];
 	s->kind = kind;
@@ -251,7 +217,7 @@ add_point(struct pic *pc, struct stroke *s, const double *q,
 	if (!isfinite(q[0]) || !isfinite(q[1]))
 		return loft_fail(err, LOFT_EGEOM, -1, "coordinates too large "
 		    "to draw");
-	if (grow((void **)&pc->pt, &pc->ptcap, pc->npt + 1, 2 * sizeof *pc->pt))
+	if (loft_grow((void **)&pc->pt, &pc->ptcap, pc->npt + 1, 2 * sizeof *pc->pt))
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	pc->pt[2 * pc->npt] = q[0];
 	pc->pt[2 * pc->npt + 1] = q[1];
@@ -266,6 +232,15 @@ struct extent {
 	struct box box;
 	double right[2];
 };
+
+/* No point seen yet. */
+static void
+extent_empty(struct extent *e)
+{
+	box_empty(&e->box);
+	e->right[0] = -HUGE_VAL;
+	e->right[1] = 0;
+}
 
 static void
 see(struct extent *e, const double *q)
@@ -792,7 +767,7 @@ add_label(struct pic *pc, const struct loft_record *rec,
 		snprintf(num, sizeof num, "%d", pc->nrec + 1);
 		v = num;
 	}
-	if (grow((void **)&pc->lb, &pc->lbcap, pc->nlb + 1, sizeof *pc->lb) ||
+	if (loft_grow((void **)&pc->lb, &pc->lbcap, pc->nlb + 1, sizeof *pc->lb) ||
 	    (pc->lb[pc->nlb].text = strdup(v)) == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	l = &pc->lb[pc->nlb++];
@@ -846,7 +821,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	double mid[LOFT_MAXDIM], centre[2];
 	int rc, surface = 0, dim = pc->dim;
 
-	box_empty(&e.box);
+	extent_empty(&e);
 	pc->kmax = 0;           /* this record's own, for pc->rec */
 	if (loft_record_is(rec, LOFT_KIND_KNOTS)) {
 		if ((rc = draw_points(pc, rec, &e, err)) == 0)
@@ -875,7 +850,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	}
 	if (rc == 0 && pc->label_key != NULL)
 		rc = add_label(pc, rec, &e, surface ? centre : NULL, nst, err);
-	if (rc == 0 && grow((void **)&pc->rec, &pc->reccap,
+	if (rc == 0 && loft_grow((void **)&pc->rec, &pc->reccap,
 	    (size_t)pc->nrec + 1, sizeof *pc->rec) != 0)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc != 0) {
@@ -904,7 +879,7 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 	size_t npt = pc->npt, nst = pc->nst;
 	struct extent e;
 
-	box_empty(&e.box);
+	extent_empty(&e);
 	if (!loft_record_is(rec, LOFT_KIND_KNOTS))
 		return loft_fail(err, LOFT_EINPUT, -1, "%s record: -K reads "
 		    "knots (point records)", rec->type);
@@ -922,58 +897,6 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 
 /* ------------------------------------------------------------------ */
 /* Writing the picture */
-
-static void
-out(struct doc *d, const char *fmt, ...)
-{
-	va_list ap;
-	int n;
-
-	if (d->bad)
-		return;
-	va_start(ap, fmt);
-	n = vsnprintf(NULL, 0, fmt, ap);
-	va_end(ap);
-	if (n < 0 || grow((void **)&d->buf, &d->cap, d->len + n + 1, 1)) {
-		d->bad = 1;
-		return;
-	}
-	va_start(ap, fmt);
-	vsnprintf(d->buf + d->len, (size_t)n + 1, fmt, ap);
-	va_end(ap);
-	d->len += n;
-}
-
-/* A number to d->decimals places, without trailing zeros or "-0". */
-static void
-num(struct doc *d, double x)
-{
-	char buf[400];
-	int n = snprintf(buf, sizeof buf, "%.*f", d->decimals, x);
-
-	if (n < 0 || n >= (int)sizeof buf) {
-		/* a tiny drawing far from the origin: every digit */
-		out(d, "%.17g", x);
-		return;
-	}
-	if (strchr(buf, '.') != NULL) {
-		while (buf[n - 1] == '0')
-			buf[--n] = '\0';
-		if (buf[n - 1] == '.')
-			buf[--n] = '\0';
-	}
-	out(d, "%s", strcmp(buf, "-0") == 0 ? "0" : buf);
-}
-
-/* A plane point in SVG coordinates: y runs down the page. */
-static void
-point(struct doc *d, const char *cmd, const double *q)
-{
-	out(d, "%s", cmd);
-	num(d, q[0]);
-	out(d, " ");
-	num(d, -q[1]);
-}
 
 static const char *
 colour(int rec)
@@ -996,53 +919,55 @@ tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
 	tip[1] = base[1] - scale * kn[1];
 }
 
-/* Open a path element of class cls in record rec's colour, with the
- * stroke width width_px pixels (0: the group's); the caller adds any
- * other attributes, then d. */
-static void
-path_open(struct doc *d, const char *cls, int rec, double width_px)
-{
-	out(d, "<path class=\"%s\" stroke=\"%s\"", cls, colour(rec));
-	if (width_px > 0) {
-		out(d, " stroke-width=\"");
-		num(d, width_px * d->px);
-		out(d, "\"");
-	}
-}
-
-static void
-draw_comb(struct doc *d, const struct pic *pc, const struct stroke *s,
-    double scale)
-{
-	double tip[2];
-
-	path_open(d, "comb", s->rec, THIN_PX);
-	out(d, " stroke-opacity=\"0.55\" d=\"");
-	for (size_t j = 0; j < s->n / 2; j++) {
-		tooth_tip(pc, s, j, scale, tip);
-		point(d, j ? " M" : "M", pc->pt + 2 * (s->first + 2 * j));
-		point(d, " L", tip);
-	}
-	out(d, "\"/>\n");
-	path_open(d, "comb-envelope", s->rec, THIN_PX);
-	out(d, " d=\"");
-	for (size_t j = 0; j < s->n / 2; j++) {
-		tooth_tip(pc, s, j, scale, tip);
-		point(d, j ? " L" : "M", tip);
-	}
-	out(d, "\"/>\n");
-}
-
+/* Begin a record of the picture, of style class cls, colour and stroke
+ * width width_px pixels (0: the picture's), in it. */
 static int
-same_point(const double *a, const double *b)
+begin(struct loft_cad_doc *d, struct loft_cad_item *it, const char *cls,
+    const char *colour, double width_px)
 {
-	return a[0] == b[0] && a[1] == b[1];
+	memset(it, 0, sizeof *it);
+	it->name = "";
+	it->cls = cls;
+	it->colour = colour;
+	it->width_px = width_px;
+	return d->f->begin_record(d, it);
+}
+
+/* A comb: its teeth, then the line through their tips. */
+static int
+draw_comb(struct loft_cad_doc *d, const struct pic *pc,
+    const struct stroke *s, double scale)
+{
+	struct loft_cad_item it;
+	size_t n = s->n / 2;
+	double *tip = malloc(2 * n * sizeof *tip), seg[4];
+	int rc;
+
+	if (tip == NULL)
+		return LOFT_ENOMEM;
+	rc = begin(d, &it, "comb", colour(s->rec), THIN_PX);
+	for (size_t j = 0; j < n && rc == 0; j++) {
+		tooth_tip(pc, s, j, scale, tip + 2 * j);
+		memcpy(seg, pc->pt + 2 * (s->first + 2 * j), 2 * sizeof *seg);
+		memcpy(seg + 2, tip + 2 * j, 2 * sizeof *seg);
+		rc = d->f->polyline(d, seg, 2, 2, 0);
+	}
+	if (rc == 0)
+		rc = d->f->end_record(d);
+	if (rc == 0)
+		rc = begin(d, &it, "comb-envelope", colour(s->rec), THIN_PX);
+	if (rc == 0)
+		rc = d->f->polyline(d, tip, n, 2, 0);
+	if (rc == 0)
+		rc = d->f->end_record(d);
+	free(tip);
+	return rc;
 }
 
 /*
- * A record's curve width in pixels: CURVE_PX for the last record, and
- * up to HEAVIER times CURVE_PX more for the first, so that where two
- * records' curves run together (a fitted segment and the arc it
+ * A record's curve width in pixels: LOFT_PLOT_CURVE_PX for the last
+ * record, and up to HEAVIER times that more for the first, so that
+ * where two records' curves run together (a fitted segment and the arc it
  * approximates) the later, drawn on top and thinner, leaves the earlier
  * showing at both sides: a rim of 1.1 pixels each side, which a screen
  * shows in its colour (a rim of 0.75 blended into one purple line).
@@ -1052,106 +977,62 @@ static double
 curve_px(const struct pic *pc, int rec)
 {
 	if (pc->nrec < 2 || rec < 0)
-		return CURVE_PX;
-	return CURVE_PX * (1 + HEAVIER * (double)(pc->nrec - 1 - rec) /
+		return LOFT_PLOT_CURVE_PX;
+	return LOFT_PLOT_CURVE_PX * (1 + HEAVIER *
+	    (double)(pc->nrec - 1 - rec) /
 	    (pc->nrec - 1));
 }
 
-static void
-draw_path(struct doc *d, const struct pic *pc, const struct stroke *s)
-{
-	const double *p = pc->pt + 2 * s->first, *start = p;
-
-	if (s->kind == K_MESH || s->kind == K_NET)
-		path_open(d, s->kind == K_MESH ? "mesh" : "control-polygon",
-		    s->rec, THIN_PX);
-	else
-		path_open(d, "curve", s->rec, curve_px(pc, s->rec));
-	out(d, " d=\"");
-	if (s->kind == K_BEZIER) {
-		for (size_t i = 0; i < s->n / 4; i++, p += 8) {
-			if (i == 0 || !same_point(p - 2, p))
-				point(d, i ? " M" : "M", start = p);
-			point(d, " C", p + 2);
-			point(d, " ", p + 4);
-			point(d, " ", p + 6);
-		}
-		p -= 2;
-	} else {
-		for (size_t i = 0; i < s->n; i++)
-			point(d, i ? " L" : "M", p + 2 * i);
-		p += 2 * (s->n - 1);
-	}
-	if (s->closed && same_point(p, start))
-		out(d, " Z");
-	out(d, "\"/>\n");
-}
-
-static void
-draw_handles(struct doc *d, const struct pic *pc, const struct stroke *s)
+/* A curve (exact cubic pieces) or a polyline. */
+static int
+draw_path(struct loft_cad_doc *d, const struct pic *pc,
+    const struct stroke *s)
 {
 	const double *p = pc->pt + 2 * s->first;
+	struct loft_bcurve c = { p, s->n / 4, 3, 2, s->closed };
+	struct loft_cad_item it;
+	int rc;
 
-	path_open(d, "tangents", s->rec, TANGENT_PX);
-	out(d, " stroke-dasharray=\"");
-	num(d, 5 * d->px);
-	out(d, " ");
-	num(d, 2.5 * d->px);
-	out(d, "\" d=\"");
-	for (size_t j = 0; j < s->n; j += 2) {
-		point(d, j ? " M" : "M", p + 2 * j);
-		point(d, " L", p + 2 * j + 2);
-	}
-	out(d, "\"/>\n");
+	if (s->kind == K_MESH || s->kind == K_NET)
+		rc = begin(d, &it, s->kind == K_MESH ? "mesh" :
+		    "control-polygon", colour(s->rec), THIN_PX);
+	else
+		rc = begin(d, &it, "curve", colour(s->rec),
+		    curve_px(pc, s->rec));
+	if (rc == 0)
+		rc = s->kind == K_BEZIER ? d->f->curve(d, &c) :
+		    d->f->polyline(d, p, s->n, 2, s->closed);
+	return rc == 0 ? d->f->end_record(d) : rc;
 }
 
-/* Markers: small discs, each two half-circle arcs; control points are
- * open, white inside, so they are not taken for points on the curve. */
-static void
-draw_marks(struct doc *d, const struct pic *pc, const struct stroke *s)
+/* -t: pairs of points, a tangent each. */
+static int
+draw_handles(struct loft_cad_doc *d, const struct pic *pc,
+    const struct stroke *s)
 {
-	double r = KNOT_PX * d->px, q[2];
+	const double *p = pc->pt + 2 * s->first;
+	struct loft_cad_item it;
+	int rc = begin(d, &it, "tangents", colour(s->rec), TANGENT_PX);
 
-	if (s->kind == K_CONTROL) {
-		path_open(d, "control-points", s->rec, THIN_PX);
-		out(d, " fill=\"#fff\" d=\"");
-	} else {
-		out(d, "<path class=\"%s\" fill=\"%s\" stroke=\"none\" "
-		    "d=\"", s->kind == K_KNOTS ? "knots" : "points",
-		    colour(s->rec));
-	}
-	for (size_t j = 0; j < s->n; j++) {
-		q[0] = pc->pt[2 * (s->first + j)] - r;
-		q[1] = pc->pt[2 * (s->first + j) + 1];
-		point(d, j ? " M" : "M", q);
-		out(d, " a");
-		num(d, r);
-		out(d, " ");
-		num(d, r);
-		out(d, " 0 1 0 ");
-		num(d, 2 * r);
-		out(d, " 0 a");
-		num(d, r);
-		out(d, " ");
-		num(d, r);
-		out(d, " 0 1 0 ");
-		num(d, -2 * r);
-		out(d, " 0Z");
-	}
-	out(d, "\"/>\n");
+	for (size_t j = 0; j + 1 < s->n && rc == 0; j += 2)
+		rc = d->f->polyline(d, p + 2 * j, 2, 2, 0);
+	return rc == 0 ? d->f->end_record(d) : rc;
 }
 
-static void
-text(struct doc *d, const char *s)
+/* Markers; control points are open, white inside, so they are not taken
+ * for points on the curve. */
+static int
+draw_marks(struct loft_cad_doc *d, const struct pic *pc,
+    const struct stroke *s)
 {
-	for (; *s; s++)
-		switch (*s) {
-		case '&': out(d, "&amp;"); break;
-		case '<': out(d, "&lt;"); break;
-		case '>': out(d, "&gt;"); break;
-		case '"': out(d, "&quot;"); break;
-		default: out(d, "%c", *s);
-		}
+	struct loft_cad_item it;
+	int rc = s->kind == K_CONTROL ? begin(d, &it, "control-points",
+	    colour(s->rec), THIN_PX) : begin(d, &it, s->kind == K_KNOTS ?
+	    "knots" : "points", colour(s->rec), 0);
+
+	if (rc == 0)
+		rc = d->f->points(d, pc->pt + 2 * s->first, s->n, 2);
+	return rc == 0 ? d->f->end_record(d) : rc;
 }
 
 /* The box label l takes with font size font: its text begins a gap to
@@ -1224,7 +1105,7 @@ grid_add(struct grid *g, const struct box *b, size_t lb)
 		for (long cy = y0; cy <= y1; cy++) {
 			size_t h = bucket(g, cx, cy);
 
-			if (grow((void **)&g->e, &g->ecap, g->ne + 1,
+			if (loft_grow((void **)&g->e, &g->ecap, g->ne + 1,
 			    sizeof *g->e) != 0)
 				return -1;
 			g->e[g->ne] = (struct cell){ cx, cy, lb, g->head[h] };
@@ -1267,8 +1148,8 @@ struct obstacles {
 static int
 add_segment(struct obstacles *o, const double *a, const double *b, int rec)
 {
-	if (grow((void **)&o->seg, &o->cap, o->n + 1, sizeof *o->seg) != 0 ||
-	    grow((void **)&o->rec, &o->reccap, o->n + 1, sizeof *o->rec) != 0)
+	if (loft_grow((void **)&o->seg, &o->cap, o->n + 1, sizeof *o->seg) != 0 ||
+	    loft_grow((void **)&o->rec, &o->reccap, o->n + 1, sizeof *o->rec) != 0)
 		return -1;
 	o->rec[o->n] = rec;
 	o->seg[o->n][0] = a[0];
@@ -1751,15 +1632,21 @@ done:
 }
 
 /*
- * Write the whole picture into d; 0, or LOFT_EGEOM (it cannot be framed)
- * or LOFT_ENOMEM with err filled.
+ * Write the whole picture into d (loftplot's SVG picture, svgplot.c),
+ * made anew: the picture in d->out.  0, or LOFT_EGEOM (it cannot be
+ * framed) or LOFT_ENOMEM with err filled.  d is the caller's, zeroed or
+ * made by write_svg before, to be freed with loft_cad_free.
  */
 static int
-write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
+write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 {
+	const struct loft_cad_opts o = { .picture_px = PICTURE_PX,
+	    .background = pc->background };
+	struct loft_cad_item it;
 	struct box b = pc->box;
-	double w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2], dec,
-	    vb[4], kmax = pc->kmax;
+	double *vb, w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2],
+	    kmax = pc->kmax;
+	int rc;
 
 	/* the comb's scale, from the curves' extent, and its teeth's tips */
 	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
@@ -1783,10 +1670,13 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 		big = fmax(1, fmax(fabs(b.lo[0]), fabs(b.lo[1])));
 	margin = MARGIN * big;
 	if (pc->nlb > 0) {
-		font = FONT_PX * (big + 2 * margin) / PICTURE_PX;
+		font = LOFT_PLOT_FONT_PX * (big + 2 * margin) / PICTURE_PX;
 		if (place_labels(pc, font, scale, &b) != 0)
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	}
+	loft_cad_free(d);
+	loft_cad_init(d, &loft_cad_svgplot, &o);
+	vb = d->o.frame;
 	vb[0] = b.lo[0] - margin;
 	vb[1] = -(b.hi[1] + margin);
 	vb[2] = b.hi[0] - b.lo[0] + 2 * margin;
@@ -1798,55 +1688,28 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 	    !isfinite(vb[1]))
 		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
 		    "to frame");
-	d->px = big / PICTURE_PX;
-	/* a subnormal drawing: RESOLUTION * big underflows to 0 */
-	dec = ceil(-log10(RESOLUTION * big));
-	d->decimals = dec > 0 ? (int)fmin(dec, MAX_DECIMALS) : 0;
-
-	out(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
-	    "width=\"%.1f\" height=\"%.1f\" viewBox=\"",
-	    PICTURE_PX * (vb[2] / big), PICTURE_PX * (vb[3] / big));
-	for (int k = 0; k < 4; k++) {
-		out(d, k ? " " : "");
-		num(d, vb[k]);
-	}
-	out(d, "\">\n<g fill=\"none\" stroke-linecap=\"round\" "
-	    "stroke-linejoin=\"round\" stroke-width=\"");
-	num(d, CURVE_PX * d->px);
-	out(d, "\">\n");
-	if (pc->background != NULL) {
-		out(d, "<rect class=\"background\" fill=\"%s\" stroke=\"none\" "
-		    "x=\"", pc->background);
-		num(d, vb[0]);
-		out(d, "\" y=\"");
-		num(d, vb[1]);
-		out(d, "\" width=\"");
-		num(d, vb[2]);
-		out(d, "\" height=\"");
-		num(d, vb[3]);
-		out(d, "\"/>\n");
-	}
+	if ((rc = d->f->begin(d)) != 0)
+		goto done;
 	/* curves and polylines in one pass, in the order of their records,
 	 * so that a later record lies on an earlier one, drawn thinner */
-	for (int kind = 0; kind < NKIND; kind++)
-		for (size_t i = 0; i < pc->nst; i++) {
+	for (int kind = 0; kind < NKIND && rc == 0; kind++)
+		for (size_t i = 0; i < pc->nst && rc == 0; i++) {
 			const struct stroke *s = &pc->st[i];
 			int k = s->kind == K_BEZIER ? K_LINE : (int)s->kind;
 
 			if (k != kind || s->n == 0)
 				continue;
 			switch (s->kind) {
-			case K_COMB: draw_comb(d, pc, s, scale); break;
+			case K_COMB: rc = draw_comb(d, pc, s, scale); break;
 			case K_MESH:
 			case K_LINE:
 			case K_NET:
-			case K_BEZIER: draw_path(d, pc, s); break;
-			case K_HANDLE: draw_handles(d, pc, s); break;
-			default: draw_marks(d, pc, s); break;
+			case K_BEZIER: rc = draw_path(d, pc, s); break;
+			case K_HANDLE: rc = draw_handles(d, pc, s); break;
+			default: rc = draw_marks(d, pc, s); break;
 			}
 		}
-	for (size_t i = 0; i < pc->nlb; i++) {
+	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
 		const struct label *l = &pc->lb[i];
 		struct box lb;
 		double sg[4];
@@ -1855,68 +1718,47 @@ write_svg(struct doc *d, struct pic *pc, struct loft_error *err)
 			continue;
 		label_box(l, font, &lb);
 		leader(l, &lb, sg);
-		path_open(d, "leader", l->rec, THIN_PX);
-		point(d, " d=\"M", sg);
-		point(d, " L", sg + 2);
-		out(d, "\"/>\n");
+		if ((rc = begin(d, &it, "leader", colour(l->rec), THIN_PX)) ==
+		    0 && (rc = d->f->polyline(d, sg, 2, 2, 0)) == 0)
+			rc = d->f->end_record(d);
 	}
-	out(d, "</g>\n");
-	if (pc->nlb > 0) {
-		/* font sizes of a small fraction of a unit do not render
-		 * everywhere: the text is set at FONT_PX and scaled */
-		/* a halo of the background's colour under each letter keeps
-		 * a label over a line (a patch's id) legible */
-		/* a label on its curve: a ground of the background's
-		 * colour, its box, hides its line under it */
-		for (size_t i = 0; i < pc->nlb; i++) {
-			struct box lb;
+	/* a label on its curve: a ground of the background's colour, its
+	 * box, hides its line under it */
+	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
+		struct box lb;
 
-			if (!pc->lb[i].oncurve)
-				continue;
-			label_box(&pc->lb[i], font, &lb);
-			out(d, "<rect class=\"label-ground\" fill=\"%s\" "
-			    "stroke=\"none\" x=\"", pc->background ?
-			    pc->background : "#fff");
-			num(d, lb.lo[0]);
-			out(d, "\" y=\"");
-			num(d, -lb.hi[1]);
-			out(d, "\" width=\"");
-			num(d, lb.hi[0] - lb.lo[0]);
-			out(d, "\" height=\"");
-			num(d, lb.hi[1] - lb.lo[1]);
-			out(d, "\"/>\n");
-		}
-		out(d, "<g font-family=\"sans-serif\" font-size=\"%d\" "
-		    "stroke=\"%s\" stroke-width=\"3\" stroke-linejoin=\"round\" "
-		    "paint-order=\"stroke\">\n", FONT_PX,
-		    pc->background ? pc->background : "#fff");
-		for (size_t i = 0; i < pc->nlb; i++) {
-			const struct label *l = &pc->lb[i];
-			double q[2] = { l->at[0] + font / 2,
-			    l->at[1] - 0.35 * font };
-
-			/* a patch's id, or a label on its curve: centred on
-			 * its point, exactly */
-			if (l->centred || l->oncurve) {
-				q[0] = l->at[0];
-				q[1] = l->at[1];
-			}
-			out(d, "<text class=\"label%s\" fill=\"%s\"%s "
-			    "transform=\"translate(", l->oncurve ? " on-curve" :
-			    "", colour(l->rec),
-			    l->centred || l->oncurve ?
-			    " text-anchor=\"middle\" dy=\"0.35em\"" :
-			    "");
-			point(d, "", q);
-			out(d, ") scale(%.6g)\">", font / FONT_PX);
-			text(d, pc->lb[i].text);
-			out(d, "</text>\n");
-		}
-		out(d, "</g>\n");
+		if (!pc->lb[i].oncurve)
+			continue;
+		label_box(&pc->lb[i], font, &lb);
+		if ((rc = begin(d, &it, "label-ground", pc->background ?
+		    pc->background : "#fff", 0)) == 0 &&
+		    (rc = d->f->box(d, lb.lo, lb.hi)) == 0)
+			rc = d->f->end_record(d);
 	}
-	out(d, "</svg>\n");
-	if (d->bad)
+	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
+		const struct label *l = &pc->lb[i];
+		double q[2] = { l->at[0] + font / 2, l->at[1] - 0.35 * font };
+		int middle = l->centred || l->oncurve;
+
+		/* a patch's id, or a label on its curve: centred on its
+		 * point, exactly */
+		if (middle) {
+			q[0] = l->at[0];
+			q[1] = l->at[1];
+		}
+		if ((rc = begin(d, &it, l->oncurve ? "label on-curve" :
+		    "label", colour(l->rec), 0)) == 0 &&
+		    (rc = d->f->label(d, q, font, middle, l->text)) == 0)
+			rc = d->f->end_record(d);
+	}
+	if (rc == 0)
+		rc = d->f->end(d);
+done:
+	if (rc == LOFT_ENOMEM || d->out.bad == LOFT_ENOMEM)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (rc != 0 || d->out.bad != 0)
+		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
+		    "to frame");
 	return 0;
 }
 
@@ -2012,7 +1854,7 @@ main(int argc, char *argv[])
 	struct pic pc = { .steps = 16, .grid = 8 };
 	struct loft_run run = { .prog = "loftplot", .out = stdout, .msg = stderr,
 	    .handle = keep_record, .ctx = &pc };
-	struct doc d = { 0 };
+	struct loft_cad_doc d = { 0 };
 	struct loft_error err;
 	char *knots = NULL;
 	int c, rc = 0, word, status;
@@ -2061,19 +1903,17 @@ main(int argc, char *argv[])
 		/* one far-out record must not empty the whole picture */
 		while (rc == LOFT_EGEOM && pc.nrec > 1) {
 			take_out_farthest(&pc);
-			d.len = 0;
-			d.bad = 0;
 			rc = write_svg(&d, &pc, &err);
 		}
 		if (rc != 0)
 			fprintf(stderr, "loftplot: %s\n", err.msg);
 		else
-			loft_run_write(&run, d.buf, d.len);
+			loft_run_write(&run, d.out.buf, d.out.len);
 		status = 1;     /* a record was left out, or nothing drawn */
 	} else {
-		status = loft_run_write(&run, d.buf, d.len);
+		status = loft_run_write(&run, d.out.buf, d.out.len);
 	}
-	free(d.buf);
+	loft_cad_free(&d);
 	free_pic(&pc);
 	return status;
 }

@@ -89,7 +89,7 @@ obj_begin(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
 {
 	struct opts *o = run->ctx;
-	struct loft_cad_item it = { rec, "", 0, 0 };
+	struct loft_cad_item it = { .rec = rec, .name = "" };
 	struct loft_cad_opts co = { 0 };
 
 	if (o->doc == NULL) {

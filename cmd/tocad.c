@@ -66,7 +66,7 @@ main(int argc, char *argv[])
 {
 	static const char *const unit_words[] = { "mm", "cm", "m", "in", NULL };
 	static const double unit_mm[] = { 1, 10, 1000, 25.4 };
-	struct loft_cad_opts o = { 0, 0, 0, 0, 1, "mm" };
+	struct loft_cad_opts o = { .unit_mm = 1, .unit_name = "mm" };
 	const struct loft_cad_format *f = NULL;
 	struct loft_cad_doc d;
 	struct loft_run run = { .prog = "tocad", .out = stdout, .msg = stderr,

@@ -378,6 +378,8 @@ item(const struct loft_cad_doc *d, const struct loft_record *rec,
 	item_name(rec, name, cap);
 	it->rec = rec;
 	it->name = name;
+	it->cls = it->colour = NULL;
+	it->width_px = 0;
 	if (measure(p, n, dim, box, box + 3, &it->size, err) != 0)
 		return LOFT_EGEOM;
 	it->tol = d->o.tol > 0 ? d->o.tol : LOFT_CAD_RELTOL * it->size;

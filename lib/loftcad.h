@@ -1,6 +1,7 @@
 /*
  * loftcad.h: loft's curves and surfaces written into CAD documents (DXF,
- * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1).
+ * SVG at true scale, STEP, IGES, STL, OBJ) for tocad(1), and loftplot(1)'s
+ * SVG picture.
  *
  * Every record is first put in exact Bezier form (bezform.c): a curve as
  * polynomial pieces of one degree, a surface as tensor-product Bezier
@@ -21,6 +22,12 @@
  * bezier record and a patch a bezier-surface that no longer names its
  * neighbours.  OBJ (obj.c) is also written record by record into a
  * program's stream writer (loft_cad_attach), as sample -f obj does.
+ *
+ * loftplot's picture (svgplot.c, loft_cad_svgplot) is a format outside
+ * loft_cad_formats: loftplot calls its callbacks itself, with points
+ * already projected to its view's plane; an item's style class, colour
+ * and width say how each record is drawn, and two callbacks only the
+ * picture sets, box and label, write the labels' grounds and texts.
  *
  * Conventions as in loft.h: caller-owned arrays, 0 or a LOFT_E* code,
  * and the library never prints.  The document is made in memory and
@@ -80,6 +87,11 @@ struct loft_cad_item {
 	const char *name;       /* from size= and id= ("size_4.5-id_2"), or "" */
 	double size;            /* diagonal of its control points' box */
 	double tol;             /* chordal tolerance for it, in its units */
+	/* the picture's (svgplot.c; NULL and 0 for the other formats): */
+	const char *cls;        /* its style class: "curve", "comb", ... */
+	const char *colour;     /* its colour, "#1f4e9c" */
+	double width_px;        /* its stroke width in pixels; 0: the */
+	                        /* picture's LOFT_PLOT_CURVE_PX */
 };
 
 struct loft_cad_opts {
@@ -92,6 +104,11 @@ struct loft_cad_opts {
 	                        /* along a patch side; or 0: by tol */
 	double unit_mm;         /* millimetres in the stream's unit */
 	const char *unit_name;  /* "mm", "cm", "m", "in" */
+	/* the picture's (svgplot.c), 0 for the other formats: */
+	double frame[4];        /* its viewBox: left, top (y down), width, */
+	                        /* height, in the drawing's units */
+	long picture_px;        /* pixels of the frame's larger side */
+	const char *background; /* its colour, or NULL: none (white) */
 };
 
 /*
@@ -112,10 +129,13 @@ struct loft_cad_doc;
 
 /*
  * A format: every callback gets the document and writes into it
- * through loft_cad_put, loft_cad_puts and loft_cad_putnum.  They return 0 or LOFT_ENOMEM.  begin is called once before
- * the first record's geometry, end once after the last, begin_record
- * and end_record around each record's geometry.  NULL callbacks are
- * kinds the format cannot take.
+ * through loft_cad_put, loft_cad_puts and loft_cad_putnum.  They return
+ * 0 or LOFT_ENOMEM.  begin is called once before the first record's
+ * geometry, end once after the last, begin_record and end_record around
+ * each record's geometry.  NULL callbacks are kinds the format cannot
+ * take.  box and label are the picture's (loftplot, svgplot.c), whose
+ * program calls the callbacks itself with its points already in the
+ * plane: lines first, then boxes, then labels.
  */
 struct loft_cad_format {
 	const char *name;       /* the -f word */
@@ -145,8 +165,32 @@ struct loft_cad_format {
 	 * seen from the side f_u x f_v points to */
 	int (*mesh)(struct loft_cad_doc *d, const double *v, size_t nv,
 	    const size_t *tri, size_t nt);
+	/* a filled box lo..hi (2 numbers each), a label's ground */
+	int (*box)(struct loft_cad_doc *d, const double *lo,
+	    const double *hi);
+	/* the text s, size high, beginning at the plane point at (or
+	 * centred on it, middle 1) */
+	int (*label)(struct loft_cad_doc *d, const double *at, double size,
+	    int middle, const char *s);
 	void (*free)(struct loft_cad_doc *d);   /* of state, may be NULL */
 };
+
+/*
+ * loftplot's SVG picture (svgplot.c), not one of loft_cad_formats: a
+ * frame of o.frame, o.picture_px pixels on its larger side; an item's
+ * cls styles its lines ("comb" faint, "tangents" dashed, "points" and
+ * "knots" filled markers, "control-points" hollow ones; any other a
+ * line).  Its callbacks: curve (cubic pieces, dim >= 2; a piece that
+ * does not begin where the one before ended begins a new subpath; else
+ * LOFT_EINPUT), polyline and points (markers), several to one record's
+ * path, box and label.  begin returns LOFT_EGEOM when the frame is not
+ * finite and positive.  Coordinates are plane points, y up, written to
+ * 1e-6 of the frame.
+ */
+extern const struct loft_cad_format loft_cad_svgplot;
+/* The picture's sizes in its pixels: the lines' width, the labels' font. */
+#define LOFT_PLOT_CURVE_PX 1.5
+#define LOFT_PLOT_FONT_PX 12
 
 /* The formats, by name, ending with a NULL name. */
 struct loft_cad_entry {

@@ -58,6 +58,14 @@ void loft_end_record(struct loft_writer *w);   /* the blank line */
 void loft_writer_free(struct loft_writer *w);
 
 /*
+ * Grow the malloc'd array *buf of *cap elements of sz bytes (NULL and 0
+ * at first) to hold at least need, by the library's rule (capacities
+ * double): 0, or -1 when memory ran out or need * sz overflows, *buf
+ * and *cap as they were.  sz > 0.
+ */
+int loft_grow(void **buf, size_t *cap, size_t need, size_t sz);
+
+/*
  * Copy the record's attributes to w's current header line, except those
  * whose keys appear in the NULL-terminated list skip.
  */

@@ -471,6 +471,12 @@ loft_writer_free(struct loft_writer *w)
 	w->len = w->cap = 0;
 }
 
+int
+loft_grow(void **buf, size_t *cap, size_t need, size_t sz)
+{
+	return loft__grow(buf, cap, need, sz);
+}
+
 void
 loft_put_record(struct loft_writer *w, const struct loft_record *rec)
 {

@@ -48,7 +48,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct pic pc = { 0 };
 	struct loft_run run = { .prog = "loftplot", .msg = fuzz_null(),
 	    .handle = keep_record, .ctx = &pc };
-	struct doc d = { 0 };
+	struct loft_cad_doc d = { 0 };
 	struct loft_error err;
 
 	if (size < 2)
@@ -70,10 +70,10 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	box_empty(&pc.kbox);
 	fuzz_records(&run, data + 2, size - 2);
 	if (pc.nst > 0 && write_svg(&d, &pc, &err) == 0)
-		fuzz_check_svg(d.buf, d.len);
+		fuzz_check_svg(d.out.buf, d.out.len);
 	else if (pc.nst > 0)
 		FUZZ_ASSERT(err.msg[0] != '\0', "a failure without a message");
-	free(d.buf);
+	loft_cad_free(&d);
 	free_pic(&pc);
 	return 0;
 }

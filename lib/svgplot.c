@@ -1,0 +1,412 @@
+/*
+ * svgplot.c: the SVG picture of loftplot(1), a format of loftcad.h's
+ * writer interface: a frame of opts.frame, opts.picture_px pixels on
+ * its larger side, whatever the drawing's units; each record a path styled
+ * by its item's class (a comb's teeth faint, tangents dashed, markers
+ * filled, control points hollow), in its colour and stroke width; then
+ * the labels' grounds (box) and the labels (label) over everything.
+ * The points are the program's, already in the plane of its view, y up;
+ * the picture flips y.  Every coordinate is written to RESOLUTION of the
+ * frame's larger side.
+ * Program layer (loftcad.h, on loftprog.h): a format.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "loftcad.h"
+
+/* Coordinates are written to this fraction of the picture's larger side,
+ * 1/1600 of a pixel of a 640-pixel picture: below anything a screen or
+ * printer shows, yet short text. */
+#define RESOLUTION 1e-6
+/* Decimals of a coordinate at most: the smallest subnormal, 4.9e-324,
+ * at RESOLUTION of itself, needs 330. */
+#define MAX_DECIMALS 340
+/* Marker radius of points and control points, in pixels. */
+#define KNOT_PX 2.5
+/* The halo of the background's colour under each letter, in pixels of
+ * the font. */
+#define HALO_PX 3
+
+/* How a class is styled beyond its colour and width. */
+enum look {
+	L_STROKE,       /* a line in the colour */
+	L_FAINT,        /* and translucent (a comb's teeth) */
+	L_DASHED,       /* and dashed (tangents) */
+	L_HOLLOW,       /* markers drawn in the colour, white inside */
+	L_FILLED        /* markers filled with the colour, no line */
+};
+
+static const struct style {
+	const char *cls;
+	enum look look;
+} styles[] = {
+	{ "comb", L_FAINT },
+	{ "tangents", L_DASHED },
+	{ "control-points", L_HOLLOW },
+	{ "points", L_FILLED },
+	{ "knots", L_FILLED },
+};
+
+enum part { IN_LINES, AFTER_LINES, IN_LABELS };
+
+struct plot {
+	double px;              /* one pixel in the drawing's units */
+	int decimals;           /* of every coordinate */
+	const char *ground;     /* the background's colour */
+	enum part part;         /* of the picture being written */
+	const struct loft_cad_item *it;        /* the record being written */
+	int open;               /* its path element is begun */
+};
+
+/* x to p->decimals places, without trailing zeros or "-0". */
+static void
+put_fixed(struct loft_cad_doc *d, double x)
+{
+	const struct plot *p = d->state;
+	char buf[400];
+	int n;
+
+	if (!isfinite(x)) {
+		d->out.bad = LOFT_EGEOM;
+		return;
+	}
+	n = snprintf(buf, sizeof buf, "%.*f", p->decimals, x);
+	if (n < 0 || n >= (int)sizeof buf) {
+		/* a tiny drawing far from the origin: every digit */
+		n = snprintf(buf, sizeof buf, "%.17g", x);
+	} else if (memchr(buf, '.', (size_t)n) != NULL) {
+		while (buf[n - 1] == '0')
+			n--;
+		if (buf[n - 1] == '.')
+			n--;
+	}
+	if (n == 2 && memcmp(buf, "-0", 2) == 0)
+		loft_cad_put(d, "0", 1);
+	else
+		loft_cad_put(d, buf, (size_t)n);
+}
+
+/* A plane point after cmd, y down the page. */
+static void
+put_point(struct loft_cad_doc *d, const char *cmd, const double *q)
+{
+	loft_cad_puts(d, cmd);
+	put_fixed(d, q[0]);
+	loft_cad_put(d, " ", 1);
+	put_fixed(d, -q[1]);
+}
+
+/* x as printf's format fmt writes it (one conversion of a double). */
+static void
+put_printf(struct loft_cad_doc *d, const char *fmt, double x)
+{
+	char buf[64];
+	int n = snprintf(buf, sizeof buf, fmt, x);
+
+	if (n > 0 && n < (int)sizeof buf)
+		loft_cad_put(d, buf, (size_t)n);
+}
+
+static void
+attr(struct loft_cad_doc *d, const char *key, const char *val)
+{
+	loft_cad_puts(d, " ");
+	loft_cad_puts(d, key);
+	loft_cad_puts(d, "=\"");
+	loft_cad_puts(d, val);
+	loft_cad_puts(d, "\"");
+}
+
+static int
+plot_begin(struct loft_cad_doc *d)
+{
+	const double *vb = d->o.frame;
+	double big = fmax(vb[2], vb[3]), dec;
+	long picture = d->o.picture_px;
+	struct plot *p;
+
+	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
+	    !isfinite(vb[1]) || picture <= 0)
+		return LOFT_EGEOM;
+	if ((p = d->state = calloc(1, sizeof *p)) == NULL)
+		return LOFT_ENOMEM;
+	p->px = big / (double)picture;
+	/* a subnormal drawing: RESOLUTION * big underflows to 0 */
+	dec = ceil(-log10(RESOLUTION * big));
+	p->decimals = dec > 0 ? (int)fmin(dec, MAX_DECIMALS) : 0;
+	p->ground = d->o.background ? d->o.background : "#fff";
+	loft_cad_puts(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+	    "width=\"");
+	put_printf(d, "%.1f", (double)picture * (vb[2] / big));
+	loft_cad_puts(d, "\" height=\"");
+	put_printf(d, "%.1f", (double)picture * (vb[3] / big));
+	loft_cad_puts(d, "\" viewBox=\"");
+	for (int k = 0; k < 4; k++) {
+		loft_cad_puts(d, k ? " " : "");
+		put_fixed(d, vb[k]);
+	}
+	loft_cad_puts(d, "\">\n<g fill=\"none\" stroke-linecap=\"round\" "
+	    "stroke-linejoin=\"round\" stroke-width=\"");
+	put_fixed(d, LOFT_PLOT_CURVE_PX * p->px);
+	loft_cad_puts(d, "\">\n");
+	if (d->o.background != NULL) {
+		loft_cad_puts(d, "<rect class=\"background\"");
+		attr(d, "fill", d->o.background);
+		loft_cad_puts(d, " stroke=\"none\" x=\"");
+		put_fixed(d, vb[0]);
+		loft_cad_puts(d, "\" y=\"");
+		put_fixed(d, vb[1]);
+		loft_cad_puts(d, "\" width=\"");
+		put_fixed(d, vb[2]);
+		loft_cad_puts(d, "\" height=\"");
+		put_fixed(d, vb[3]);
+		loft_cad_puts(d, "\"/>\n");
+	}
+	return 0;
+}
+
+/* Go on to part of the picture: out of the group of the lines (for
+ * the labels' grounds), and for IN_LABELS into the group of the labels. */
+static void
+to_part(struct loft_cad_doc *d, enum part part)
+{
+	struct plot *p = d->state;
+
+	if (p->part == IN_LINES)
+		loft_cad_puts(d, "</g>\n");
+	if (part == IN_LABELS && p->part != IN_LABELS) {
+		/* font sizes of a small fraction of a unit do not render
+		 * everywhere: the text is set at LOFT_PLOT_FONT_PX and
+		 * scaled; a halo of the background's colour under each
+		 * letter keeps a label over a line legible */
+		loft_cad_puts(d, "<g font-family=\"sans-serif\" font-size=\"");
+		put_printf(d, "%.0f", LOFT_PLOT_FONT_PX);
+		loft_cad_puts(d, "\"");
+		attr(d, "stroke", p->ground);
+		loft_cad_puts(d, " stroke-width=\"");
+		put_printf(d, "%.0f", HALO_PX);
+		loft_cad_puts(d, "\" stroke-linejoin=\"round\" "
+		    "paint-order=\"stroke\">\n");
+	}
+	p->part = part;
+}
+
+static int
+plot_end(struct loft_cad_doc *d)
+{
+	struct plot *p = d->state;
+
+	if (p->part != AFTER_LINES)
+		loft_cad_puts(d, "</g>\n");
+	loft_cad_puts(d, "</svg>\n");
+	return 0;
+}
+
+static int
+plot_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
+{
+	struct plot *p = d->state;
+
+	p->it = it;
+	p->open = 0;
+	return 0;
+}
+
+/* Begin the record's path element, its style by its class, if it is
+ * not begun; then cmd, " M" for a path already begun. */
+static void
+path(struct loft_cad_doc *d, const char *cmd, const double *q)
+{
+	struct plot *p = d->state;
+	const struct loft_cad_item *it = p->it;
+	enum look look = L_STROKE;
+
+	if (p->open) {
+		put_point(d, " M", q);
+		return;
+	}
+	p->open = 1;
+	for (size_t i = 0; i < sizeof styles / sizeof styles[0]; i++)
+		if (strcmp(styles[i].cls, it->cls) == 0)
+			look = styles[i].look;
+	loft_cad_puts(d, "<path");
+	attr(d, "class", it->cls);
+	if (look == L_FILLED) {
+		attr(d, "fill", it->colour);
+		loft_cad_puts(d, " stroke=\"none\"");
+	} else {
+		attr(d, "stroke", it->colour);
+	}
+	if (look != L_FILLED && it->width_px > 0) {
+		loft_cad_puts(d, " stroke-width=\"");
+		put_fixed(d, it->width_px * p->px);
+		loft_cad_puts(d, "\"");
+	}
+	if (look == L_FAINT)
+		loft_cad_puts(d, " stroke-opacity=\"0.55\"");
+	if (look == L_DASHED) {
+		loft_cad_puts(d, " stroke-dasharray=\"");
+		put_fixed(d, 5 * p->px);
+		loft_cad_puts(d, " ");
+		put_fixed(d, 2.5 * p->px);
+		loft_cad_puts(d, "\"");
+	}
+	if (look == L_HOLLOW)
+		loft_cad_puts(d, " fill=\"#fff\"");
+	loft_cad_puts(d, " d=\"");
+	put_point(d, cmd, q);
+}
+
+static int
+plot_end_record(struct loft_cad_doc *d)
+{
+	struct plot *p = d->state;
+
+	if (p->open)
+		loft_cad_puts(d, "\"/>\n");
+	p->open = 0;
+	return 0;
+}
+
+static int
+same_point(const double *a, const double *b)
+{
+	return a[0] == b[0] && a[1] == b[1];
+}
+
+/* Cubic pieces, exactly; a piece that does not begin where the one
+ * before ended begins a new subpath. */
+static int
+plot_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
+{
+	const double *q = c->ctl, *start = q;
+	int dim = c->dim;
+
+	if (c->deg != 3 || dim < 2 || c->npieces == 0)
+		return LOFT_EINPUT;
+	for (size_t i = 0; i < c->npieces; i++, q += 4 * dim) {
+		if (i == 0 || !same_point(q - dim, q))
+			path(d, "M", start = q);
+		put_point(d, " C", q + dim);
+		put_point(d, " ", q + 2 * dim);
+		put_point(d, " ", q + 3 * dim);
+	}
+	if (c->closed && same_point(q - dim, start))
+		loft_cad_puts(d, " Z");
+	return 0;
+}
+
+static int
+plot_polyline(struct loft_cad_doc *d, const double *q, size_t n, int dim,
+    int closed)
+{
+	if (n == 0)
+		return 0;
+	path(d, "M", q);
+	for (size_t i = 1; i < n; i++)
+		put_point(d, " L", q + i * dim);
+	if (closed && same_point(q + (n - 1) * dim, q))
+		loft_cad_puts(d, " Z");
+	return 0;
+}
+
+/* Markers: small discs, each two half-circle arcs. */
+static int
+plot_points(struct loft_cad_doc *d, const double *q, size_t n, int dim)
+{
+	const struct plot *p = d->state;
+	double r = KNOT_PX * p->px, c[2];
+
+	for (size_t j = 0; j < n; j++) {
+		c[0] = q[j * dim] - r;
+		c[1] = q[j * dim + 1];
+		path(d, "M", c);
+		loft_cad_puts(d, " a");
+		put_fixed(d, r);
+		loft_cad_puts(d, " ");
+		put_fixed(d, r);
+		loft_cad_puts(d, " 0 1 0 ");
+		put_fixed(d, 2 * r);
+		loft_cad_puts(d, " 0 a");
+		put_fixed(d, r);
+		loft_cad_puts(d, " ");
+		put_fixed(d, r);
+		loft_cad_puts(d, " 0 1 0 ");
+		put_fixed(d, -2 * r);
+		loft_cad_puts(d, " 0Z");
+	}
+	return 0;
+}
+
+static int
+plot_box(struct loft_cad_doc *d, const double *lo, const double *hi)
+{
+	const struct plot *p = d->state;
+
+	to_part(d, p->part == IN_LINES ? AFTER_LINES : p->part);
+	loft_cad_puts(d, "<rect");
+	attr(d, "class", p->it->cls);
+	attr(d, "fill", p->it->colour);
+	loft_cad_puts(d, " stroke=\"none\" x=\"");
+	put_fixed(d, lo[0]);
+	loft_cad_puts(d, "\" y=\"");
+	put_fixed(d, -hi[1]);
+	loft_cad_puts(d, "\" width=\"");
+	put_fixed(d, hi[0] - lo[0]);
+	loft_cad_puts(d, "\" height=\"");
+	put_fixed(d, hi[1] - lo[1]);
+	loft_cad_puts(d, "\"/>\n");
+	return 0;
+}
+
+static int
+plot_label(struct loft_cad_doc *d, const double *at, double size, int middle,
+    const char *text)
+{
+	const struct plot *p = d->state;
+
+	to_part(d, IN_LABELS);
+	loft_cad_puts(d, "<text");
+	attr(d, "class", p->it->cls);
+	attr(d, "fill", p->it->colour);
+	if (middle)
+		loft_cad_puts(d, " text-anchor=\"middle\" dy=\"0.35em\"");
+	put_point(d, " transform=\"translate(", at);
+	put_printf(d, ") scale(%.6g)\">", size / LOFT_PLOT_FONT_PX);
+	for (const char *s = text; *s; s++)
+		switch (*s) {
+		case '&': loft_cad_puts(d, "&amp;"); break;
+		case '<': loft_cad_puts(d, "&lt;"); break;
+		case '>': loft_cad_puts(d, "&gt;"); break;
+		case '"': loft_cad_puts(d, "&quot;"); break;
+		default: loft_cad_put(d, s, 1);
+		}
+	loft_cad_puts(d, "</text>\n");
+	return 0;
+}
+
+static void
+plot_free(struct loft_cad_doc *d)
+{
+	free(d->state);
+	d->state = NULL;
+}
+
+const struct loft_cad_format loft_cad_svgplot = {
+	.name = "svgplot",
+	.title = "SVG picture",
+	.begin = plot_begin,
+	.end = plot_end,
+	.begin_record = plot_begin_record,
+	.end_record = plot_end_record,
+	.curve = plot_curve,
+	.polyline = plot_polyline,
+	.points = plot_points,
+	.box = plot_box,
+	.label = plot_label,
+	.free = plot_free,
+};
