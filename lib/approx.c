@@ -23,9 +23,13 @@
  * the tolerance and their squared distances grow by no more than noise
  * would (APPROX_NEED); then each wiggle, a short stretch of curvature
  * of the other sign between two inflexions (APPROX_WIGGLE), loses a
- * knot that holds it where the points allow (straighten).  So the
- * knots are as few as the points show a need of, each the balance of
- * many points, and an inflexion is kept only where the points ask.  Everything is relative to the
+ * knot that holds it where the points allow (straighten).  A wiggle
+ * still left, where the points leave no room for fewer knots, is
+ * faired: the knots near it move, by damped least squares, to where the
+ * points fit best with the curvature there of the sign round it
+ * (fair_wiggles).  So the knots are as few as the points show a need
+ * of, each the balance of many points, and an inflexion is kept only
+ * where the points ask.  Everything is relative to the
  * spans and the tolerance: nothing depends on the units.  A closed
  * outline is started at its lexicographically least point (or its
  * first corner), which is the same point wherever the input starts.
@@ -1040,28 +1044,38 @@ straighten(struct work *w)
 
 /*
  * The wiggles no removal straightens (the points near them leave no
- * room for fewer knots) are faired instead: the knots near one move
- * along their normals to where the points fit best subject to the
- * curvature on the wiggle's spans having the sign of the curve round
- * it, by Gauss-Newton steps on the points' distances along their
- * normals with a penalty on the curvature of the wrong sign (a weight
- * grown tenfold each step it is still there) and on the distances
- * beyond APPROX_FAIR_USE of the tolerance (APPROX_FAIR_HEAVY).  The
- * derivatives are differences of the curve through the knots moved by
- * APPROX_FAIR_DIFF of the tolerance.  Kept only when every point is
- * within the tolerance and there are fewer inflexions.
+ * room for fewer knots) are faired instead (fair_wiggles): the knots
+ * near one move along their normals to where the points fit best with
+ * the curvature on the wiggle's spans of the sign of the curve round
+ * it.  Levenberg-Marquardt steps (fair_step) on a merit: the squares of
+ * the points' distances along their normals, APPROX_FAIR_HEAVY times
+ * the squares of what they go beyond APPROX_FAIR_USE of the tolerance,
+ * and a weight times the squares of what the curvature times the
+ * curve's length falls short of APPROX_FAIR_MARGIN at the samples
+ * (APPROX_FAIR_SAMPLES a span and where the span's is least); each
+ * weight grows by APPROX_FAIR_PENALTY after a step that leaves its
+ * fault.  The derivatives are differences of the curve through the
+ * knots moved by APPROX_FAIR_DIFF of the tolerance.  The best right
+ * state of APPROX_FAIR_STEPS (least sum of squares, every point near
+ * within the tolerance, every sample of its sign) is kept when every
+ * point is within the tolerance and the inflexions, counted exactly
+ * (wiggle_exact), are fewer; else the knots are as they were.
  */
 #define APPROX_FAIR_STEPS 30
 /* The knots moved: those of the wiggle's spans and one more either
- * side, or, when that fails, APPROX_FAIR_WIDE more. */
+ * side, or, when that fails, APPROX_FAIR_WIDE more; at most
+ * APPROX_FAIR_KNOTS (a longer wiggle is not one). */
 #define APPROX_FAIR_WIDE 2
 #define APPROX_FAIR_KNOTS 12
-#define APPROX_FAIR_MARGIN 1e-3 /* curvature times the curve's length */
+/* A curvature times the length of the curve this small is as good as
+ * the wrong sign: the judge of a sign is APPROX_FLAT, far below. */
+#define APPROX_FAIR_MARGIN 1e-3
 #define APPROX_FAIR_DIFF 1e-4
 #define APPROX_FAIR_USE 0.9
 #define APPROX_FAIR_HEAVY 100.0
 #define APPROX_FAIR_PENALTY 10.0
-/* Dampings tried a step at most, and the least damping. */
+/* Dampings tried a step at most (each tenfold), and the least damping
+ * (of the normal equations' diagonal). */
 #define APPROX_FAIR_TRIES 8
 #define APPROX_FAIR_MU 1e-3
 /* Curvature samples a span, and one more where it is least. */
@@ -1079,6 +1093,8 @@ struct fairing {
 	int sign;               /* the sign the samples should have */
 	int wide;               /* knots moved beyond the wiggle either side */
 	double heavy;           /* the weight of the distances beyond use */
+	double ss;              /* the sum of the squares of the distances */
+	double best, kbest[APPROX_FAIR_KNOTS][2];  /* the best that is right */
 };
 
 /* The curvature of span j at u times the curve's length. */
@@ -1420,10 +1436,12 @@ fair_merit(struct work *w, struct fairing *f, double lambda, int *far,
 	fair_feet(w, f);
 	fair_eval(w, f, -1, 0);
 	*far = *bent = 0;
+	for (size_t k = 0; k < f->np; k++)
+		sum += f->d[k] * f->d[k];
+	f->ss = sum;
 	for (size_t k = 0; k < f->np; k++) {
 		double over = fabs(f->d[k]) - use;
 
-		sum += f->d[k] * f->d[k];
 		if (over > 0)
 			sum += f->heavy * over * over;
 		*far |= fabs(f->d[k]) > w->tol;
@@ -1523,12 +1541,25 @@ fair_lambda(const struct fairing *f)
 	return sg > 0 ? APPROX_FAIR_PENALTY * sa / sg : 1;
 }
 
+/* Keep the knots as the best when they are right (no point near
+ * beyond the tolerance, no sample short) and fit better. */
+static void
+fair_best(const struct work *w, struct fairing *f, int far, int bent)
+{
+	if (far || bent || !(f->ss < f->best))
+		return;
+	f->best = f->ss;
+	for (size_t v = 0; v < f->nv; v++)
+		vcopy(f->kbest[v], w->k + f->kv[v] * 2, 2);
+}
+
 /*
  * One Levenberg-Marquardt step of the fairing: the model linearised,
  * the step damped until the merit falls (APPROX_FAIR_TRIES at most),
- * then the weights of what is still wrong grown.  Returns -1 when a
- * fit fails, 1 when the curvature has its sign and the points are
- * within the tolerance, 0 otherwise (2 when no step lowers the merit).
+ * then the weights of what is still wrong grown (all of them, and the
+ * damping reset, when no step lowers the merit).  The knots before the
+ * step are kept when the best (fair_best).  Returns -1 when a fit
+ * fails, else 0.
  */
 static int
 fair_step(struct work *w, struct fairing *f, double *lambda, double *mu)
@@ -1538,8 +1569,7 @@ fair_step(struct work *w, struct fairing *f, double *lambda, double *mu)
 	int far, bent;
 
 	m0 = fair_merit(w, f, *lambda, &far, &bent);
-	if (!far && !bent)
-		return 1;
+	fair_best(w, f, far, bent);
 	if (fair_jacobian(w, f) != 0)
 		return -1;
 	if (*lambda == 0) {
@@ -1590,16 +1620,32 @@ fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
 	f->heavy = APPROX_FAIR_HEAVY;
 	f->len = curve_len(w);
 	save_state(w);
+	f->best = HUGE_VAL;
 	for (int s = 0; s < APPROX_FAIR_STEPS && rc == 0; s++)
 		rc = fair_step(w, f, &lambda, &mu);
-	if (rc >= 0 && fit_project(w, &worst, &at, &err) == 0 &&
+	if (rc >= 0) {
+		int far, bent;
+
+		fair_merit(w, f, lambda, &far, &bent);
+		fair_best(w, f, far, bent);
+	}
+	if (rc >= 0 && f->best < HUGE_VAL) {
+		for (size_t v = 0; v < f->nv; v++)
+			vcopy(w->k + f->kv[v] * 2, f->kbest[v], 2);
+		rc = fit_curve(w, &err);
+	}
+	if (rc >= 0 && f->best < HUGE_VAL &&
+	    fit_project(w, &worst, &at, &err) == 0 &&
 	    worst <= w->tol && wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes)
 		return 1;
 	restore_state(w);
 	return 0;
 }
 
-/* Fair each wiggle left, weakest first (fair_one). */
+/* Fair each wiggle left, weakest first (fair_one), that turns by less
+ * than the tolerance over the mean length of a span: the tilt the band
+ * of the tolerance allows a span, which noise may take up; a wiggle
+ * that turns more the points draw. */
 static int
 fair_wiggles(struct work *w)
 {
@@ -1633,6 +1679,12 @@ fair_wiggles(struct work *w)
 
 			if (turn == HUGE_VAL)
 				break;
+			if (turn >= w->tol * nseg_of(w) / curve_len(w)) {
+				/* more than the band of the tolerance tilts a
+				 * span by: the points draw it */
+				floor = turn;
+				continue;
+			}
 			f.wide = 1;
 			if (fair_one(w, &f, ja, jb, sg, changes, on))
 				continue;
