@@ -1058,10 +1058,15 @@ straighten(struct work *w)
  * knots moved by APPROX_FAIR_DIFF of the tolerance.  The best right
  * state of APPROX_FAIR_STEPS (least sum of squares, every point near
  * within the tolerance, every sample of its sign) is kept when every
- * point is within the tolerance and the inflexions, counted exactly
- * (wiggle_exact), are fewer; else the knots are as they were.
+ * point is within the tolerance, the inflexions, counted exactly
+ * (wiggle_exact), are fewer and the bending energy is no more than
+ * APPROX_FAIR_ENERGY above; else the knots are as they were.
  */
 #define APPROX_FAIR_STEPS 30
+/* A wiggle straightened bends the curve less: a fairing that raises its
+ * bending energy by more than this fraction has bent it elsewhere (to a
+ * cusp, at worst) and is not kept. */
+#define APPROX_FAIR_ENERGY 0.01
 /* The knots moved: those of the wiggle's spans and one more either
  * side, or, when that fails, APPROX_FAIR_WIDE more; at most
  * APPROX_FAIR_KNOTS (a longer wiggle is not one). */
@@ -1601,6 +1606,25 @@ fair_step(struct work *w, struct fairing *f, double *lambda, double *mu)
 	return 0;
 }
 
+/* The bending energy of the curve (the integral of the curvature
+ * squared along it), by the midpoint rule over the curvature samples,
+ * times the curve's length len (so free of the units). */
+static double
+curve_energy(const struct work *w, double len)
+{
+	double e = 0;
+
+	for (size_t t = 0; t < nseg_of(w) * APPROX_KSAMPLES; t++) {
+		double p[2], d1[2], d2[2], u = ((t % APPROX_KSAMPLES) + 0.5) /
+		    APPROX_KSAMPLES, k;
+
+		span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
+		k = kappa_len(w, t / APPROX_KSAMPLES, u, 1);
+		e += k * k * hypot(d1[0], d1[1]) / APPROX_KSAMPLES;
+	}
+	return isfinite(e) ? e * len : HUGE_VAL;
+}
+
 /* Fair the wiggle on spans ja..jb of curvature of sign wsign; 1 if
  * kept (every point within the tolerance, fewer inflexions than
  * changes), else the state as it was. */
@@ -1608,7 +1632,7 @@ static int
 fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
     size_t changes, unsigned char *on)
 {
-	double lambda = 0, mu = APPROX_FAIR_MU, worst;
+	double lambda = 0, mu = APPROX_FAIR_MU, worst, energy;
 	size_t at, a2, b2;
 	struct loft_error err;
 	int rc = 0, sg;
@@ -1619,6 +1643,7 @@ fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
 	f->sign = -wsign;
 	f->heavy = APPROX_FAIR_HEAVY;
 	f->len = curve_len(w);
+	energy = curve_energy(w, f->len);
 	save_state(w);
 	f->best = HUGE_VAL;
 	for (int s = 0; s < APPROX_FAIR_STEPS && rc == 0; s++)
@@ -1636,7 +1661,8 @@ fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
 	}
 	if (rc >= 0 && f->best < HUGE_VAL &&
 	    fit_project(w, &worst, &at, &err) == 0 &&
-	    worst <= w->tol && wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes)
+	    worst <= w->tol && wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes &&
+	    curve_energy(w, curve_len(w)) <= energy * (1 + APPROX_FAIR_ENERGY))
 		return 1;
 	restore_state(w);
 	return 0;
