@@ -1014,7 +1014,8 @@ straighten(struct work *w)
 		return;
 	memset(w->tried, 0, w->m);
 	for (;;) {
-		size_t changes = wiggle(w, floor, &ja, &jb, &turn, &sg), m = w->m;
+		size_t changes = wiggle(w, floor, &ja, &jb, &turn, &sg);
+		size_t m = w->m;
 		int done = 0;
 
 		if (turn == HUGE_VAL)
@@ -1253,10 +1254,9 @@ wiggle_exact(const struct work *w, double floor, size_t *ja, size_t *jb,
 					for (int b = 0; b < 60 && k > 0; b++) {
 						double mid = (lo + hi) / 2;
 
-						if (cross_sign(w, j, mid, len) == sg)
-							hi = mid;
-						else
-							lo = mid;
+						int at = cross_sign(w, j, mid, len);
+
+						*(at == sg ? &hi : &lo) = mid;
 					}
 					cj[nch] = j;
 					cu[nch++] = k > 0 ? hi : 0;
@@ -1283,9 +1283,10 @@ wiggle_exact(const struct work *w, double floor, size_t *ja, size_t *jb,
 	return nch;
 }
 
-/* The knots to move (those of the wiggle's spans ja..jb and one beyond
- * either side, free), the points near (on the spans two beyond) and
- * the curvature samples (of the wiggle's spans); 0 when too many. */
+/* The knots to move (those of the wiggle's spans ja..jb and f->wide
+ * beyond either side, free), the points near (on the spans one more
+ * beyond) and the curvature samples (of the wiggle's spans); 0 when too
+ * many or none. */
 static int
 fair_setup(struct work *w, struct fairing *f, size_t ja, size_t jb,
     unsigned char *on)
@@ -1661,7 +1662,8 @@ fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
 	}
 	if (rc >= 0 && f->best < HUGE_VAL &&
 	    fit_project(w, &worst, &at, &err) == 0 &&
-	    worst <= w->tol && wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes &&
+	    worst <= w->tol &&
+	    wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes &&
 	    curve_energy(w, curve_len(w)) <= energy * (1 + APPROX_FAIR_ENERGY))
 		return 1;
 	restore_state(w);
@@ -1694,8 +1696,8 @@ fair_wiggles(struct work *w)
 	f.a = malloc(nmax * APPROX_FAIR_KNOTS * sizeof *f.a);
 	f.kap = malloc(APPROX_FAIR_TS * sizeof *f.kap);
 	f.g = malloc(APPROX_FAIR_TS * APPROX_FAIR_KNOTS * sizeof *f.g);
-	if (on == NULL || f.pi == NULL || f.tsj == NULL || f.tsu == NULL || f.nf == NULL ||
-	    f.c0 == NULL || f.d == NULL || f.a == NULL || f.kap == NULL ||
+	if (on == NULL || f.pi == NULL || f.tsj == NULL || f.tsu == NULL ||
+	    f.nf == NULL || f.c0 == NULL || f.d == NULL || f.a == NULL || f.kap == NULL ||
 	    f.g == NULL) {
 		rc = -1;
 	} else {
