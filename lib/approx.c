@@ -23,9 +23,13 @@
  * the tolerance and their squared distances grow by no more than noise
  * would (APPROX_NEED); then each wiggle, a short stretch of curvature
  * of the other sign between two inflexions (APPROX_WIGGLE), loses a
- * knot that holds it where the points allow (straighten).  So the
- * knots are as few as the points show a need of, each the balance of
- * many points, and an inflexion is kept only where the points ask.  Everything is relative to the
+ * knot that holds it where the points allow (straighten).  A wiggle
+ * still left, where the points leave no room for fewer knots, is
+ * faired: the knots near it move, by damped least squares, to where the
+ * points fit best with the curvature there of the sign round it
+ * (fair_wiggles).  So the knots are as few as the points show a need
+ * of, each the balance of many points, and an inflexion is kept only
+ * where the points ask.  Everything is relative to the
  * spans and the tolerance: nothing depends on the units.  A closed
  * outline is started at its lexicographically least point (or its
  * first corner), which is the same point wherever the input starts.
@@ -891,11 +895,12 @@ sample_turn(const struct work *w, size_t t, double *x)
  * returned, and its weakest wiggle: the run of one sign between two
  * changes whose turn (the integral of the curvature along it) is least,
  * below APPROX_WIGGLE and above floor: its spans *ja to *jb (cyclically
- * on a closed curve) and its turn *turn, HUGE_VAL when there is none.
+ * on a closed curve), its turn *turn (HUGE_VAL when there is none) and
+ * the sign of its curvature *wsign.
  */
 static size_t
 wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
-    double *turn)
+    double *turn, int *wsign)
 {
 	size_t total = nseg_of(w) * APPROX_KSAMPLES, t0 = 0, start, changes = 0;
 	int sign = 0, last = 0;
@@ -935,6 +940,7 @@ wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
 		    fabs(sum) < APPROX_WIGGLE && fabs(sum) > floor &&
 		    fabs(sum) < *turn) {
 			*turn = fabs(sum);
+			*wsign = sum > 0 ? 1 : -1;
 			*ja = start / APPROX_KSAMPLES;
 			*jb = ((t + total - 1) % total) / APPROX_KSAMPLES;
 		}
@@ -958,6 +964,7 @@ relocate(struct work *w, size_t changes)
 {
 	size_t ja, jb;
 	double turn, ss;
+	int sg;
 
 	keep_try(w);
 	for (int t = 0; t < APPROX_RELOCATE; t++) {
@@ -982,7 +989,7 @@ relocate(struct work *w, size_t changes)
 		for (size_t j = 0; j < nseg_of(w); j++)
 			over |= w->spanmax[j] > w->tol;
 		if (!over)
-			return wiggle(w, 0, &ja, &jb, &turn) < changes;
+			return wiggle(w, 0, &ja, &jb, &turn, &sg) < changes;
 		for (size_t i = 0; i < w->n; i++)
 			w->near[i] = (unsigned char)(w->dist[i] > w->tol);
 	}
@@ -1001,12 +1008,14 @@ straighten(struct work *w)
 {
 	double floor = 0, turn, grow;
 	size_t ja, jb;
+	int sg;
 
 	if (w->dim != 2)
 		return;
 	memset(w->tried, 0, w->m);
 	for (;;) {
-		size_t changes = wiggle(w, floor, &ja, &jb, &turn), m = w->m;
+		size_t changes = wiggle(w, floor, &ja, &jb, &turn, &sg);
+		size_t m = w->m;
 		int done = 0;
 
 		if (turn == HUGE_VAL)
@@ -1019,10 +1028,10 @@ straighten(struct work *w)
 			if (!removable(w, r))
 				continue;
 			if (try_remove(w, r, &grow) <= w->tol &&
-			    wiggle(w, 0, &a2, &b2, &t2) < changes) {
+			    wiggle(w, 0, &a2, &b2, &t2, &sg) < changes) {
 				keep_try(w);
 				done = 1;
-			} else if (wiggle(w, 0, &a2, &b2, &t2) < changes &&
+			} else if (wiggle(w, 0, &a2, &b2, &t2, &sg) < changes &&
 			    relocate(w, changes)) {
 				done = 1;
 			} else {
@@ -1032,6 +1041,697 @@ straighten(struct work *w)
 		if (!done)
 			floor = turn;
 	}
+}
+
+/*
+ * The wiggles no removal straightens (the points near them leave no
+ * room for fewer knots) are faired instead (fair_wiggles): the knots
+ * near one move along their normals to where the points fit best with
+ * the curvature on the wiggle's spans of the sign of the curve round
+ * it.  Levenberg-Marquardt steps (fair_step) on a merit: the squares of
+ * the points' distances along their normals, APPROX_FAIR_HEAVY times
+ * the squares of what they go beyond APPROX_FAIR_USE of the tolerance,
+ * and a weight times the squares of what the curvature times the
+ * curve's length falls short of APPROX_FAIR_MARGIN at the samples
+ * (APPROX_FAIR_SAMPLES a span and where the span's is least); each
+ * weight grows by APPROX_FAIR_PENALTY after a step that leaves its
+ * fault.  The derivatives are differences of the curve through the
+ * knots moved by APPROX_FAIR_DIFF of the tolerance.  The best right
+ * state of APPROX_FAIR_STEPS (least sum of squares, every point near
+ * within the tolerance, every sample of its sign) is kept when every
+ * point is within the tolerance, the inflexions, counted exactly
+ * (wiggle_exact), are fewer and the bending energy is no more than
+ * APPROX_FAIR_ENERGY above; else the knots are as they were.
+ */
+#define APPROX_FAIR_STEPS 30
+/* A wiggle straightened bends the curve less: a fairing that raises its
+ * bending energy by more than this fraction has bent it elsewhere (to a
+ * cusp, at worst) and is not kept. */
+#define APPROX_FAIR_ENERGY 0.01
+/* The knots moved: those of the wiggle's spans and one more either
+ * side, or, when that fails, APPROX_FAIR_WIDE more; at most
+ * APPROX_FAIR_KNOTS (a longer wiggle is not one). */
+#define APPROX_FAIR_WIDE 2
+#define APPROX_FAIR_KNOTS 12
+/* A curvature times the length of the curve this small is as good as
+ * the wrong sign: the judge of a sign is APPROX_FLAT, far below. */
+#define APPROX_FAIR_MARGIN 1e-3
+#define APPROX_FAIR_DIFF 1e-4
+#define APPROX_FAIR_USE 0.9
+#define APPROX_FAIR_HEAVY 100.0
+#define APPROX_FAIR_PENALTY 10.0
+/* Dampings tried a step at most (each tenfold), and the least damping
+ * (of the normal equations' diagonal). */
+#define APPROX_FAIR_TRIES 8
+#define APPROX_FAIR_MU 1e-3
+/* Curvature samples a span, and one more where it is least. */
+#define APPROX_FAIR_SAMPLES 32
+#define APPROX_FAIR_TS (APPROX_FAIR_KNOTS * (APPROX_FAIR_SAMPLES + 1))
+
+struct fairing {
+	size_t nv, np, nt;      /* knots moved, points, curvature samples */
+	size_t kv[APPROX_FAIR_KNOTS];
+	double nrm[APPROX_FAIR_KNOTS][2];
+	size_t *pi, *tsj;       /* the points near; the samples' spans */
+	double *tsu;            /* and where on them */
+	double *nf, *c0, *d, *a, *kap, *g;
+	double len;             /* the curve's length */
+	int sign;               /* the sign the samples should have */
+	int wide;               /* knots moved beyond the wiggle either side */
+	double heavy;           /* the weight of the distances beyond use */
+	double ss;              /* the sum of the squares of the distances */
+	double best, kbest[APPROX_FAIR_KNOTS][2];  /* the best that is right */
+};
+
+/* The curvature of span j at u times the curve's length. */
+static double
+kappa_len(const struct work *w, size_t j, double u, double len)
+{
+	double p[2], d1[2], d2[2], v;
+
+	span_eval(w, j, u, p, d1, d2);
+	v = hypot(d1[0], d1[1]);
+	return v > 0 ? (d1[0] * d2[1] - d1[1] * d2[0]) / (v * v * v) * len : 0;
+}
+
+/* The curve's length, from the curvature samples' points. */
+static double
+curve_len(const struct work *w)
+{
+	double len = 0;
+
+	for (size_t t = 0; t < nseg_of(w) * APPROX_KSAMPLES; t++) {
+		double p[2], d1[2], d2[2];
+
+		span_eval(w, t / APPROX_KSAMPLES, ((t % APPROX_KSAMPLES) + 0.5) /
+		    APPROX_KSAMPLES, p, d1, d2);
+		len += hypot(d1[0], d1[1]) / APPROX_KSAMPLES;
+	}
+	return len;
+}
+
+/* Span j + o, cyclically on a closed curve; ALL_SPANS off an open one. */
+static size_t
+span_off(const struct work *w, size_t j, long o)
+{
+	long ns = (long)nseg_of(w), t = (long)j + o;
+
+	if (w->closed)
+		return (size_t)(((t % ns) + ns) % ns);
+	return t < 0 || t >= ns ? ALL_SPANS : (size_t)t;
+}
+
+/* The numerator of the curvature of plane span j, the cross product of
+ * its first two derivatives, a quadratic q[0] + q[1] u + q[2] u^2. */
+static void
+span_cross(const struct work *w, size_t j, double *q)
+{
+	const double *c = w->pow + j * 8;
+
+	q[0] = 2 * (c[2] * c[5] - c[3] * c[4]);
+	q[1] = 6 * (c[2] * c[7] - c[3] * c[6]);
+	q[2] = 6 * (c[4] * c[7] - c[5] * c[6]);
+}
+
+/* The sign of the curvature of span j at u, 0 where the curvature
+ * times the length len is below APPROX_FLAT. */
+static int
+cross_sign(const struct work *w, size_t j, double u, double len)
+{
+	return kappa_len(w, j, u, len) > APPROX_FLAT ? 1 :
+	    kappa_len(w, j, u, len) < -APPROX_FLAT ? -1 : 0;
+}
+
+/* Where on span j the quadratic q is least times sign: 0, 1 or its
+ * vertex. */
+static double
+cross_least(const double *q, int sign)
+{
+	double best = 0, f0 = sign * q[0], f1 = sign * (q[0] + q[1] + q[2]);
+
+	if (f1 < f0)
+		best = 1, f0 = f1;
+	if (q[2] != 0) {
+		double u = -q[1] / (2 * q[2]);
+
+		if (u > 0 && u < 1 && sign * (q[0] + u * (q[1] + u * q[2])) < f0)
+			best = u;
+	}
+	return best;
+}
+
+/* The tangent's angle turned from (j0, u0) to (j1, u1) along the curve,
+ * in steps of at most 1 / APPROX_KSAMPLES of a span. */
+static double
+turn_between(const struct work *w, size_t j0, double u0, size_t j1, double u1)
+{
+	double p[2], a[2], b[2], d2[2], turn = 0;
+	size_t j = j0, ns = nseg_of(w);
+	double u = u0;
+
+	span_eval(w, j, u, p, a, d2);
+	for (int guard = 0; guard < (int)(ns + 1) * APPROX_KSAMPLES + 2;
+	    guard++) {
+		int last = j == j1 && u1 >= u && u1 - u <= 1.0 / APPROX_KSAMPLES;
+
+		u = last ? u1 : u + 1.0 / APPROX_KSAMPLES;
+		if (u > 1 && !last) {
+			span_eval(w, j, 1, p, b, d2);
+			turn += atan2(a[0] * b[1] - a[1] * b[0], vdot(a, b, 2));
+			vcopy(a, b, 2);
+			j = (j + 1) % ns;
+			u = 0;
+			continue;
+		}
+		span_eval(w, j, u, p, b, d2);
+		turn += atan2(a[0] * b[1] - a[1] * b[0], vdot(a, b, 2));
+		vcopy(a, b, 2);
+		if (last)
+			break;
+	}
+	return turn;
+}
+
+/*
+ * The inflexions of a plane curve found exactly (where the quadratic
+ * numerator of each span's curvature changes sign), returned, and its
+ * weakest wiggle as for wiggle(): the run between two of them whose
+ * turn is least, below APPROX_WIGGLE and above floor.
+ */
+static size_t
+wiggle_exact(const struct work *w, double floor, size_t *ja, size_t *jb,
+    double *turn, int *wsign)
+{
+	size_t ns = nseg_of(w), nch = 0, cap = 4 * ns + 4;
+	size_t *cj = malloc(cap * sizeof *cj);
+	double *cu = malloc(cap * sizeof *cu), len = curve_len(w);
+	int last = 0;
+
+	*turn = HUGE_VAL;
+	if (cj == NULL || cu == NULL) {
+		free(cj);
+		free(cu);
+		return 0;
+	}
+	for (int pass = 0; pass < 1 + w->closed; pass++)
+		for (size_t j = 0; j < ns; j++) {
+			double q[3], at[3] = { 0, 0.5, 1 };
+			int n = 3;
+
+			span_cross(w, j, q);
+			if (q[2] != 0 && -q[1] / (2 * q[2]) > 0 &&
+			    -q[1] / (2 * q[2]) < 1)
+				at[1] = -q[1] / (2 * q[2]);
+			for (int k = 0; k < n; k++) {
+				int sg = cross_sign(w, j, at[k], len);
+				double lo = k > 0 ? at[k - 1] : 0, hi = at[k];
+
+				if (sg == 0 || sg == last) {
+					last = sg ? sg : last;
+					continue;
+				}
+				if (last != 0 && pass == w->closed) {
+					for (int b = 0; b < 60 && k > 0; b++) {
+						double mid = (lo + hi) / 2;
+
+						int at = cross_sign(w, j, mid, len);
+
+						*(at == sg ? &hi : &lo) = mid;
+					}
+					cj[nch] = j;
+					cu[nch++] = k > 0 ? hi : 0;
+				}
+				last = sg;
+			}
+		}
+	for (size_t c = 0; c + (w->closed ? 0 : 1) < nch; c++) {
+		size_t d = (c + 1) % nch;
+		double t = turn_between(w, cj[c], cu[c], cj[d], cu[d]);
+
+		if (nch < 2)
+			break;
+		if (fabs(t) < APPROX_WIGGLE && fabs(t) > floor &&
+		    fabs(t) < *turn) {
+			*turn = fabs(t);
+			*wsign = t > 0 ? 1 : -1;
+			*ja = cj[c];
+			*jb = cj[d];
+		}
+	}
+	free(cj);
+	free(cu);
+	return nch;
+}
+
+/* The knots to move (those of the wiggle's spans ja..jb and f->wide
+ * beyond either side, free), the points near (on the spans one more
+ * beyond) and the curvature samples (of the wiggle's spans); 0 when too
+ * many or none. */
+static int
+fair_setup(struct work *w, struct fairing *f, size_t ja, size_t jb,
+    unsigned char *on)
+{
+	size_t ns = nseg_of(w), len = (jb + ns - ja) % ns + 1;
+
+	if (!w->closed)
+		len = jb - ja + 1;
+	f->nv = f->np = f->nt = 0;
+	if (len + 1 + 2 * (size_t)f->wide > APPROX_FAIR_KNOTS ||
+	    len + 2 + 2 * (size_t)f->wide >= ns)
+		return 0;
+	for (long o = -f->wide; o <= (long)len + f->wide; o++) {
+		size_t j = span_off(w, ja, o);
+
+		/* knot j starts span j; an open curve's last is an end */
+		if (j == ALL_SPANS || w->fixed[j] || (!w->closed &&
+		    (j == 0 || j == w->m - 1)))
+			continue;
+		f->kv[f->nv++] = j;
+	}
+	memset(on, 0, ns);
+	for (long o = -f->wide - 1; o < (long)len + f->wide + 1; o++)
+		if (span_off(w, ja, o) != ALL_SPANS)
+			on[span_off(w, ja, o)] = 1;
+	for (size_t i = 0; i < w->n; i++)
+		if (on[w->fj[i]])
+			f->pi[f->np++] = i;
+	for (size_t o = 0; o < len; o++)
+		for (size_t t = 0; t <= APPROX_FAIR_SAMPLES; t++) {
+			f->tsj[f->nt] = span_off(w, ja, (long)o);
+			f->tsu[f->nt++] = t < APPROX_FAIR_SAMPLES ? (t + 0.5) /
+			    APPROX_FAIR_SAMPLES : -1;
+		}
+	return f->nv > 0;
+}
+
+/* The normals at the knots to move, from the current curve. */
+static void
+fair_normals(const struct work *w, struct fairing *f)
+{
+	for (size_t v = 0; v < f->nv; v++) {
+		size_t j = f->kv[v];
+		double p[2], d1[2], d2[2], s;
+
+		if (j < nseg_of(w))
+			span_eval(w, j, 0, p, d1, d2);
+		else
+			span_eval(w, j - 1, 1, p, d1, d2);
+		s = hypot(d1[0], d1[1]);
+		f->nrm[v][0] = s > 0 ? -d1[1] / s : 0;
+		f->nrm[v][1] = s > 0 ? d1[0] / s : 0;
+	}
+}
+
+/* The points' feet on the curve and their curve points, and the
+ * samples' curvatures, into c0 and kap (or, after a knot's move, the
+ * column col of the derivatives, into a and g). */
+static void
+fair_eval(const struct work *w, struct fairing *f, long col, double h)
+{
+	for (size_t k = 0; k < f->np; k++) {
+		size_t i = f->pi[k];
+		double p[2];
+
+		span_eval(w, w->fj[i], w->fu[i], p, NULL, NULL);
+		if (col < 0) {
+			vcopy(f->c0 + 2 * k, p, 2);
+		} else {
+			f->a[k * f->nv + col] = (f->nf[2 * k] * (p[0] -
+			    f->c0[2 * k]) + f->nf[2 * k + 1] * (p[1] -
+			    f->c0[2 * k + 1])) / h;
+		}
+	}
+	for (size_t k = 0; k < f->nt; k++) {
+		double kl;
+
+		if (col < 0 && (k + 1) % (APPROX_FAIR_SAMPLES + 1) == 0) {
+			/* the span's least, held during the differences */
+			double q[3];
+
+			span_cross(w, f->tsj[k], q);
+			f->tsu[k] = cross_least(q, f->sign);
+		}
+		kl = kappa_len(w, f->tsj[k], f->tsu[k], f->len);
+
+		if (col < 0)
+			f->kap[k] = kl;
+		else
+			f->g[k * f->nv + col] = -f->sign * (kl - f->kap[k]) / h;
+	}
+}
+
+/* Solve the n by n symmetric positive definite a x = b (a destroyed)
+ * by Cholesky's method; -1 if a is not positive definite. */
+static int
+cholesky_solve(double *a, double *b, size_t n)
+{
+	for (size_t j = 0; j < n; j++) {
+		for (size_t k = 0; k < j; k++)
+			a[j * n + j] -= a[j * n + k] * a[j * n + k];
+		if (!(a[j * n + j] > 0))
+			return -1;
+		a[j * n + j] = sqrt(a[j * n + j]);
+		for (size_t i = j + 1; i < n; i++) {
+			for (size_t k = 0; k < j; k++)
+				a[i * n + j] -= a[i * n + k] * a[j * n + k];
+			a[i * n + j] /= a[j * n + j];
+		}
+	}
+	for (size_t i = 0; i < n; i++) {
+		for (size_t k = 0; k < i; k++)
+			b[i] -= a[i * n + k] * b[k];
+		b[i] /= a[i * n + i];
+	}
+	for (size_t i = n; i-- > 0;) {
+		for (size_t k = i + 1; k < n; k++)
+			b[i] -= a[k * n + i] * b[k];
+		b[i] /= a[i * n + i];
+	}
+	return 0;
+}
+
+/* The feet of the points near, their signed distances and normals. */
+static void
+fair_feet(struct work *w, struct fairing *f)
+{
+	for (size_t k = 0; k < f->np; k++) {
+		size_t i = f->pi[k];
+		double p[2], d1[2], d2[2], s;
+
+		project(w, w->q + i * 2, &w->fj[i], &w->fu[i]);
+		span_eval(w, w->fj[i], w->fu[i], p, d1, d2);
+		s = hypot(d1[0], d1[1]);
+		f->nf[2 * k] = s > 0 ? -d1[1] / s : 0;
+		f->nf[2 * k + 1] = s > 0 ? d1[0] / s : 0;
+		f->d[k] = f->nf[2 * k] * (w->q[2 * i] - p[0]) +
+		    f->nf[2 * k + 1] * (w->q[2 * i + 1] - p[1]);
+	}
+}
+
+/* The merit of the knots as they are: the squares of the points'
+ * distances, heavy times the squares of what they go beyond
+ * APPROX_FAIR_USE of the tolerance, lambda times the squares of what the
+ * curvature falls short of APPROX_FAIR_MARGIN in its sign; and whether
+ * a point is beyond the tolerance (*far) or a sample short (*bent). */
+static double
+fair_merit(struct work *w, struct fairing *f, double lambda, int *far,
+    int *bent)
+{
+	double sum = 0, use = APPROX_FAIR_USE * w->tol;
+
+	fair_feet(w, f);
+	fair_eval(w, f, -1, 0);
+	*far = *bent = 0;
+	for (size_t k = 0; k < f->np; k++)
+		sum += f->d[k] * f->d[k];
+	f->ss = sum;
+	for (size_t k = 0; k < f->np; k++) {
+		double over = fabs(f->d[k]) - use;
+
+		if (over > 0)
+			sum += f->heavy * over * over;
+		*far |= fabs(f->d[k]) > w->tol;
+	}
+	for (size_t k = 0; k < f->nt; k++) {
+		double gap = APPROX_FAIR_MARGIN - f->sign * f->kap[k];
+
+		if (gap > 0)
+			sum += lambda * gap * gap;
+		*bent |= gap > 0;
+	}
+	return sum;
+}
+
+/* The derivatives of the distances (a) and the curvature's shortfalls
+ * (g) in the moves of the knots along their normals, by differences. */
+static int
+fair_jacobian(struct work *w, struct fairing *f)
+{
+	double h = APPROX_FAIR_DIFF * w->tol;
+	struct loft_error err;
+
+	fair_normals(w, f);
+	for (size_t v = 0; v < f->nv; v++) {
+		double *kn = w->k + f->kv[v] * 2;
+
+		vaxpy(kn, h, f->nrm[v], 2);
+		if (fit_curve(w, &err) != 0)
+			return -1;
+		fair_eval(w, f, (long)v, h);
+		vaxpy(kn, -h, f->nrm[v], 2);
+	}
+	return fit_curve(w, &err);
+}
+
+/* The normal equations of the merit's linear model, damped by mu times
+ * their diagonal, solved into x; -1 if singular. */
+static int
+fair_solve(const struct work *w, const struct fairing *f, double lambda,
+    double mu, double *x)
+{
+	size_t nv = f->nv;
+	double m[APPROX_FAIR_KNOTS * APPROX_FAIR_KNOTS], use = APPROX_FAIR_USE *
+	    w->tol;
+
+	memset(m, 0, sizeof m);
+	memset(x, 0, nv * sizeof *x);
+	for (size_t k = 0; k < f->np; k++) {
+		const double *ak = f->a + k * nv;
+		double over = fabs(f->d[k]) - use, wt = over > 0 ? 1 + f->heavy :
+		    1, rhs = f->d[k];
+
+		if (over > 0)   /* d - a x and (|d| - use) - sgn(d) a x */
+			rhs += f->heavy * over * (f->d[k] > 0 ? 1 : -1);
+		for (size_t r = 0; r < nv; r++) {
+			x[r] += rhs * ak[r];
+			for (size_t c = 0; c < nv; c++)
+				m[r * nv + c] += wt * ak[r] * ak[c];
+		}
+	}
+	for (size_t k = 0; k < f->nt; k++) {
+		const double *gk = f->g + k * nv;
+		double gap = APPROX_FAIR_MARGIN - f->sign * f->kap[k];
+
+		if (!(gap > 0))
+			continue;
+		for (size_t r = 0; r < nv; r++) {
+			x[r] -= lambda * gap * gk[r];
+			for (size_t c = 0; c < nv; c++)
+				m[r * nv + c] += lambda * gk[r] * gk[c];
+		}
+	}
+	for (size_t r = 0; r < nv; r++)
+		m[r * nv + r] = m[r * nv + r] * (1 + mu) + 1e-300;
+	return cholesky_solve(m, x, nv);
+}
+
+/* The knots moved along their normals by s times x. */
+static void
+fair_move(struct work *w, const struct fairing *f, const double *x, double s)
+{
+	for (size_t v = 0; v < f->nv; v++)
+		vaxpy(w->k + f->kv[v] * 2, s * x[v], f->nrm[v], 2);
+}
+
+/* The first weight of the curvature: APPROX_FAIR_PENALTY times the
+ * ratio of the distances' derivatives to the curvature's. */
+static double
+fair_lambda(const struct fairing *f)
+{
+	double sa = 0, sg = 0;
+
+	for (size_t k = 0; k < f->np * f->nv; k++)
+		sa += f->a[k] * f->a[k];
+	for (size_t k = 0; k < f->nt * f->nv; k++)
+		sg += f->g[k] * f->g[k];
+	return sg > 0 ? APPROX_FAIR_PENALTY * sa / sg : 1;
+}
+
+/* Keep the knots as the best when they are right (no point near
+ * beyond the tolerance, no sample short) and fit better. */
+static void
+fair_best(const struct work *w, struct fairing *f, int far, int bent)
+{
+	if (far || bent || !(f->ss < f->best))
+		return;
+	f->best = f->ss;
+	for (size_t v = 0; v < f->nv; v++)
+		vcopy(f->kbest[v], w->k + f->kv[v] * 2, 2);
+}
+
+/*
+ * One Levenberg-Marquardt step of the fairing: the model linearised,
+ * the step damped until the merit falls (APPROX_FAIR_TRIES at most),
+ * then the weights of what is still wrong grown (all of them, and the
+ * damping reset, when no step lowers the merit).  The knots before the
+ * step are kept when the best (fair_best).  Returns -1 when a fit
+ * fails, else 0.
+ */
+static int
+fair_step(struct work *w, struct fairing *f, double *lambda, double *mu)
+{
+	double x[APPROX_FAIR_KNOTS], m0, m1;
+	struct loft_error err;
+	int far, bent;
+
+	m0 = fair_merit(w, f, *lambda, &far, &bent);
+	fair_best(w, f, far, bent);
+	if (fair_jacobian(w, f) != 0)
+		return -1;
+	if (*lambda == 0) {
+		*lambda = fair_lambda(f);
+		m0 = fair_merit(w, f, *lambda, &far, &bent);
+	}
+	for (int t = 0; t < APPROX_FAIR_TRIES; t++, *mu *= 10) {
+		if (fair_solve(w, f, *lambda, *mu, x) != 0)
+			return -1;
+		fair_move(w, f, x, 1);
+		if (fit_curve(w, &err) != 0)
+			return -1;
+		m1 = fair_merit(w, f, *lambda, &far, &bent);
+		if (m1 < m0) {
+			*mu = fmax(*mu / 10, APPROX_FAIR_MU);
+			if (bent)
+				*lambda *= APPROX_FAIR_PENALTY;
+			if (far)
+				f->heavy *= APPROX_FAIR_PENALTY;
+			return 0;
+		}
+		fair_move(w, f, x, -1);
+		if (fit_curve(w, &err) != 0)
+			return -1;
+	}
+	*lambda *= APPROX_FAIR_PENALTY;
+	f->heavy *= APPROX_FAIR_PENALTY;
+	*mu = APPROX_FAIR_MU;
+	return 0;
+}
+
+/* The bending energy of the curve (the integral of the curvature
+ * squared along it), by the midpoint rule over the curvature samples,
+ * times the curve's length len (so free of the units). */
+static double
+curve_energy(const struct work *w, double len)
+{
+	double e = 0;
+
+	for (size_t t = 0; t < nseg_of(w) * APPROX_KSAMPLES; t++) {
+		double p[2], d1[2], d2[2], u = ((t % APPROX_KSAMPLES) + 0.5) /
+		    APPROX_KSAMPLES, k;
+
+		span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
+		k = kappa_len(w, t / APPROX_KSAMPLES, u, 1);
+		e += k * k * hypot(d1[0], d1[1]) / APPROX_KSAMPLES;
+	}
+	return isfinite(e) ? e * len : HUGE_VAL;
+}
+
+/* Fair the wiggle on spans ja..jb of curvature of sign wsign; 1 if
+ * kept (every point within the tolerance, fewer inflexions than
+ * changes), else the state as it was. */
+static int
+fair_one(struct work *w, struct fairing *f, size_t ja, size_t jb, int wsign,
+    size_t changes, unsigned char *on)
+{
+	double lambda = 0, mu = APPROX_FAIR_MU, worst, energy;
+	size_t at, a2, b2;
+	struct loft_error err;
+	int rc = 0, sg;
+	double t2;
+
+	if (!fair_setup(w, f, ja, jb, on))
+		return 0;
+	f->sign = -wsign;
+	f->heavy = APPROX_FAIR_HEAVY;
+	f->len = curve_len(w);
+	energy = curve_energy(w, f->len);
+	save_state(w);
+	f->best = HUGE_VAL;
+	for (int s = 0; s < APPROX_FAIR_STEPS && rc == 0; s++)
+		rc = fair_step(w, f, &lambda, &mu);
+	if (rc >= 0) {
+		int far, bent;
+
+		fair_merit(w, f, lambda, &far, &bent);
+		fair_best(w, f, far, bent);
+	}
+	if (rc >= 0 && f->best < HUGE_VAL) {
+		for (size_t v = 0; v < f->nv; v++)
+			vcopy(w->k + f->kv[v] * 2, f->kbest[v], 2);
+		rc = fit_curve(w, &err);
+	}
+	if (rc >= 0 && f->best < HUGE_VAL &&
+	    fit_project(w, &worst, &at, &err) == 0 &&
+	    worst <= w->tol &&
+	    wiggle_exact(w, 0, &a2, &b2, &t2, &sg) < changes &&
+	    curve_energy(w, curve_len(w)) <= energy * (1 + APPROX_FAIR_ENERGY))
+		return 1;
+	restore_state(w);
+	return 0;
+}
+
+/* Fair each wiggle left, weakest first (fair_one), that turns by less
+ * than the tolerance over the mean length of a span: the tilt the band
+ * of the tolerance allows a span, which noise may take up; a wiggle
+ * that turns more the points draw. */
+static int
+fair_wiggles(struct work *w)
+{
+	struct fairing f;
+	unsigned char *on = malloc(w->m);
+	double floor = 0, turn;
+	size_t ja, jb, nmax = w->n;
+	int sg, rc = 0;
+
+	if (w->dim != 2) {
+		free(on);
+		return 0;
+	}
+	f.pi = malloc(nmax * sizeof *f.pi);
+	f.tsj = malloc(APPROX_FAIR_TS * sizeof *f.tsj);
+	f.tsu = malloc(APPROX_FAIR_TS * sizeof *f.tsu);
+	f.nf = malloc(2 * nmax * sizeof *f.nf);
+	f.c0 = malloc(2 * nmax * sizeof *f.c0);
+	f.d = malloc(nmax * sizeof *f.d);
+	f.a = malloc(nmax * APPROX_FAIR_KNOTS * sizeof *f.a);
+	f.kap = malloc(APPROX_FAIR_TS * sizeof *f.kap);
+	f.g = malloc(APPROX_FAIR_TS * APPROX_FAIR_KNOTS * sizeof *f.g);
+	if (on == NULL || f.pi == NULL || f.tsj == NULL || f.tsu == NULL ||
+	    f.nf == NULL || f.c0 == NULL || f.d == NULL || f.a == NULL || f.kap == NULL ||
+	    f.g == NULL) {
+		rc = -1;
+	} else {
+		for (;;) {
+			size_t changes = wiggle_exact(w, floor, &ja, &jb, &turn,
+			    &sg);
+
+			if (turn == HUGE_VAL)
+				break;
+			if (turn >= w->tol * nseg_of(w) / curve_len(w)) {
+				/* more than the band of the tolerance tilts a
+				 * span by: the points draw it */
+				floor = turn;
+				continue;
+			}
+			f.wide = 1;
+			if (fair_one(w, &f, ja, jb, sg, changes, on))
+				continue;
+			f.wide = APPROX_FAIR_WIDE;
+			if (!fair_one(w, &f, ja, jb, sg, changes, on))
+				floor = turn;
+		}
+	}
+	free(on);
+	free(f.pi);
+	free(f.tsj);
+	free(f.tsu);
+	free(f.nf);
+	free(f.c0);
+	free(f.d);
+	free(f.a);
+	free(f.kap);
+	free(f.g);
+	return rc;
 }
 
 /* The segments into seg from the start of the input: a closed curve's
@@ -1100,6 +1800,12 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 		}
 		if (worst <= w->tol || round >= o->maxround || split(w, ALL_SPANS) == 0)
 			break;
+		if (fit_project(w, &worst, &at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	if (worst <= w->tol && w->m <= APPROX_REMOVE_MAX) {
+		if (fair_wiggles(w) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		if (fit_project(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
 	}
