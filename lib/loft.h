@@ -51,6 +51,13 @@ int loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)))
 #endif
 	;
+#ifdef __clang_analyzer__
+/* For clang's static analyser only: it cannot see into error.c, so it
+ * would not know that the result is code and would follow paths where a
+ * failure returns 0.  code is a constant or a variable at every call. */
+#define loft_fail(err, code, ...) \
+	(loft_fail((err), (code), __VA_ARGS__), (code))
+#endif
 
 /* ------------------------------------------------------------------ */
 /* Numbers (num.c)                                                     */
