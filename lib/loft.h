@@ -621,10 +621,10 @@ int loft_curve_area(const struct loft_curve *c, double *area,
 /*
  * The centroid (dim numbers): of the region a closed plane curve bounds
  * (Green's theorem); of the curve's length (the mean of its points by
- * arc length) for an open or a space curve.  Returns 0, or LOFT_EGEOM
- * when a closed plane curve bounds no area (less than 1e-12 of the
- * square of its size: a figure of eight with equal lobes, a curve that
- * runs back along itself).
+ * arc length) for an open or a space curve.  Returns 0, LOFT_EINPUT for
+ * a curve of no pieces, or LOFT_EGEOM when a closed plane curve bounds
+ * no area (less than 1e-12 of the square of its size: a figure of eight
+ * with equal lobes, a curve that runs back along itself).
  */
 int loft_curve_centroid(const struct loft_curve *c, double *cen,
     struct loft_error *err);
