@@ -1262,10 +1262,10 @@ struct loft_skin_result {
  * directions, and the surface is tangent-plane continuous across every
  * patch edge where the sections are smooth.  Returns 0 (free out with
  * loft_skin_free), or LOFT_EINPUT / LOFT_EGEOM with err->row the index
- * of the section at fault (a bezier record, another dimension, open
- * among closed, fewer than 2 sections (3 for a closed loft), sections
- * that cross, a curve across that loft_fit cannot fit), or
- * LOFT_ENOCONV, LOFT_ENOMEM.
+ * of the section at fault (a bezier record, no segment, another
+ * dimension, open among closed, fewer than 2 sections (3 for a closed
+ * loft), sections that cross, a curve across that loft_fit cannot fit),
+ * or LOFT_ENOCONV, LOFT_ENOMEM.
  */
 int loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
     size_t ns, struct loft_skin_result *out, struct loft_error *err);
