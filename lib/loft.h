@@ -1303,7 +1303,7 @@ int loft_cutter_init(struct loft_cutter *k, const struct loft_surface *s,
     size_t ns, struct loft_error *err);
 void loft_cutter_free(struct loft_cutter *k);
 
-/* A curve of a cut: n points, dim each; closed: the last joins the
+/* A curve of a cut: n >= 1 points, dim each; closed: the last joins the
  * first (which it does not repeat). */
 struct loft_cut_curve {
 	double *p;
