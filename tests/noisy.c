@@ -278,6 +278,7 @@ main(int argc, char *argv[])
 	}
 	if (mode == 'i') {
 		info(&s);
+		free(s.seg);
 		return 0;
 	}
 	if (n < 0)
