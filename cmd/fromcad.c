@@ -62,8 +62,10 @@ slurp(FILE *fp, char **buf, size_t *len)
 		}
 	}
 	if (ferror(fp)) {
+		int e = errno;  /* read once: free may change it */
+
 		free(b);
-		return errno ? errno : EIO;
+		return e != 0 ? e : EIO;
 	}
 	*buf = b;
 	*len = n;

@@ -143,6 +143,8 @@ put_curve(struct loft_run *run, const struct plane *p,
 	size_t nseg;
 	double *seg;
 
+	if (cv->n == 0)         /* loft_cut makes none, but nothing to write */
+		return 0;
 	if (!o->cubic) {
 		put_header(&run->w, "points", p, dim, cv->closed, 0);
 		for (size_t i = 0; i <= cv->n; i++)

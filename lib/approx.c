@@ -193,14 +193,13 @@ work_alloc(struct work *w, size_t n, int dim)
 	    w->tried && w->near && w->stried && w->sdist ? 0 : -1;
 }
 
-/* The checks of the points and the tolerance, before any work. */
+/* The checks of the counts and the tolerance, before any work: after
+ * them there are at least LOFT_APPROX_MIN_OPEN points. */
 static int
-check_input(const struct loft_approx_opts *o, const double *p, size_t n,
-    int dim, struct loft_error *err)
+check_args(const struct loft_approx_opts *o, size_t n, int dim,
+    struct loft_error *err)
 {
 	size_t need = o->closed ? LOFT_APPROX_MIN_CLOSED : LOFT_APPROX_MIN_OPEN;
-	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM], far = 0, off = 0;
-	size_t b = 0;
 
 	if (dim < 2 || dim > LOFT_MAXDIM)
 		return loft_fail(err, LOFT_EINPUT, -1, "points have %d "
@@ -212,6 +211,17 @@ check_input(const struct loft_approx_opts *o, const double *p, size_t n,
 		return loft_fail(err, LOFT_EGEOM, -1, "%zu point%s: %s "
 		    "approximation needs at least %zu", n, n == 1 ? "" : "s",
 		    o->closed ? "a closed" : "an open", need);
+	return 0;
+}
+
+/* The checks of the points' spread, after check_args. */
+static int
+check_input(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, struct loft_error *err)
+{
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM], far = 0, off = 0;
+	size_t b = 0;
+
 	vcopy(lo, p, dim);
 	vcopy(hi, p, dim);
 	for (size_t i = 1; i < n; i++)
@@ -907,6 +917,8 @@ wiggle(const struct work *w, double floor, size_t *ja, size_t *jb,
 	double sum = 0, x;
 
 	*turn = HUGE_VAL;
+	if (total == 0)         /* no span: never, the ends stay knots */
+		return 0;
 	if (w->closed) {
 		/* start at a change, so that every run lies between two */
 		for (size_t t = 0; t < total; t++) {
@@ -1839,7 +1851,8 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	if (info == NULL)
 		info = &dummy;
 	memset(info, 0, sizeof *info);
-	if ((rc = check_input(o, p, n, dim, err)) != 0)
+	if ((rc = check_args(o, n, dim, err)) != 0 ||
+	    (rc = check_input(o, p, n, dim, err)) != 0)
 		return rc;
 	w.dim = dim;
 	w.closed = o->closed;

@@ -68,21 +68,22 @@ struct quad {
 	const struct loft__piece *pc;
 	loft__integrand f;
 	void *ctx;
-	int m;
 	int failed;
 	int deepest;            /* the deepest level accepted */
 	long budget;            /* intervals it may still halve */
 };
 
-/* K15 and G7 over [a, b], and K15 of |f|. */
+/* K15 and G7 over [a, b], and K15 of |f|: m values each (m goes with
+ * the arrays, apart from *q, so that the analyser sees it never change). */
 static void
-gk15(struct quad *q, double a, double b, double *k, double *g, double *kabs)
+gk15(struct quad *q, int m, double a, double b, double *k, double *g,
+    double *kabs)
 {
 	double c = 0.5 * (a + b), h = 0.5 * (b - a);
 	double f0[QUAD_MAXF], f1[QUAD_MAXF], f2[QUAD_MAXF];
 
 	q->f(q->pc, c, f0, q->ctx);
-	for (int j = 0; j < q->m; j++) {
+	for (int j = 0; j < m; j++) {
 		k[j] = wk[7] * f0[j];
 		g[j] = wg[3] * f0[j];
 		kabs[j] = wk[7] * fabs(f0[j]);
@@ -90,14 +91,14 @@ gk15(struct quad *q, double a, double b, double *k, double *g, double *kabs)
 	for (int i = 0; i < 7; i++) {
 		q->f(q->pc, c - h * xk[i], f1, q->ctx);
 		q->f(q->pc, c + h * xk[i], f2, q->ctx);
-		for (int j = 0; j < q->m; j++) {
+		for (int j = 0; j < m; j++) {
 			k[j] += wk[i] * (f1[j] + f2[j]);
 			kabs[j] += wk[i] * (fabs(f1[j]) + fabs(f2[j]));
 			if (i % 2 == 1)
 				g[j] += wg[i / 2] * (f1[j] + f2[j]);
 		}
 	}
-	for (int j = 0; j < q->m; j++) {
+	for (int j = 0; j < m; j++) {
 		k[j] *= h;
 		g[j] *= h;
 		kabs[j] *= h;
@@ -106,14 +107,14 @@ gk15(struct quad *q, double a, double b, double *k, double *g, double *kabs)
 
 /* Accept [a, b] (K15 in k, G7 in g) or halve it, each half tol / 2. */
 static void
-adapt(struct quad *q, double a, double b, const double *k, const double *g,
-    const double *tol, int depth, double *sum)
+adapt(struct quad *q, int m, double a, double b, const double *k,
+    const double *g, const double *tol, int depth, double *sum)
 {
 	double k1[QUAD_MAXF], g1[QUAD_MAXF], k2[QUAD_MAXF], g2[QUAD_MAXF],
 	    abs1[QUAD_MAXF], abs2[QUAD_MAXF], half[QUAD_MAXF];
 	int ok = 1;
 
-	for (int j = 0; j < q->m; j++) {
+	for (int j = 0; j < m; j++) {
 		if (!(fabs(k[j] - g[j]) <= tol[j]))
 			ok = 0;
 		if (!isfinite(k[j]))
@@ -126,16 +127,16 @@ adapt(struct quad *q, double a, double b, const double *k, const double *g,
 			q->failed = 1;
 		if (depth > q->deepest)
 			q->deepest = depth;
-		for (int j = 0; j < q->m; j++)
+		for (int j = 0; j < m; j++)
 			sum[j] += k[j];
 		return;
 	}
-	gk15(q, a, 0.5 * (a + b), k1, g1, abs1);
-	gk15(q, 0.5 * (a + b), b, k2, g2, abs2);
-	for (int j = 0; j < q->m; j++)
+	gk15(q, m, a, 0.5 * (a + b), k1, g1, abs1);
+	gk15(q, m, 0.5 * (a + b), b, k2, g2, abs2);
+	for (int j = 0; j < m; j++)
 		half[j] = 0.5 * tol[j];
-	adapt(q, a, 0.5 * (a + b), k1, g1, half, depth + 1, sum);
-	adapt(q, 0.5 * (a + b), b, k2, g2, half, depth + 1, sum);
+	adapt(q, m, a, 0.5 * (a + b), k1, g1, half, depth + 1, sum);
+	adapt(q, m, 0.5 * (a + b), b, k2, g2, half, depth + 1, sum);
 }
 
 int
@@ -143,15 +144,15 @@ loft__quad(const struct loft__piece *pc, double a, double b, int m,
     loft__integrand f, void *ctx, double rel, const double *floor,
     double *sum, int *depth)
 {
-	struct quad q = { pc, f, ctx, m, 0, 0, QUAD_BUDGET };
+	struct quad q = { pc, f, ctx, 0, 0, QUAD_BUDGET };
 	double k[QUAD_MAXF], g[QUAD_MAXF], kabs[QUAD_MAXF], tol[QUAD_MAXF];
 
 	if (!(b > a))
 		return 0;
-	gk15(&q, a, b, k, g, kabs);
+	gk15(&q, m, a, b, k, g, kabs);
 	for (int j = 0; j < m; j++)
 		tol[j] = rel * kabs[j] + (floor != NULL ? floor[j] * (b - a) : 0);
-	adapt(&q, a, b, k, g, tol, 0, sum);
+	adapt(&q, m, a, b, k, g, tol, 0, sum);
 	if (depth != NULL)
 		*depth = q.deepest;
 	return q.failed ? LOFT_ENOCONV : 0;

@@ -68,8 +68,7 @@ loft_bezier_split(const double *ctl, int deg, int dim, double t,
 	double w[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
 	int n = deg + 1;
 
-	for (int i = 0; i < n * dim; i++)
-		w[i] = ctl[i];
+	memcpy(w, ctl, (size_t)n * dim * sizeof *w);
 	for (int r = 0; r < n; r++) {
 		/* w[0..n-r) is the r-th level of the triangle */
 		if (left != NULL)

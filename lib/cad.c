@@ -599,26 +599,28 @@ steps_for(const double *ctl, int m, int n, double tol)
 		for (int j = 0; j <= n; j++) {
 			double a[3];
 
-			for (int k = 0; k < 3; k++) {
-				if (i + 2 <= m)
-					a[k] = P(i + 2, j)[k] - 2 * P(i + 1, j)[k] +
-					    P(i, j)[k];
+			if (i + 2 <= m) {
+				for (int k = 0; k < 3; k++)
+					a[k] = P(i + 2, j)[k] -
+					    2 * P(i + 1, j)[k] + P(i, j)[k];
+				if ((t = m * (m - 1) * vnorm(a, 3)) > muu)
+					muu = t;
 			}
-			if (i + 2 <= m && (t = m * (m - 1) * vnorm(a, 3)) > muu)
-				muu = t;
-			for (int k = 0; k < 3; k++)
-				if (j + 2 <= n)
-					a[k] = P(i, j + 2)[k] - 2 * P(i, j + 1)[k] +
+			if (j + 2 <= n) {
+				for (int k = 0; k < 3; k++)
+					a[k] = P(i, j + 2)[k] -
+					    2 * P(i, j + 1)[k] + P(i, j)[k];
+				if ((t = n * (n - 1) * vnorm(a, 3)) > mvv)
+					mvv = t;
+			}
+			if (i + 1 <= m && j + 1 <= n) {
+				for (int k = 0; k < 3; k++)
+					a[k] = P(i + 1, j + 1)[k] -
+					    P(i + 1, j)[k] - P(i, j + 1)[k] +
 					    P(i, j)[k];
-			if (j + 2 <= n && (t = n * (n - 1) * vnorm(a, 3)) > mvv)
-				mvv = t;
-			for (int k = 0; k < 3; k++)
-				if (i + 1 <= m && j + 1 <= n)
-					a[k] = P(i + 1, j + 1)[k] - P(i + 1, j)[k] -
-					    P(i, j + 1)[k] + P(i, j)[k];
-			if (i + 1 <= m && j + 1 <= n &&
-			    (t = m * n * vnorm(a, 3)) > muv)
-				muv = t;
+				if ((t = m * n * vnorm(a, 3)) > muv)
+					muv = t;
+			}
 		}
 #undef P
 	t = ceil(sqrt((muu + 2 * muv + mvv) / (8 * tol)));

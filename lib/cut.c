@@ -198,7 +198,7 @@ static int
 refine(const struct ctx *c, const struct root *a, const struct root *b,
     int depth, struct piece *pc)
 {
-	struct root m;
+	struct root m = { 0 };  /* m.p is set by project, before it is read */
 	double reach = 2 * (fabs(a->u - b->u) + fabs(a->v - b->v)) + 1e-9;
 
 	m.u = (a->u + b->u) / 2;

@@ -90,13 +90,15 @@ entity(struct loft_cad_doc *d, const char *type, const char *subclass)
 		group(d, 100, subclass);
 }
 
-/* A point's groups 10, 20 (and 30), the bulk of a large DXF. */
+/* A point's groups 10, 20 (and 30), the bulk of a large DXF.  dim is 2
+ * or 3 (cad.c's records); the bound on codes only makes that plain. */
 static void
 point(struct loft_cad_doc *d, const double *p, int dim)
 {
-	static const char *const codes[] = { " 10\n", " 20\n", " 30\n" };
+	static const char *const codes[LOFT_MAXDIM] = { " 10\n", " 20\n",
+	    " 30\n" };
 
-	for (int k = 0; k < dim; k++) {
+	for (int k = 0; k < dim && k < LOFT_MAXDIM; k++) {
 		loft_cad_put(d, codes[k], 4);
 		loft_cad_putnum(d, p[k]);
 		loft_cad_put(d, "\n", 1);

@@ -7,6 +7,8 @@
 
 #include "internal.h"
 
+#undef loft_fail        /* the analyser's macro (loft.h), not here */
+
 int
 loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
 {

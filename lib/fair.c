@@ -361,7 +361,7 @@ static void
 direction(size_t m, const double *g, double *d, double *const *sv,
     double *const *yv, const double *rho, int k, int k0)
 {
-	double al[FAIR_MEMORY], gamma = 1;
+	double al[FAIR_MEMORY] = { 0 }, gamma = 1;     /* al[0..k) is set */
 
 	memcpy(d, g, m * sizeof *d);
 	for (int j = k - 1; j >= 0; j--) {
@@ -448,7 +448,6 @@ descend(struct fair *f, double *x, double *h, double *v, double e)
 			break;
 		}
 		if (e - en < FAIR_SETTLED * e) {
-			e = en;
 			it++;
 			break;
 		}

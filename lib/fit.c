@@ -308,9 +308,9 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 			a = k == 0 ? 0 : o->corner[k - 1];
 			b = k < nc ? o->corner[k] : n - 1;
 		}
-		if (b == a)             /* a corner at an end of an open curve */
+		len = b - a + 1;        /* corners increase (check_knots) */
+		if (len < 2)            /* a corner at an end of an open curve */
 			continue;
-		len = b - a + 1;
 		for (size_t i = 0; i < len; i++)
 			vcopy(pk + i * dim, q + ((a + i) % n) * dim, dim);
 		po.closed = 0;

@@ -51,6 +51,13 @@ int loft_fail(struct loft_error *err, int code, long row, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)))
 #endif
 	;
+#ifdef __clang_analyzer__
+/* For clang's static analyser only: it cannot see into error.c, so it
+ * would not know that the result is code and would follow paths where a
+ * failure returns 0.  code is a constant or a variable at every call. */
+#define loft_fail(err, code, ...) \
+	(loft_fail((err), (code), __VA_ARGS__), (code))
+#endif
 
 /* ------------------------------------------------------------------ */
 /* Numbers (num.c)                                                     */
@@ -614,10 +621,10 @@ int loft_curve_area(const struct loft_curve *c, double *area,
 /*
  * The centroid (dim numbers): of the region a closed plane curve bounds
  * (Green's theorem); of the curve's length (the mean of its points by
- * arc length) for an open or a space curve.  Returns 0, or LOFT_EGEOM
- * when a closed plane curve bounds no area (less than 1e-12 of the
- * square of its size: a figure of eight with equal lobes, a curve that
- * runs back along itself).
+ * arc length) for an open or a space curve.  Returns 0, LOFT_EINPUT for
+ * a curve of no pieces, or LOFT_EGEOM when a closed plane curve bounds
+ * no area (less than 1e-12 of the square of its size: a figure of eight
+ * with equal lobes, a curve that runs back along itself).
  */
 int loft_curve_centroid(const struct loft_curve *c, double *cen,
     struct loft_error *err);
@@ -1255,10 +1262,10 @@ struct loft_skin_result {
  * directions, and the surface is tangent-plane continuous across every
  * patch edge where the sections are smooth.  Returns 0 (free out with
  * loft_skin_free), or LOFT_EINPUT / LOFT_EGEOM with err->row the index
- * of the section at fault (a bezier record, another dimension, open
- * among closed, fewer than 2 sections (3 for a closed loft), sections
- * that cross, a curve across that loft_fit cannot fit), or
- * LOFT_ENOCONV, LOFT_ENOMEM.
+ * of the section at fault (a bezier record, no segment, another
+ * dimension, open among closed, fewer than 2 sections (3 for a closed
+ * loft), sections that cross, a curve across that loft_fit cannot fit),
+ * or LOFT_ENOCONV, LOFT_ENOMEM.
  */
 int loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
     size_t ns, struct loft_skin_result *out, struct loft_error *err);
@@ -1296,7 +1303,7 @@ int loft_cutter_init(struct loft_cutter *k, const struct loft_surface *s,
     size_t ns, struct loft_error *err);
 void loft_cutter_free(struct loft_cutter *k);
 
-/* A curve of a cut: n points, dim each; closed: the last joins the
+/* A curve of a cut: n >= 1 points, dim each; closed: the last joins the
  * first (which it does not repeat). */
 struct loft_cut_curve {
 	double *p;

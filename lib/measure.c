@@ -157,10 +157,14 @@ loft_curve_centroid(const struct loft_curve *c, double *cen,
 	struct loft__piece pc;
 	double o[LOFT_MAXDIM], sum[LOFT_MAXDIM + 1] = { 0 };
 
+	if (c->npieces == 0)    /* o below is the first piece's start */
+		return loft_fail(err, LOFT_EINPUT, -1, "a curve of no pieces "
+		    "has no centroid");
 	if (c->closed && c->dim == 2) {
-		double area, mx, my, size = loft__curve_extent(c);
+		double area, mx, my, size;
 
 		plane_moments(c, o, &area, &mx, &my);
+		size = loft__curve_extent(c);
 		if (!(fabs(area) > AREA_ZERO * size * size))
 			return loft_fail(err, LOFT_EGEOM, -1, "the closed curve "
 			    "encloses no area: its centroid is undefined");

@@ -868,7 +868,9 @@ normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
 	    m > LOFT_NORMAL_MAXDEG || n > LOFT_NORMAL_MAXDEG)
 		return loft_fail(err, LOFT_EINPUT, -1, "degrees %d,%d: want %d "
 		    "to %d each", m, n, clamp ? 3 : 1, LOFT_NORMAL_MAXDEG);
-	nrm = malloc((size_t)m * n * 3 * sizeof *nrm);
+	/* zeroed: surface_stations sets the (m - 1)(n - 1) surface_solve
+	 * reads, and no entry is ever left unset */
+	nrm = calloc((size_t)m * n * 3, sizeof *nrm);
 	if (nrm == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	rc = squad_make(&s, x, m, n, err);

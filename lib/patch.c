@@ -39,7 +39,7 @@ loft_patch_eval(const double *b, int dim, double u, double v,
 	for (int i = 0; i < 5; i++) {
 		for (int j = 0; j < 5; j++)
 			k[j] = BIJ(b, i, j, dim);
-		loft__quartic_combine(k, dim, v, g[i], dv ? gv[i] : NULL,
+		loft__quartic_combine(k, dim, v, g[i], dv ? &gv[i][0] : NULL,
 		    NULL);
 	}
 	for (int i = 0; i < 5; i++)
@@ -113,7 +113,8 @@ loft_patch_split_coef(const double *b, int dim, int dir, double t,
 double
 loft_patch_size(const double *b, int dim)
 {
-	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], p[LOFT_MAXDIM], s = 0;
+	double lo[LOFT_MAXDIM] = { 0 }, hi[LOFT_MAXDIM] = { 0 }, p[LOFT_MAXDIM];
+	double s = 0;           /* lo, hi: set at (0, 0) first */
 
 	for (int i = 0; i <= 4; i++)
 		for (int j = 0; j <= 4; j++) {
@@ -197,7 +198,8 @@ loft_patch_coons(const double *const *cv, int dim, double *b,
 		{ "(00)", 0, 0, 2, 0 }, { "(10)", 0, 1, 3, 0 },
 		{ "(01)", 1, 0, 2, 1 }, { "(11)", 1, 1, 3, 1 },
 	};
-	double corner[4 * LOFT_MAXDIM], lo[LOFT_MAXDIM], hi[LOFT_MAXDIM];
+	double corner[4 * LOFT_MAXDIM], lo[LOFT_MAXDIM] = { 0 },
+	    hi[LOFT_MAXDIM] = { 0 };    /* set by the first end first */
 	double size = 0;
 
 	if (dim < 2 || dim > LOFT_MAXDIM)

@@ -92,7 +92,7 @@ loft_quartic_eval(const double *q, int dim, double u,
 void
 loft_cubic_to_quartic(const double *cubic, int dim, double *q)
 {
-	double h[LOFT_MAXDIM];
+	double h[LOFT_MAXDIM] = { 0 };
 
 	for (int c = 0; c < dim; c++)
 		h[c] = (cubic[c] + cubic[dim + c]) / 2 +

@@ -121,21 +121,22 @@ piece(const struct loft_curve *c, size_t i, double lo, double hi, double *q)
 
 /*
  * The common segmentation: the union of every section's breakpoints
- * i / m in its normalised parameter; with closed sections, a count
+ * i / m in its normalised parameter; with closed sections (cs), a count
  * that is even or below 3 is made odd by halving the longest interval
  * (the ring of conditions on c, below, is then solvable, and no patch
- * is its own neighbour).  Writes ns * nseg quartics to s->seg.
+ * is its own neighbour).  Returns them (malloc'd, *count of them, from
+ * 0 to 1), or NULL without memory.
  */
-static int
-refine(struct skin *s, const struct loft_curve *sec, struct loft_error *err)
+static double *
+breakpoints(const struct loft_curve *sec, size_t ns, int cs, size_t *count)
 {
-	size_t total = 0, n = 0, ns = s->ns;
+	size_t total = 0, n = 0;
 	double *t;
 
 	for (size_t k = 0; k < ns; k++)
 		total += sec[k].npieces + 1;
 	if ((t = malloc((total + 1) * sizeof *t)) == NULL)
-		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		return NULL;
 	for (size_t k = 0; k < ns; k++)
 		for (size_t i = 0; i <= sec[k].npieces; i++)
 			t[n++] = (double)i / (double)sec[k].npieces;
@@ -145,7 +146,7 @@ refine(struct skin *s, const struct loft_curve *sec, struct loft_error *err)
 		if (t[i] - t[total - 1] > BREAK_EPS)
 			t[total++] = t[i];
 	t[total - 1] = 1;
-	while (s->cs && ((total - 1) % 2 == 0 || total - 1 < 3)) {
+	while (cs && ((total - 1) % 2 == 0 || total - 1 < 3)) {
 		size_t big = 0;
 
 		for (size_t i = 1; i + 1 < total; i++)
@@ -155,14 +156,16 @@ refine(struct skin *s, const struct loft_curve *sec, struct loft_error *err)
 		t[big + 1] = (t[big] + t[big + 2]) / 2;
 		total++;
 	}
-	s->nseg = total - 1;
-	s->nodes = s->cs ? s->nseg : s->nseg + 1;
-	if ((s->seg = malloc(ns * s->nseg * 5 * s->dim * sizeof *s->seg)) ==
-	    NULL) {
-		free(t);
-		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	}
-	for (size_t k = 0; k < ns; k++) {
+	*count = total;
+	return t;
+}
+
+/* Split the sections at the common breakpoints t (nseg + 1 of them):
+ * ns * nseg quartics in s->seg. */
+static void
+refine(const struct skin *s, const struct loft_curve *sec, const double *t)
+{
+	for (size_t k = 0; k < s->ns; k++) {
 		double m = (double)sec[k].npieces;
 
 		for (size_t j = 0; j < s->nseg; j++) {
@@ -179,8 +182,6 @@ refine(struct skin *s, const struct loft_curve *sec, struct loft_error *err)
 			piece(&sec[k], i, lo, hi, SEG(s, k, j));
 		}
 	}
-	free(t);
-	return 0;
 }
 
 /* The patch strip k lies between sections k and k + 1 (mod ns). */
@@ -232,7 +233,8 @@ check_order(const struct skin *s, struct loft_error *err)
  * fit's direction, the mean of its two sides' magnitudes.
  */
 static int
-cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
+cross(const struct skin *s, const struct loft_skin_opts *o,
+    struct loft_error *err)
 {
 	struct loft_fit_opts fo;
 	size_t ns = s->ns;
@@ -241,9 +243,7 @@ cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
 
 	p = malloc(ns * dim * sizeof *p);
 	cs = malloc(4 * dim * ns * sizeof *cs);
-	s->su = malloc(s->nstrip * sizeof *s->su);
-	s->t = malloc(ns * s->nodes * dim * sizeof *s->t);
-	if (p == NULL || cs == NULL || s->su == NULL || s->t == NULL) {
+	if (p == NULL || cs == NULL) {
 		free(p);
 		free(cs);
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -277,9 +277,10 @@ cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
 			break;
 		}
 		for (size_t k = 0; k < ns; k++) {
-			/* leaving section k in strip k, arriving from k - 1 */
-			int hr = s->cl || k + 1 < ns, hl = s->cl || k > 0;
+			/* leaving section k in strip k, arriving from k - 1
+			 * (from ns - 1 when closed), where the strip is */
 			size_t kl = k > 0 ? k - 1 : ns - 1;
+			int hr = k < s->nstrip, hl = kl < s->nstrip;
 			const double *ca = cs + 4 * dim * k + 2 * dim;
 			const double *cb = cs + 4 * dim * kl + 3 * dim;
 			double dir[LOFT_MAXDIM] = { 0 }, u[LOFT_MAXDIM], mag = 0;
@@ -307,7 +308,7 @@ cross(struct skin *s, const struct loft_skin_opts *o, struct loft_error *err)
  * before it where they are one direction, else 0 (a corner, or an end
  * of an open section). */
 static void
-ratios(struct skin *s)
+ratios(const struct skin *s)
 {
 	int dim = s->dim;
 
@@ -382,7 +383,7 @@ cubic_form(const struct skin *s, size_t k, size_t j)
  * no such term (c = 0): the corners' twists then cannot all agree.
  */
 static void
-solve_c(struct skin *s, size_t k, double *m, int *eq)
+solve_c(const struct skin *s, size_t k, double *m, int *eq)
 {
 	size_t n = s->nseg, nn = s->cs ? n : n + 1, start = 0;
 	double *c = s->c + k * n, sig = s->su[k] / s->su[prev(s, k)];
@@ -480,7 +481,7 @@ tie(double *const *q, int *known, int a, int b, double mul, double add,
  * relations across the edges between them.
  */
 static void
-corner(struct skin *s, size_t k, size_t j)
+corner(const struct skin *s, size_t k, size_t j)
 {
 	int dim = s->dim, known[4] = { 0 }, have[4];
 	size_t kk[4], jj[4];
@@ -559,7 +560,7 @@ cubic_mid(const double *x0, const double *x1, const double *d0,
 
 /* Everything of patch (k, j) but (0h)_u, (h0)_v and (hh). */
 static void
-fill(struct skin *s, size_t k, size_t j)
+fill(const struct skin *s, size_t k, size_t j)
 {
 	int dim = s->dim;
 	size_t k1 = next(s, k);
@@ -587,7 +588,7 @@ fill(struct skin *s, size_t k, size_t j)
 /* (0h)_u, (h0)_v and (hh) of patch (k, j), from its neighbours below
  * and to the left where the relations tie them. */
 static void
-finish(struct skin *s, size_t k, size_t j)
+finish(const struct skin *s, size_t k, size_t j)
 {
 	int dim = s->dim;
 	size_t n = s->nseg;
@@ -631,28 +632,41 @@ skin_free(struct skin *s)
 	free(s->b);
 }
 
-/* Check the sections: curve types, dimension, open or closed, count. */
+/* Check section k against the first: curve type, dimension, open or
+ * closed. */
+static int
+check_section(const struct loft_curve *sec, size_t k, struct loft_error *err)
+{
+	if (sec[k].eval_ctl != NULL || (sec[k].rowlen != 4 * sec[k].dim &&
+	    sec[k].rowlen != 5 * sec[k].dim))
+		return loft_fail(err, LOFT_EINPUT, (long)k, "a %s record: "
+		    "a section is a cubic or quartic curve", sec[k].type);
+	if (sec[k].npieces == 0)
+		return loft_fail(err, LOFT_EINPUT, (long)k, "section %zu "
+		    "has no segment", k + 1);
+	if (sec[k].dim != sec[0].dim)
+		return loft_fail(err, LOFT_EINPUT, (long)k, "section %zu "
+		    "has %d coordinates, section 1 %d", k + 1,
+		    sec[k].dim, sec[0].dim);
+	if (sec[k].closed != sec[0].closed)
+		return loft_fail(err, LOFT_EINPUT, (long)k, "section %zu "
+		    "is %s, section 1 %s: sections are all open or all "
+		    "closed", k + 1, sec[k].closed ? "closed" : "open",
+		    sec[0].closed ? "closed" : "open");
+	return 0;
+}
+
+/* Check the sections, each (check_section), then their count. */
 static int
 check_sections(const struct loft_skin_opts *o, const struct loft_curve *sec,
     size_t ns, struct loft_error *err)
 {
 	size_t need = o->closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN;
+	int rc;
 
-	for (size_t k = 0; k < ns; k++) {
-		if (sec[k].eval_ctl != NULL || (sec[k].rowlen != 4 * sec[k].dim &&
-		    sec[k].rowlen != 5 * sec[k].dim))
-			return loft_fail(err, LOFT_EINPUT, (long)k, "a %s record: "
-			    "a section is a cubic or quartic curve", sec[k].type);
-		if (sec[k].dim != sec[0].dim)
-			return loft_fail(err, LOFT_EINPUT, (long)k, "section %zu "
-			    "has %d coordinates, section 1 %d", k + 1,
-			    sec[k].dim, sec[0].dim);
-		if (sec[k].closed != sec[0].closed)
-			return loft_fail(err, LOFT_EINPUT, (long)k, "section %zu "
-			    "is %s, section 1 %s: sections are all open or all "
-			    "closed", k + 1, sec[k].closed ? "closed" : "open",
-			    sec[0].closed ? "closed" : "open");
-	}
+	for (size_t k = 0; k < ns; k++)
+		if ((rc = check_section(sec, k, err)) != 0)
+			return rc;
 	if (ns < need)
 		return loft_fail(err, LOFT_EINPUT, ns > 0 ? 0 : -1, "%zu "
 		    "section%s: a%s loft needs at least %zu", ns,
@@ -665,8 +679,9 @@ loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
     size_t ns, struct loft_skin_result *out, struct loft_error *err)
 {
 	struct skin s;
-	double *m = NULL;
+	double *m = NULL, *t;
 	int *eq = NULL, rc;
+	size_t nbreak;
 
 	memset(out, 0, sizeof *out);
 	memset(&s, 0, sizeof s);
@@ -677,8 +692,27 @@ loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
 	s.cl = o->closed;
 	s.ns = ns;
 	s.nstrip = s.cl ? ns : ns - 1;
-	if ((rc = refine(&s, sec, err)) != 0 || (rc = check_order(&s, err)) != 0 ||
-	    (rc = cross(&s, o, err)) != 0) {
+	if ((t = breakpoints(sec, ns, s.cs, &nbreak)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (nbreak < 2) {       /* never: each section has 0 and 1 */
+		free(t);
+		return loft_fail(err, LOFT_EINPUT, -1, "no segment to loft");
+	}
+	/* the helpers below take the skin const, so that what is set here
+	 * stays plainly set; they fill the arrays */
+	s.nseg = nbreak - 1;
+	s.nodes = s.cs ? s.nseg : s.nseg + 1;
+	s.seg = malloc(ns * s.nseg * 5 * s.dim * sizeof *s.seg);
+	s.su = malloc(s.nstrip * sizeof *s.su);
+	s.t = malloc(ns * s.nodes * s.dim * sizeof *s.t);
+	if (s.seg == NULL || s.su == NULL || s.t == NULL) {
+		free(t);
+		skin_free(&s);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	refine(&s, sec, t);
+	free(t);
+	if ((rc = check_order(&s, err)) != 0 || (rc = cross(&s, o, err)) != 0) {
 		skin_free(&s);
 		return rc;
 	}
@@ -696,12 +730,12 @@ loft_skin(const struct loft_skin_opts *o, const struct loft_curve *sec,
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	}
 	ratios(&s);
-	for (size_t k = 0; k < ns; k++)
+	for (size_t k = 0; k < s.ns; k++)
 		if (interior(&s, k))
 			solve_c(&s, k, m, eq);
 	free(m);
 	free(eq);
-	for (size_t k = 0; k < ns; k++)
+	for (size_t k = 0; k < s.ns; k++)
 		for (size_t j = 0; j <= s.nseg; j++)
 			if (j < s.nseg || !s.cs)
 				corner(&s, k, j);

@@ -329,7 +329,6 @@ loft_read(struct loft_reader *rd, struct loft_record *rec,
 		if (kind == L_NOMEM) {
 			if (!started)
 				rec->line = rd->lineno;
-			started = 1;
 			goto nomem;
 		}
 		if (kind == L_EOF || (kind == L_BLANK && started))

@@ -1050,6 +1050,8 @@ element(struct svg *s, const struct elem *el, int opens)
 		root_map(s, el, lv.m);
 		if (transform(s, el, t) == 0)
 			mat_mul(lv.m, t, lv.m);
+	} else if (up == NULL) {
+		return 1;       /* never: the read ends when the root closes */
 	} else if (memchr(el->name, ':', el->nn) != NULL ||
 	    in_list(el, quiet)) {
 		return 1;

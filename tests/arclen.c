@@ -173,6 +173,25 @@ test_jump(void)
 	    "1 and the arc of y = t^2 to t = 1");
 }
 
+/*
+ * A curve of no pieces (loft_curve_cubic takes nseg = 0) has no first
+ * point to measure from: the centroid is refused, not made of garbage.
+ */
+static void
+test_no_pieces(void)
+{
+	double none[16] = { 0 };
+	struct loft_curve c;
+	struct loft_error err;
+	double cen[2];
+
+	for (int closed = 0; closed < 2; closed++) {
+		loft_curve_cubic(&c, none, 0, 2, closed);
+		CHECK(loft_curve_centroid(&c, cen, &err) == LOFT_EINPUT,
+		    "no centroid of no pieces (closed=%d)", closed);
+	}
+}
+
 int
 main(void)
 {
@@ -180,5 +199,6 @@ main(void)
 	test_arc();
 	test_flatten();
 	test_jump();
+	test_no_pieces();
 	return check_done("arclen");
 }

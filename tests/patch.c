@@ -1180,6 +1180,28 @@ test_coons(void)
 	    "%s", err.msg);
 }
 
+/*
+ * loft_skin on a section of no segments (loft_curve_cubic takes nseg =
+ * 0): refused, with the row naming that section, not read past its end.
+ */
+static void
+test_skin_no_segment(void)
+{
+	/* the line (0,0)-(1,0) as a cubic: ends, then end tangents */
+	double line[] = { 0, 0, 1, 0, 1, 0, 1, 0 };
+	double moved[] = { 0, 1, 1, 1, 1, 0, 1, 0 };
+	struct loft_skin_opts o = { 0 };
+	struct loft_skin_result r;
+	struct loft_curve sec[3];
+	struct loft_error err;
+
+	loft_curve_cubic(&sec[0], line, 1, 2, 0);
+	loft_curve_cubic(&sec[1], moved, 0, 2, 0);
+	loft_curve_cubic(&sec[2], moved, 1, 2, 0);
+	CHECK(loft_skin(&o, sec, 3, &r, &err) == LOFT_EINPUT && err.row == 1,
+	    "a section of no segment is refused at row 1");
+}
+
 int
 main(void)
 {
@@ -1200,6 +1222,7 @@ main(void)
 	test_project();
 	test_join();
 	test_coons();
+	test_skin_no_segment();
 	printf("continuity over all designs: edges apart %.3g of the size, "
 	    "slopes differ by %.3g\n", cont_pos, cont_slope);
 	return check_done("patch");
