@@ -1582,7 +1582,7 @@ fair_best(const struct work *w, struct fairing *f, int far, int bent)
 static int
 fair_step(struct work *w, struct fairing *f, double *lambda, double *mu)
 {
-	double x[APPROX_FAIR_KNOTS], m0, m1;
+	double x[APPROX_FAIR_KNOTS] = { 0 }, m0, m1;  /* f->nv of them */
 	struct loft_error err;
 	int far, bent;
 

@@ -243,7 +243,7 @@ make_polyline(const struct loft_cad_doc *d, struct pts *s,
 		const double *q = c->ctl + i * (c->deg + 1) * c->dim;
 		long n = per > 0 ? per : loft_bezier_steps(q, c->deg, c->dim, tol,
 		    MAX_STEPS_PIECE);
-		double p[LOFT_MAXDIM];
+		double p[LOFT_MAXDIM] = { 0 };  /* s->dim == c->dim numbers */
 
 		if (n == 0)
 			return loft_fail(err, LOFT_EGEOM, -1, "the tolerance %g "
