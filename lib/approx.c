@@ -1392,36 +1392,6 @@ fair_eval(const struct work *w, struct fairing *f, long col, double h)
 	}
 }
 
-/* Solve the n by n symmetric positive definite a x = b (a destroyed)
- * by Cholesky's method; -1 if a is not positive definite. */
-static int
-cholesky_solve(double *a, double *b, size_t n)
-{
-	for (size_t j = 0; j < n; j++) {
-		for (size_t k = 0; k < j; k++)
-			a[j * n + j] -= a[j * n + k] * a[j * n + k];
-		if (!(a[j * n + j] > 0))
-			return -1;
-		a[j * n + j] = sqrt(a[j * n + j]);
-		for (size_t i = j + 1; i < n; i++) {
-			for (size_t k = 0; k < j; k++)
-				a[i * n + j] -= a[i * n + k] * a[j * n + k];
-			a[i * n + j] /= a[j * n + j];
-		}
-	}
-	for (size_t i = 0; i < n; i++) {
-		for (size_t k = 0; k < i; k++)
-			b[i] -= a[i * n + k] * b[k];
-		b[i] /= a[i * n + i];
-	}
-	for (size_t i = n; i-- > 0;) {
-		for (size_t k = i + 1; k < n; k++)
-			b[i] -= a[k * n + i] * b[k];
-		b[i] /= a[i * n + i];
-	}
-	return 0;
-}
-
 /* The feet of the points near, their signed distances and normals. */
 static void
 fair_feet(struct work *w, struct fairing *f)
@@ -1534,7 +1504,7 @@ fair_solve(const struct work *w, const struct fairing *f, double lambda,
 	}
 	for (size_t r = 0; r < nv; r++)
 		m[r * nv + r] = m[r * nv + r] * (1 + mu) + 1e-300;
-	return cholesky_solve(m, x, nv);
+	return loft__cholesky_solve(m, x, nv, 0, NULL, NULL);
 }
 
 /* The knots moved along their normals by s times x. */

@@ -206,6 +206,16 @@ int loft__decimal_text(char *buf, uint64_t d, int e, int prec);
 int loft__floor_log10_pow2(int q);
 int loft__floor_log10_3q_pow2(int q);
 
+/*
+ * cholesky.c: solve A x = b in place of b, A the symmetric positive
+ * definite n x n matrix a (row-major, overwritten by its Cholesky
+ * factor).  Returns 0, or -1 when a pivot is not above rel times A's
+ * largest diagonal (rel 0: not positive), with its index in *at and its
+ * ratio to that diagonal in *pivot (either may be NULL); b is then
+ * unchanged.
+ */
+int loft__cholesky_solve(double *a, double *b, size_t n, double rel,
+    size_t *at, double *pivot);
 /* grow.c: grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
 

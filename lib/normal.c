@@ -216,48 +216,17 @@ all_finite(const double *v, int n)
 	return 1;
 }
 
-/*
- * Solve A x = b for the symmetric positive definite n x n matrix A
- * (overwritten by its Cholesky factor) in place of b.
- */
+/* loft__cholesky_solve, with the message of a singular system. */
 static int
 cholesky_solve(double *a, double *b, size_t n, struct loft_error *err)
 {
-	double big = 0;
+	size_t j;
+	double pivot;
 
-	for (size_t i = 0; i < n; i++)
-		if (a[i * n + i] > big)
-			big = a[i * n + i];
-	for (size_t j = 0; j < n; j++) {
-		double d = a[j * n + j];
-
-		for (size_t k = 0; k < j; k++)
-			d -= a[j * n + k] * a[j * n + k];
-		if (!(d > SINGULAR_TOL * big))
-			return loft_fail(err, LOFT_EGEOM, -1, "the system for "
-			    "the control points is singular (pivot %zu of "
-			    "%zu is %.3g of the largest)", j + 1, n,
-			    big > 0 ? d / big : 0);
-		d = sqrt(d);
-		a[j * n + j] = d;
-		for (size_t i = j + 1; i < n; i++) {
-			double s = a[i * n + j];
-
-			for (size_t k = 0; k < j; k++)
-				s -= a[i * n + k] * a[j * n + k];
-			a[i * n + j] = s / d;
-		}
-	}
-	for (size_t i = 0; i < n; i++) {
-		for (size_t k = 0; k < i; k++)
-			b[i] -= a[i * n + k] * b[k];
-		b[i] /= a[i * n + i];
-	}
-	for (size_t i = n; i-- > 0;) {
-		for (size_t k = i + 1; k < n; k++)
-			b[i] -= a[k * n + i] * b[k];
-		b[i] /= a[i * n + i];
-	}
+	if (loft__cholesky_solve(a, b, n, SINGULAR_TOL, &j, &pivot) != 0)
+		return loft_fail(err, LOFT_EGEOM, -1, "the system for the "
+		    "control points is singular (pivot %zu of %zu is %.3g of "
+		    "the largest)", j + 1, n, pivot);
 	return 0;
 }
 
