@@ -335,6 +335,16 @@ nseg_of(const struct work *w)
 	return w->closed ? w->m : w->m - 1;
 }
 
+/* w->corner[0..nc): the knots that are fixed, from w->fixed. */
+static void
+list_corners(struct work *w)
+{
+	w->nc = 0;
+	for (size_t j = 0; j < w->m; j++)
+		if (w->fixed[j])
+			w->corner[w->nc++] = j;
+}
+
 /* Add knot at point i (a corner: the point itself, fixed). */
 static void
 add_knot(struct work *w, size_t i, int corner)
@@ -635,10 +645,7 @@ split(struct work *w, size_t only)
 	w->m += add;
 	memcpy(w->k, kn, w->m * dim * sizeof *w->k);
 	memcpy(w->fixed, fx, w->m);
-	w->nc = 0;
-	for (size_t j = 0; j < w->m; j++)
-		if (w->fixed[j])
-			w->corner[w->nc++] = j;
+	list_corners(w);
 	return add;
 }
 
@@ -680,10 +687,7 @@ remove_knot(struct work *w, size_t r)
 	memmove(w->fixed + r, w->fixed + r + 1, m - r - 1);
 	memmove(w->tried + r, w->tried + r + 1, m - r - 1);
 	w->m--;
-	w->nc = 0;
-	for (size_t j = 0; j < w->m; j++)
-		if (w->fixed[j])
-			w->corner[w->nc++] = j;
+	list_corners(w);
 	return merged;
 }
 
@@ -795,10 +799,7 @@ restore_state(struct work *w)
 	memcpy(w->fu, w->sfu, w->n * sizeof *w->fu);
 	memcpy(w->dist, w->sdist, w->n * sizeof *w->dist);
 	powers(w);
-	w->nc = 0;
-	for (size_t j = 0; j < w->m; j++)
-		if (w->fixed[j])
-			w->corner[w->nc++] = j;
+	list_corners(w);
 }
 
 /*

@@ -79,6 +79,16 @@ checks() {
 	    "$(awk -v t="$tol" -v c="$closed" 'BEGIN { print c ? t / 2 : t }')"
 }
 
+# same_inflexions NAME WHAT SHAPE...: NAME's curve has exactly the
+# inflexions of the truth of SHAPE (noisy -i)
+same_inflexions() {
+	n=$1 what=$2
+	shift 2
+	[ "$(field inflexions "$(shape $n 1)")" = \
+	    "$(field inflexions "$(truth "$@")")" ] && ok ||
+	    no "$what: inflexions $(shape $n 1), the truth $(truth "$@")"
+}
+
 # ---- usage ---------------------------------------------------------------
 fails 2 "-e '0': want a positive number" "$B/splinefit -e 0 /dev/null"
 fails 2 "-e '-1'" "$B/splinefit -e -1 /dev/null"
@@ -169,9 +179,7 @@ B2="blob 60 0.12 4"
 $N -n 800 -s 0.1 -r 5 $B2 >"$T/b2.pts"
 fit b2 0.4
 checks b2 0.4 1 $B2
-[ "$(field inflexions "$(shape b2 1)")" = \
-    "$(field inflexions "$(truth $B2)")" ] && ok ||
-    no "blob: inflexions $(shape b2 1), the truth $(truth $B2)"
+same_inflexions b2 "blob" $B2
 
 # ---- nearly straight stretches: a wiggle the points leave no room to drop
 # Cases 59 and 22 of make compare-approx (4 sigma): the knots that fit
@@ -182,15 +190,11 @@ E5="ellipse 79.867 24.215"
 $N -n 740 -s 0.489 -r 59 $E5 >"$T/e5.pts"
 fit e5 1.956
 checks e5 1.956 1 $E5
-[ "$(field inflexions "$(shape e5 1)")" = \
-    "$(field inflexions "$(truth $E5)")" ] && ok ||
-    no "ellipse 59: $(shape e5 1), the truth $(truth $E5)"
+same_inflexions e5 "ellipse 59" $E5
 $N -n 629 -s 0.07 -r 22 $I >"$T/i3.pts"
 fit i3 0.28
 checks i3 0.28 1 $I
-[ "$(field inflexions "$(shape i3 1)")" = \
-    "$(field inflexions "$(truth $I)")" ] && ok ||
-    no "insole 22: $(shape i3 1), the truth $(truth $I)"
+same_inflexions i3 "insole 22" $I
 
 # ---- open curves: an arch, and a wave with one inflexion ----------------
 W1="wave 200 30 1"
