@@ -33,8 +33,8 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
           bin/obj/design.o $(CADINOBJ) $(CADOBJ)
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
-LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
-CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
+LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o bin/obj/bezform.o
+CADOBJ  = bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
           bin/obj/svgplot.o
 # PROGS is the one list of programs: their binaries and pages follow
@@ -48,6 +48,7 @@ BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
           bin/bench/numbers
 BENCH  += bin/test/noisy
 TESTS  += bin/test/noisy bin/test/nearest
+TESTS  += bin/test/line/progs
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
@@ -84,6 +85,19 @@ bin/%: cmd/%.c $(LIB) lib/loft.h lib/loftprog.h
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h lib/loftprog.h \
     bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+# every program again with one more record type, tests/linetype.c's
+# degree-1 `line` (tests/linetype.sh): types.c built with its row
+LINEDEP = bin/test/line/types.o tests/linetype.c $(LIB) lib/loft.h \
+          lib/loftprog.h lib/internal.h
+bin/test/line/types.o: lib/types.c lib/loft.h lib/internal.h bin/test/.dir
+	mkdir -p bin/test/line
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -DLOFT_TEST_LINE -c -o $@ lib/types.c
+bin/test/line/progs: $(LINEDEP) $(BINS)
+	for p in $(PROGS); do $(CC) $(LOFT_CFLAGS) $(CFLAGS) \
+	    -o bin/test/line/$$p cmd/$$p.c tests/linetype.c \
+	    bin/test/line/types.o $(LIB) $(LDLIBS) || exit 1; done
+	touch $@
 
 bin/test/oom.so: tests/oom.c bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -shared -fPIC -o $@ tests/oom.c

@@ -39,27 +39,8 @@
 
 #include "loftprog.h"
 
-/* ------------------------------------------------------------------ */
-/* Exact Bezier forms of the record types (bezform.c)                  */
-
-/*
- * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
- * net of the same polynomial surface, u-major: P_ij, i the u index, at
- * ctl[(5 * i + j) * dim] (25 * dim numbers).
- */
-void loft_patch_bezier(const double *b, int dim, double *ctl);
-
-/*
- * The fewest equal parameter steps n that put the polyline through the
- * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
- * the same parameter, so every point of the curve is within tol of the
- * polyline): linear interpolation over steps h errs by at most
- * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
- * difference of the control points.  tol > 0.  Returns 1 to max, or 0
- * when more than max steps would be needed.
- */
-long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
-    long max);
+/* The exact Bezier forms of the record types are the core's
+ * (loft.h, bezform.c). */
 
 /* ------------------------------------------------------------------ */
 /* Documents (cad.c)                                                   */

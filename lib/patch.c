@@ -161,21 +161,11 @@ loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
 {
 	int rc = loft_curve_from_record(rec, c, err);
 
-	if (rc == 0 && !loft_record_is(rec, LOFT_KIND_SEGMENTS))
+	if (rc == 0 && (!loft_record_is(rec, LOFT_KIND_SEGMENTS) ||
+	    c->quartic == NULL))
 		return loft_fail(err, LOFT_EINPUT, -1, "a %s record: want a "
 		    "curve of cubic or quartic segments", c->type);
 	return rc;
-}
-
-void
-loft_curve_quartic(const struct loft_curve *c, size_t i, double *q)
-{
-	const double *piece = c->coef + i * (size_t)c->rowlen;
-
-	if (c->rowlen == 4 * c->dim)            /* a cubic's four vectors */
-		loft_cubic_to_quartic(piece, c->dim, q);
-	else
-		memcpy(q, piece, 5 * (size_t)c->dim * sizeof *q);
 }
 
 /*

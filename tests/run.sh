@@ -34,6 +34,7 @@ suite sh tests/cmd.sh
 suite sh tests/fit.sh
 slow bin/test/patch
 suite sh tests/patch.sh
+suite sh tests/linetype.sh
 suite bin/test/bezier
 suite sh tests/bezapprox.sh
 slow bin/test/numtest
