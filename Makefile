@@ -32,9 +32,10 @@ LIBOBJ += $(CADOBJ)
 PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
           bin/obj/design.o $(CADINOBJ) $(CADOBJ)
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
-          bin/obj/csvread.o
+          bin/obj/csvread.o bin/obj/cadreaders.o
 LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o bin/obj/bezform.o
-CADOBJ  = bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
+LIBOBJ += bin/obj/cadreaders.o
+CADOBJ  = bin/obj/cad.o bin/obj/cadformats.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
           bin/obj/svgplot.o
 # PROGS is the one list of programs: their binaries and pages follow

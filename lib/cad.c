@@ -11,20 +11,6 @@
 #include "loftcad.h"
 #include "internal.h"
 
-/* The formats: a new one is a module defining its struct and a line here. */
-extern const struct loft_cad_format loft_cad_dxf, loft_cad_svg, loft_cad_step,
-    loft_cad_iges, loft_cad_stl, loft_cad_obj;
-
-const struct loft_cad_entry loft_cad_formats[] = {
-	{ "dxf", &loft_cad_dxf },
-	{ "svg", &loft_cad_svg },
-	{ "step", &loft_cad_step },
-	{ "iges", &loft_cad_iges },
-	{ "stl", &loft_cad_stl },
-	{ "obj", &loft_cad_obj },
-	{ NULL, NULL }
-};
-
 /*
  * Most polyline steps a piece: a tolerance that needs more is far below
  * the piece's rounding noise (or absurd for its size) and is refused
@@ -1028,16 +1014,6 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 		return loft_fail(err, LOFT_EGEOM, -1, "a number of the document "
 		    "is not finite (the input is too extreme)");
 	return 0;
-}
-
-const struct loft_cad_format *
-loft_cad_format_named(const char *name)
-{
-	for (const struct loft_cad_entry *e = loft_cad_formats; e->name != NULL;
-	    e++)
-		if (strcmp(e->name, name) == 0)
-			return e->format;
-	return NULL;
 }
 
 void

@@ -7,7 +7,8 @@
  * polynomial pieces of one degree, a surface as tensor-product Bezier
  * patches.  A format is one module behind struct loft_cad_format, a table
  * of callbacks in the manner of libspiro's bezctx: the geometry knows no
- * format, and a new format is one file and one line of loft_cad_formats.
+ * format, and a new format is one file and one line of loft_cad_formats
+ * (cadformats.c).
  * A format sets only the callbacks of what it can take; cad.c turns
  * curves into polylines (within the tolerance) for a format that takes
  * only polylines, and surfaces into one welded triangle mesh for a format
@@ -182,6 +183,11 @@ extern const struct loft_cad_entry loft_cad_formats[];
 
 /* The format of loft_cad_formats called name, or NULL. */
 const struct loft_cad_format *loft_cad_format_named(const char *name);
+
+/* loft_parse_word of name among loft_cad_formats' names (tocad -f): 0
+ * and the entry's index in *i, or an error naming the choices. */
+#define LOFT_CAD_MAXFORMATS 32
+int loft_cad_format_find(const char *name, int *i, struct loft_error *err);
 
 /* The document being made. */
 struct loft_cad_doc {
