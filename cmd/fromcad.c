@@ -105,7 +105,7 @@ read_document(struct opts *o, struct loft_cadin *cad, const char *name)
 		loft_cadin_read(format, buf, len, cad);
 	free(buf);
 	e = loft_run_write(run, run->w.buf, run->w.len);
-	run->w.len = 0;
+	loft_writer_cut(&run->w, 0);
 	return e != 0 && ferror(run->out) ? -1 : 0;
 }
 

@@ -173,9 +173,8 @@ loft__cadin_done(struct loft_cadin *c, size_t mark, long line)
 
 	if (!bad)
 		return 0;
-	w->len = mark < w->len ? mark : w->len;
+	loft_writer_cut(w, mark);
 	w->bad = 0;
-	w->col = 0;
 	loft__cadin_say(c, line, "%s", bad == LOFT_ENOMEM ? "out of memory" :
 	    "result is not finite (the input is too extreme)");
 	return -1;

@@ -56,6 +56,13 @@ void loft_put_row(struct loft_writer *w, const double *v, int n);
 void loft_end_line(struct loft_writer *w);
 void loft_end_record(struct loft_writer *w);   /* the blank line */
 void loft_writer_free(struct loft_writer *w);
+/*
+ * Take back what w holds after mark, a w->len read at the start of a
+ * record (or 0: everything): w->len is mark again (kept when it is
+ * already below), and w is at the start of a line.  w->bad is the
+ * caller's to clear.  The one way a record is taken out of a writer.
+ */
+void loft_writer_cut(struct loft_writer *w, size_t mark);
 
 /*
  * Grow the malloc'd array *buf of *cap elements of sz bytes (NULL and 0
