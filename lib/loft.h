@@ -859,42 +859,6 @@ void loft_quartic_eval(const double *q, int dim, double u,
  */
 void loft_cubic_to_quartic(const double *cubic, int dim, double *q);
 
-/* ------------------------------------------------------------------ */
-/* Exact Bezier forms of the record types (bezform.c)                  */
-
-/*
- * The quartic in MacCallum's form (0) (1) (0)_u (1)_u (h), its five
- * vectors of dim numbers in_step numbers apart in k, as its Bernstein
- * control points b0..b4, out_step apart in b: b0 = (0), b4 = (1), the
- * end derivatives 4 (b1 - b0) and 4 (b4 - b3), and the point at u = 1/2
- * (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16 = (h), so
- * b2 = (16 (h) - 5 (0) - 5 (1) - (0)_u + (1)_u) / 6.  The one conversion
- * of a quartic to the Bernstein basis: curves, patches and their boxes
- * use it.  k and b do not overlap.
- */
-void loft_quartic_bezier(const double *k, size_t in_step, double *b,
-    size_t out_step, int dim);
-
-
-/*
- * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
- * net of the same polynomial surface, u-major: P_ij, i the u index, at
- * ctl[(5 * i + j) * dim] (25 * dim numbers).
- */
-void loft_patch_bezier(const double *b, int dim, double *ctl);
-
-/*
- * The fewest equal parameter steps n that put the polyline through the
- * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
- * the same parameter, so every point of the curve is within tol of the
- * polyline): linear interpolation over steps h errs by at most
- * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
- * difference of the control points.  tol > 0.  Returns 1 to max, or 0
- * when more than max steps would be needed.
- */
-long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
-    long max);
-
 /* How a drag was done (section 4). */
 enum {
 	LOFT_DRAG_CENTRAL,      /* only (h), or (hh), changed */
@@ -938,6 +902,41 @@ int loft_quartic_drag(double *q, size_t nseg, int dim, int closed, double U,
 #define LOFT_DRAG_ZERO 1e-12
 int loft_drag_project(double *delta, const double *view, int dim,
     struct loft_error *err);
+
+/* ------------------------------------------------------------------ */
+/* Exact Bezier forms of the record types (bezform.c)                  */
+
+/*
+ * The quartic in MacCallum's form (0) (1) (0)_u (1)_u (h), its five
+ * vectors of dim numbers in_step numbers apart in k, as its Bernstein
+ * control points b0..b4, out_step apart in b: b0 = (0), b4 = (1), the
+ * end derivatives 4 (b1 - b0) and 4 (b4 - b3), and the point at u = 1/2
+ * (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16 = (h), so
+ * b2 = (16 (h) - 5 (0) - 5 (1) - (0)_u + (1)_u) / 6.  The one conversion
+ * of a quartic to the Bernstein basis: curves, patches and their boxes
+ * use it.  k and b do not overlap.
+ */
+void loft_quartic_bezier(const double *k, size_t in_step, double *b,
+    size_t out_step, int dim);
+
+/*
+ * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
+ * net of the same polynomial surface, u-major: P_ij, i the u index, at
+ * ctl[(5 * i + j) * dim] (25 * dim numbers).
+ */
+void loft_patch_bezier(const double *b, int dim, double *ctl);
+
+/*
+ * The fewest equal parameter steps n that put the polyline through the
+ * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
+ * the same parameter, so every point of the curve is within tol of the
+ * polyline): linear interpolation over steps h errs by at most
+ * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
+ * difference of the control points.  tol > 0.  Returns 1 to max, or 0
+ * when more than max steps would be needed.
+ */
+long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
+    long max);
 
 /* ------------------------------------------------------------------ */
 /* MacCallum's bi-quartic patches (patch.c)                            */
