@@ -39,10 +39,10 @@ loft_cad_format_find(const char *name, int *i, struct loft_error *err)
 	const char *words[LOFT_CAD_MAXFORMATS + 1];
 	int n = 0;
 
-	while (n < LOFT_CAD_MAXFORMATS && loft_cad_formats[n].name != NULL) {
-		words[n] = loft_cad_formats[n].name;
-		n++;
-	}
+	for (const struct loft_cad_entry *e = loft_cad_formats; e->name != NULL;
+	    e++)
+		if (n < LOFT_CAD_MAXFORMATS)
+			words[n++] = e->name;
 	words[n] = NULL;
 	return loft_parse_word(name, words, i, err);
 }

@@ -144,10 +144,10 @@ loft_cadin_find(const char *name, int *i, struct loft_error *err)
 	const char *words[LOFT_CADIN_MAXREADERS + 1];
 	int n = 0;
 
-	while (n < LOFT_CADIN_MAXREADERS && loft_cadin_readers[n].name != NULL) {
-		words[n] = loft_cadin_readers[n].name;
-		n++;
-	}
+	for (const struct loft_cadin_reader *r = loft_cadin_readers;
+	    r->name != NULL; r++)
+		if (n < LOFT_CADIN_MAXREADERS)
+			words[n++] = r->name;
 	words[n] = NULL;
 	return loft_parse_word(name, words, i, err);
 }
