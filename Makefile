@@ -4,6 +4,17 @@
 # (tests/bench/run.sh); make install PREFIX=... installs, and make
 # uninstall PREFIX=... removes what it installed; make examples makes
 # the example files of man/examples again.
+#
+# POSIX make (GNU make and bmake both run it, -j too): suffix rules make
+# each object beside its source (lib/NAME.o from lib/NAME.c), one rule
+# links the programs into bin/, another the tests into bin/test.  To
+# add a program: one word in PROGS; a library module: one word in the
+# object list of its layer.  make -j clean all removes under a build:
+# make clean first, then make -j.
+
+.POSIX:
+.SUFFIXES:
+.SUFFIXES: .c .o
 
 CC      = cc
 CFLAGS  = -O2 -g
@@ -12,85 +23,105 @@ LDLIBS  = -lm
 PREFIX  = /usr/local
 DESTDIR =
 
-PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          loftplot grade offset measure tocad patchloft patchcut fromcad
-LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
-          bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
-          bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
-          bin/obj/quartic.o bin/obj/patch.o bin/obj/surface.o bin/obj/dtoa.o \
-          bin/obj/grade.o bin/obj/outfiles.o \
-          bin/obj/offset.o \
-          bin/obj/bernstein.o bin/obj/arclen.o bin/obj/measure.o \
-          bin/obj/flatten.o bin/obj/merge.o bin/obj/fair.o \
-          bin/obj/skin.o bin/obj/cut.o bin/obj/cadread.o \
-          bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
-LIBOBJ += bin/obj/error.o bin/obj/grow.o bin/obj/record.o \
-          bin/obj/knots.o bin/obj/design.o bin/obj/types.o
-LIBOBJ += $(CADOBJ)
-# the program layer (loftprog.h; the CAD writers in CADOBJ are on it
-# too); every other module is the core and includes only loft.h
-PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
-          bin/obj/design.o $(CADINOBJ) $(CADOBJ)
-CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
-          bin/obj/csvread.o
-LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
-CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
-          bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
-          bin/obj/svgplot.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
-BINS    = $(PROGS:%=bin/%)
-TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
-          bin/test/numtest bin/test/pow10gen bin/test/offsetref \
-          bin/test/hostile bin/test/oom.so bin/test/arclen \
-          bin/test/cad
-BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
-          bin/bench/numbers
-BENCH  += bin/test/noisy
-TESTS  += bin/test/noisy bin/test/nearest
+PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
+          loftplot grade offset measure tocad patchloft patchcut fromcad
+
+# The library's objects, by layer.  The core (lib/loft.h; each includes
+# only loft.h and internal.h, never a FILE):
+COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
+          lib/expr.o lib/bezier.o lib/normal.o lib/quartic.o lib/patch.o \
+          lib/surface.o lib/dtoa.o lib/grade.o lib/offset.o \
+          lib/bernstein.o lib/arclen.o lib/measure.o lib/flatten.o \
+          lib/merge.o lib/fair.o lib/skin.o lib/cut.o lib/error.o \
+          lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
+          lib/cholesky.o lib/bezform.o
+# the program layer (lib/loftprog.h): streams, the run loop, designs
+PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o
+# the CAD output formats (lib/loftcad.h): the document protocol, the
+# format table, one module a format, and loftplot's picture
+CADOBJ  = lib/cad.o lib/cadformats.o lib/dxf.o lib/svgcad.o lib/step.o \
+          lib/iges.o lib/stl.o lib/obj.o lib/svgplot.o
+# the CAD readers (lib/cadread.h): what they share, their table, one
+# module a reader
+CADINOBJ = lib/cadread.o lib/cadreaders.o lib/dxfread.o lib/svgread.o \
+          lib/csvread.o
+LIBOBJ  = $(COREOBJ) $(PROGOBJ) $(CADOBJ) $(CADINOBJ)
 LIB     = bin/libloft.a
+
+BINS    = $(PROGS:%=bin/%)
+CMDOBJ  = $(PROGS:%=cmd/%.o)
+# the test programs, tests/NAME.c each, linked into bin/test
+TESTPROGS = unit paper patch bezier numtest pow10gen offsetref hostile \
+          arclen cad noisy nearest tables
+TESTOBJ = $(TESTPROGS:%=tests/%.o)
+TESTS   = $(TESTPROGS:%=bin/test/%) bin/test/oom.so bin/test/line/progs
+BENCHPROGS = gen floor timeit tandiff numbers
+BENCHOBJ = $(BENCHPROGS:%=tests/bench/%.o)
+BENCH   = $(BENCHPROGS:%=bin/bench/%) bin/test/noisy
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5
 MAN7    = man/loft.7
 # the example files the pages' EXAMPLES name, installed to
 # share/loft/examples (man/examples/README says what each is)
-EXAMPLES = $(addprefix man/examples/,README knots toe.knots insole.knots \
-          arc.knots hull.knots seam.knots insole.dxf many-insoles.knots \
-          v0.knots v1.knots u0.knots u1.knots hull.patch split.patch \
-          pieces.patch hull.design noisy-insole.pts)
+EXNAMES = README knots toe.knots insole.knots arc.knots hull.knots \
+          seam.knots insole.dxf many-insoles.knots v0.knots v1.knots \
+          u0.knots u1.knots hull.patch split.patch pieces.patch \
+          hull.design noisy-insole.pts
+EXAMPLES = $(EXNAMES:%=man/examples/%)
 EXDIR   = $(DESTDIR)$(PREFIX)/share/loft/examples
 
 all: $(BINS) $(LIB)
 
-bin/obj/.dir bin/test/.dir bin/bench/.dir:
-	mkdir -p $(@D) && touch $@
-
-bin/obj/%.o: lib/%.c lib/loft.h lib/internal.h bin/obj/.dir
+.c.o:
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
-bin/obj/dtoa.o: lib/pow10.h
-bin/obj/run.o: lib/version.h
-$(CADOBJ) bin/tocad bin/sample bin/test/cad: lib/loftcad.h
-$(PROGOBJ): lib/loftprog.h
-$(CADINOBJ) bin/test/numtest: lib/cadread.h
+# what each object reads besides its source
+$(LIBOBJ) $(CMDOBJ) $(TESTOBJ) $(BENCHOBJ) tests/linetype.o: lib/loft.h
+$(LIBOBJ) tests/linetype.o tests/unit.o: lib/internal.h
+$(PROGOBJ) $(CADOBJ) $(CADINOBJ) $(CMDOBJ) $(TESTOBJ) $(BENCHOBJ): \
+    lib/loftprog.h
+$(CADOBJ) cmd/tocad.o cmd/sample.o cmd/loftplot.o tests/cad.o \
+    tests/tables.o: lib/loftcad.h
+$(CADINOBJ) tests/numtest.o: lib/cadread.h
+$(TESTOBJ): tests/check.h
+lib/dtoa.o: lib/pow10.h
+lib/run.o: lib/version.h
 
 $(LIB): $(LIBOBJ)
+	@mkdir -p bin
 	rm -f $@
 	ar rcs $@ $(LIBOBJ)
 
-bin/%: cmd/%.c $(LIB) lib/loft.h lib/loftprog.h
-	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+# each program from its object, bin/NAME from cmd/NAME.o (relinking
+# them all when one changes costs a link each, no compiling)
+$(BINS): $(CMDOBJ) $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ cmd/`basename $@`.o $(LIB) $(LDLIBS)
 
-bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h lib/loftprog.h \
-    bin/test/.dir
-	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+$(TESTPROGS:%=bin/test/%): $(TESTOBJ) $(LIB)
+	@mkdir -p bin/test
+	$(CC) $(CFLAGS) -o $@ tests/`basename $@`.o $(LIB) $(LDLIBS)
 
-bin/test/oom.so: tests/oom.c bin/test/.dir
+bin/test/oom.so: tests/oom.c
+	@mkdir -p bin/test
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -shared -fPIC -o $@ tests/oom.c
 
-bin/bench/%: tests/bench/%.c $(LIB) lib/loft.h lib/loftprog.h \
-    bin/bench/.dir
-	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+# every program again with one more record type, tests/linetype.c's
+# degree-1 `line` (tests/linetype.sh): types.c built with its row
+bin/test/line/types.o: lib/types.c lib/loft.h lib/internal.h
+	@mkdir -p bin/test/line
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -DLOFT_TEST_LINE -c -o $@ lib/types.c
+bin/test/line/progs: bin/test/line/types.o tests/linetype.o $(CMDOBJ) $(LIB)
+	for p in $(PROGS); do $(CC) $(CFLAGS) -o bin/test/line/$$p \
+	    cmd/$$p.o tests/linetype.o bin/test/line/types.o $(LIB) \
+	    $(LDLIBS) || exit 1; done
+	touch $@
+
+$(BENCHPROGS:%=bin/bench/%): $(BENCHOBJ) $(LIB)
+	@mkdir -p bin/bench
+	$(CC) $(CFLAGS) -o $@ tests/bench/`basename $@`.o $(LIB) $(LDLIBS)
 
 check: all $(TESTS)
 	@sh tests/run.sh
@@ -143,15 +174,15 @@ install: all
 # stay: they may hold other things, and may have been there before;
 # but share/loft/examples and share/loft are loft's, gone when empty)
 uninstall:
-	rm -f $(addprefix $(DESTDIR)$(PREFIX)/bin/,$(notdir $(BINS))) \
-	    $(DESTDIR)$(PREFIX)/lib/$(notdir $(LIB)) \
+	rm -f $(PROGS:%=$(DESTDIR)$(PREFIX)/bin/%) \
+	    $(DESTDIR)$(PREFIX)/lib/libloft.a \
 	    $(DESTDIR)$(PREFIX)/include/loft.h \
 	    $(DESTDIR)$(PREFIX)/include/loftprog.h \
 	    $(DESTDIR)$(PREFIX)/include/loftcad.h \
-	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man1/,$(notdir $(MAN1))) \
-	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man5/,$(notdir $(MAN5))) \
-	    $(addprefix $(DESTDIR)$(PREFIX)/share/man/man7/,$(notdir $(MAN7))) \
-	    $(addprefix $(EXDIR)/,$(notdir $(EXAMPLES)))
+	    $(PROGS:%=$(DESTDIR)$(PREFIX)/share/man/man1/%.1) \
+	    $(DESTDIR)$(PREFIX)/share/man/man5/loft.5 \
+	    $(DESTDIR)$(PREFIX)/share/man/man7/loft.7 \
+	    $(EXNAMES:%=$(EXDIR)/%)
 	rmdir $(EXDIR) $(DESTDIR)$(PREFIX)/share/loft 2>/dev/null || :
 
 # make examples: the example files made again, copies of man/figures'
@@ -180,16 +211,9 @@ examples: all
 
 clean:
 	rm -rf bin
-
-# make -j clean all: clean must finish before anything is built (it ran
-# beside the build and removed bin/ under ar); GNU make runs goals in
-# order only when not parallel, so with clean among them it is not.
-ifneq ($(filter clean,$(MAKECMDGOALS)),)
-.NOTPARALLEL:
-endif
+	rm -f lib/*.o cmd/*.o tests/*.o tests/bench/*.o
 
 .PHONY: all check check-quick bench compare demo figures install uninstall clean examples
-.SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------
 # Each covers the programs in PROGS and the harnesses in FUZZERS.
@@ -206,9 +230,9 @@ SAN_DIR = bin/san
 check-san:
 	rm -rf $(SAN_DIR) && mkdir -p $(SAN_DIR)/log
 	cp -R Makefile lib cmd tests man $(SAN_DIR)/
-	@(cd $(SAN_DIR) && \
-	    ASAN_OPTIONS=log_path=$(CURDIR)/$(SAN_DIR)/log/asan:detect_leaks=1 \
-	    UBSAN_OPTIONS=log_path=$(CURDIR)/$(SAN_DIR)/log/ubsan:print_stacktrace=1 \
+	@top=$$(pwd); (cd $(SAN_DIR) && $(MAKE) clean >/dev/null && \
+	    ASAN_OPTIONS=log_path=$$top/$(SAN_DIR)/log/asan:detect_leaks=1 \
+	    UBSAN_OPTIONS=log_path=$$top/$(SAN_DIR)/log/ubsan:print_stacktrace=1 \
 	    $(MAKE) CC="$(CC)" CFLAGS="$(SAN_CFLAGS)" check); rc=$$?; \
 	if ls $(SAN_DIR)/log | grep -q .; then head -60 $(SAN_DIR)/log/*; \
 	    echo "check-san: sanitizer reports in $(SAN_DIR)/log"; exit 1; fi; \
@@ -229,8 +253,8 @@ check-valgrind: all $(TESTS)
 	rm -rf $(VG_DIR) && mkdir -p $(VG_DIR)/log && \
 	for p in $(PROGS); do \
 	    printf '#!/bin/sh\nexec %s %s --log-file=%s/%%p.%s "%s" "$$@"\n' \
-	        "$(VALGRIND)" "$(VG_OPTS)" "$(CURDIR)/$(VG_DIR)/log" "$$p" \
-	        "$(CURDIR)/bin/$$p" >$(VG_DIR)/$$p && chmod +x $(VG_DIR)/$$p \
+	        "$(VALGRIND)" "$(VG_OPTS)" "$$(pwd)/$(VG_DIR)/log" "$$p" \
+	        "$$(pwd)/bin/$$p" >$(VG_DIR)/$$p && chmod +x $(VG_DIR)/$$p \
 	        || exit 1; \
 	done; \
 	LOFT_BIN=$(VG_DIR) LOFT_BIG_KNOTS=20000 sh tests/run.sh; rc=$$?; \
@@ -251,18 +275,16 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
           patchjoin loftplot grade offset measure patchloft patchcut fromcad
-LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
-
-bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \
-    lib/loftprog.h lib/loftcad.h lib/cadread.h lib/internal.h \
-    $(PROGS:%=cmd/%.c)
-	@mkdir -p bin/fuzz
-	$(FUZZ_CC) $(LOFT_CFLAGS) $(FUZZ_CFLAGS) -o $@ $< $(LIBSRC) $(LDLIBS)
+LIBSRC  = $(LIBOBJ:.o=.c)
 
 fuzz:
 	@if ! command -v $(FUZZ_CC) >/dev/null 2>&1; then \
 	    echo "fuzz: skipped: no $(FUZZ_CC) for -fsanitize=fuzzer"; exit 0; fi; \
-	$(MAKE) $(FUZZERS:%=bin/fuzz/%) || exit 1; \
+	mkdir -p bin/fuzz && for f in $(FUZZERS); do \
+	    echo "fuzz: building bin/fuzz/$$f" && \
+	    $(FUZZ_CC) $(LOFT_CFLAGS) $(FUZZ_CFLAGS) -o bin/fuzz/$$f \
+	        tests/fuzz/$$f.c $(LIBSRC) $(LDLIBS) || exit 1; \
+	done; \
 	for f in $(FUZZERS); do \
 	    mkdir -p bin/fuzz/corpus/$$f && \
 	    echo "fuzz: $$f for $(FUZZ_SECONDS) s" && \

@@ -11,7 +11,7 @@
 #include "loftprog.h"
 
 struct opts {
-	int format;             /* enum loft_cadin_format, or -1: by content */
+	int format;             /* of loft_cadin_readers, or -1: by content */
 	const char *file;       /* the document being read, for messages */
 	struct loft_run *run;
 };
@@ -105,7 +105,7 @@ read_document(struct opts *o, struct loft_cadin *cad, const char *name)
 		loft_cadin_read(format, buf, len, cad);
 	free(buf);
 	e = loft_run_write(run, run->w.buf, run->w.len);
-	run->w.len = 0;
+	loft_writer_cut(&run->w, 0);
 	return e != 0 && ferror(run->out) ? -1 : 0;
 }
 
@@ -125,8 +125,7 @@ main(int argc, char *argv[])
 	while ((c = getopt(argc, argv, "f:t:p:h")) != -1) {
 		switch (c) {
 		case 'f':
-			if (loft_parse_word(optarg, loft_cadin_format_name,
-			    &o.format, &err))
+			if (loft_cadin_find(optarg, &o.format, &err))
 				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 't':

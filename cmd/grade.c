@@ -257,7 +257,7 @@ to_files(struct loft_run *run, char sizes[][LOFT_NUMBUF + 1],
 		if (rc != 0)
 			return rc;
 	}
-	run->w.len = 0;
+	loft_writer_cut(&run->w, 0);
 	return 0;
 }
 

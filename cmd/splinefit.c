@@ -290,7 +290,7 @@ put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
 	loft_put_type(&run->w, "cubic");
 	loft_put_attr(&run->w, "closed", closed ? "1" : "0");
 	if (put_corners(&run->w, corner, nc, err) != 0) {
-		run->w.len = mark;
+		loft_writer_cut(&run->w, mark);
 		return LOFT_ENOMEM;
 	}
 	loft_put_attrs_except(&run->w, rec, consumed);

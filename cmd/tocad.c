@@ -25,15 +25,9 @@ static int
 find_format(const char *s, const struct loft_cad_format **f,
     struct loft_error *err)
 {
-	const char *words[16];
-	int n = 0, i;
+	int i;
 
-	while (n < 15 && loft_cad_formats[n].name != NULL) {
-		words[n] = loft_cad_formats[n].name;
-		n++;
-	}
-	words[n] = NULL;
-	if (loft_parse_word(s, words, &i, err) != 0)
+	if (loft_cad_format_find(s, &i, err) != 0)
 		return -1;
 	*f = loft_cad_formats[i].format;
 	return 0;

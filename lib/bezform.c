@@ -1,35 +1,32 @@
 /*
  * bezform.c: the exact Bezier forms of loft's polynomial record types,
  * the form every CAD format takes (B-splines are Bezier pieces joined at
- * knots), and the two Bezier operations the writers need.
- * Program layer (loftcad.h, on loftprog.h): part of the CAD writers.
+ * knots): the one quartic-to-Bernstein conversion, the patch's net, and
+ * the steps of a Bezier curve's polyline.  Core (loft.h): curve.c,
+ * surface.c and the CAD writers all use these.
  */
-#include "loftcad.h"
 #include "internal.h"
 
-/*
- * A quartic's Bezier points from its five conditions (the patch net
- * below maps each row and column so; a quartic curve record's own form
- * is loft_curve_bezier's, in curve.c): Q0 = (0), Q4 = (1);
- * the end derivatives are 4 (Q1 - Q0) and 4 (Q4 - Q3); and the point at
- * u = 1/2 is (Q0 + 4 Q1 + 6 Q2 + 4 Q3 + Q4) / 16, so
- * Q2 = (16 (h) - 5 (0) - 5 (1) - (0)_u + (1)_u) / 6.
- */
-static void
-quartic_row(const double *c0, const double *c1, const double *d0,
-    const double *d1, const double *h, size_t stride, double *q)
+void
+loft_quartic_bezier(const double *k, size_t in_step, double *b,
+    size_t out_step, int dim)
 {
-	q[0] = *c0;
-	q[stride] = *c0 + *d0 / 4;
-	q[2 * stride] = (16 * *h - 5 * *c0 - 5 * *c1 - *d0 + *d1) / 6;
-	q[3 * stride] = *c1 - *d1 / 4;
-	q[4 * stride] = *c1;
+	for (int c = 0; c < dim; c++) {
+		double c0 = k[c], c1 = k[in_step + c], d0 = k[2 * in_step + c],
+		    d1 = k[3 * in_step + c], h = k[4 * in_step + c];
+
+		b[c] = c0;
+		b[out_step + c] = c0 + d0 / 4;
+		b[2 * out_step + c] = (16 * h - 5 * c0 - 5 * c1 - d0 + d1) / 6;
+		b[3 * out_step + c] = c1 - d1 / 4;
+		b[4 * out_step + c] = c1;
+	}
 }
 
 /*
  * MacCallum's f(u, v) = u M B M^t v^t is H(u)^t B H(v) with H the five
  * blending functions; H(u)^t c is the quartic of conditions c, whose
- * Bezier points are T c with T the map of quartic_row.  So f(u, v) =
+ * Bezier points are T c with T the map of loft_quartic_bezier.  So f(u, v) =
  * b(u)^t (T B T^t) b(v) with b the Bernstein basis: the net is T applied
  * to B's columns (the u conditions), then to its rows (the v ones).
  */
@@ -40,19 +37,9 @@ loft_patch_bezier(const double *b, int dim, double *ctl)
 	size_t s = (size_t)dim, row = 5 * s;
 
 	for (int j = 0; j < 5; j++)     /* column j: B[0..4][j] in u */
-		for (int k = 0; k < dim; k++) {
-			const double *c = b + j * s + k;
-
-			quartic_row(c, c + row, c + 2 * row, c + 3 * row,
-			    c + 4 * row, row, t + j * s + k);
-		}
+		loft_quartic_bezier(b + j * s, row, t + j * s, row, dim);
 	for (int i = 0; i < 5; i++)     /* row i: T[i][0..4] in v */
-		for (int k = 0; k < dim; k++) {
-			const double *c = t + i * row + k;
-
-			quartic_row(c, c + s, c + 2 * s, c + 3 * s, c + 4 * s, s,
-			    ctl + i * row + k);
-		}
+		loft_quartic_bezier(t + i * row, s, ctl + i * row, s, dim);
 }
 
 long

@@ -11,20 +11,6 @@
 #include "loftcad.h"
 #include "internal.h"
 
-/* The formats: a new one is a module defining its struct and a line here. */
-extern const struct loft_cad_format loft_cad_dxf, loft_cad_svg, loft_cad_step,
-    loft_cad_iges, loft_cad_stl, loft_cad_obj;
-
-const struct loft_cad_entry loft_cad_formats[] = {
-	{ "dxf", &loft_cad_dxf },
-	{ "svg", &loft_cad_svg },
-	{ "step", &loft_cad_step },
-	{ "iges", &loft_cad_iges },
-	{ "stl", &loft_cad_stl },
-	{ "obj", &loft_cad_obj },
-	{ NULL, NULL }
-};
-
 /*
  * Most polyline steps a piece: a tolerance that needs more is far below
  * the piece's rounding noise (or absurd for its size) and is refused
@@ -464,17 +450,13 @@ add_curve(struct loft_cad_doc *d, const struct loft_record *rec,
 	bc.dim = s.dim = c.dim;
 	bc.closed = c.closed;
 	bc.npieces = c.npieces;
-	if (c.eval_ctl != NULL) {       /* bezier: its own control points */
-		bc.deg = (int)c.npts - 1;
-		bc.ctl = c.coef;
-	} else {
-		bc.deg = c.rowlen / c.dim - 1;
-		if (scratch(d, c.npieces * (size_t)c.rowlen) != 0)
-			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-		for (size_t i = 0; i < c.npieces; i++)
-			(void)loft_curve_bezier(&c, i, d->tmp + i * c.rowlen);
-		bc.ctl = d->tmp;
-	}
+	bc.deg = c.degree;
+	np = (size_t)(c.degree + 1) * c.dim;    /* numbers a piece */
+	if (scratch(d, c.npieces * np) != 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t i = 0; i < c.npieces; i++)
+		(void)loft_curve_bezier(&c, i, d->tmp + i * np);
+	bc.ctl = d->tmp;
 	np = bc.npieces * (size_t)(bc.deg + 1);
 	if (item(d, rec, &it, name, sizeof name, bc.ctl, np, bc.dim, box,
 	    err) != 0)
@@ -541,17 +523,7 @@ add_surface(struct loft_cad_doc *d, const struct loft_record *rec,
 	np = (size_t)(s.m + 1) * (s.n + 1);
 	if (scratch(d, 3 * np) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	if (!loft_record_is(rec, LOFT_KIND_CONTROL)) {
-		/* a patch: its net, in space (z = 0 for a plane patch) */
-		double b[25 * LOFT_MAXDIM];
-
-		loft_patch_bezier(s.coef, s.dim, b);
-		for (size_t i = 0; i < 25; i++)
-			for (int k = 0; k < 3; k++)
-				d->tmp[3 * i + k] = k < s.dim ? b[i * s.dim + k] : 0;
-	} else {
-		memcpy(d->tmp, s.coef, 3 * np * sizeof *d->tmp);
-	}
+	loft_surface_bezier(&s, d->tmp);
 	bs.ctl = d->tmp;
 	if (item(d, rec, &it, name, sizeof name, bs.ctl, np, 3, box, err) != 0)
 		return LOFT_EGEOM;
@@ -1042,16 +1014,6 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 		return loft_fail(err, LOFT_EGEOM, -1, "a number of the document "
 		    "is not finite (the input is too extreme)");
 	return 0;
-}
-
-const struct loft_cad_format *
-loft_cad_format_named(const char *name)
-{
-	for (const struct loft_cad_entry *e = loft_cad_formats; e->name != NULL;
-	    e++)
-		if (strcmp(e->name, name) == 0)
-			return e->format;
-	return NULL;
 }
 
 void

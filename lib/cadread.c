@@ -1,6 +1,7 @@
 /*
  * cadread.c: what the CAD readers (dxfread.c, svgread.c, csvread.c)
- * share: telling a document's format, the dispatch, their complaints,
+ * share: telling a document's format (each reader's sniff), the
+ * dispatch through cadreaders.c's table, their complaints,
  * records written whole, attribute values from names, and arcs made
  * polynomial within a tolerance.
  * Program layer (loftprog.h, cadread.h): it writes records.
@@ -11,8 +12,6 @@
 #include <string.h>
 
 #include "cadread.h"
-
-const char *const loft_cadin_format_name[] = { "dxf", "svg", "csv", NULL };
 
 int
 loft__word_is(const char *s, size_t n, const char *word)
@@ -59,64 +58,98 @@ trimmed_line(const char *s, size_t len, const char **a, size_t *n)
 	*n = m - i;
 }
 
-int
-loft_cadin_sniff(const char *buf, size_t len)
+/* Where buf's content starts: after a UTF-8 byte order mark and white
+ * space; len when there is none. */
+static size_t
+content_start(const char *buf, size_t len)
 {
-	static const char bin[] = "AutoCAD Binary DXF";
-	const char *l, *nl;
-	size_t n, i = 0;
+	size_t i = 0;
 
-	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0)
-		return LOFT_CADIN_DXF;
 	if (len >= 3 && memcmp(buf, "\xef\xbb\xbf", 3) == 0)
 		i = 3;          /* a UTF-8 byte order mark */
 	while (i < len && (buf[i] == ' ' || buf[i] == '\t' || buf[i] == '\r' ||
 	    buf[i] == '\n'))
 		i++;
+	return i;
+}
+
+int
+loft__dxf_sniff(const char *buf, size_t len)
+{
+	static const char bin[] = "AutoCAD Binary DXF";
+	size_t i = content_start(buf, len), n, k = 0;
+	const char *l, *nl;
+
+	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0)
+		return 1;
 	if (i == len)
-		return -1;
-	if (buf[i] == '<')
-		return LOFT_CADIN_SVG;
-	/* DXF: a group code (a whole number) on its own line, then a value */
+		return 0;
+	/* a group code (a whole number) on its own line, then a value */
 	trimmed_line(buf + i, len - i, &l, &n);
-	{
-		size_t k = 0;
+	while (k < n && l[k] >= '0' && l[k] <= '9')
+		k++;
+	return n > 0 && n <= 4 && k == n && (nl = memchr(buf + i, '\n',
+	    len - i)) != NULL && nl + 1 < buf + len;
+}
 
-		while (k < n && l[k] >= '0' && l[k] <= '9')
-			k++;
-		if (n > 0 && n <= 4 && k == n && (nl = memchr(buf + i, '\n',
-		    len - i)) != NULL && nl + 1 < buf + len)
-			return LOFT_CADIN_DXF;
+int
+loft__svg_sniff(const char *buf, size_t len)
+{
+	size_t i = content_start(buf, len);
+
+	return i < len && buf[i] == '<';
+}
+
+int
+loft__csv_sniff(const char *buf, size_t len)
+{
+	size_t i = content_start(buf, len), n;
+	const char *l;
+	int x = 0, y = 0;
+
+	if (i == len)
+		return 0;
+	/* a header line that names an x and a y column */
+	trimmed_line(buf + i, len - i, &l, &n);
+	for (size_t k = 0; k < n;) {
+		size_t m = 0;
+
+		while (k + m < n && strchr(",;\t \"'", l[k + m]) == NULL)
+			m++;
+		x |= loft__word_is(l + k, m, "x");
+		y |= loft__word_is(l + k, m, "y");
+		k += m + 1;
 	}
-	/* CSV: a header line that names an x and a y column */
-	{
-		int x = 0, y = 0;
+	return x && y;
+}
 
-		for (size_t k = 0; k < n;) {
-			size_t m = 0;
-
-			while (k + m < n && strchr(",;\t \"'", l[k + m]) == NULL)
-				m++;
-			x |= loft__word_is(l + k, m, "x");
-			y |= loft__word_is(l + k, m, "y");
-			k += m + 1;
-		}
-		if (x && y)
-			return LOFT_CADIN_CSV;
-	}
+int
+loft_cadin_sniff(const char *buf, size_t len)
+{
+	for (int i = 0; loft_cadin_readers[i].name != NULL; i++)
+		if (loft_cadin_readers[i].sniff(buf, len))
+			return i;
 	return -1;
 }
 
 int
 loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c)
 {
-	switch (format) {
-	case LOFT_CADIN_DXF: return loft_dxf_read(buf, len, c);
-	case LOFT_CADIN_SVG: return loft_svg_read(buf, len, c);
-	case LOFT_CADIN_CSV: return loft_csv_read(buf, len, c);
-	}
-	loft__cadin_say(c, 0, "unknown format");
-	return LOFT_EINPUT;
+	return loft_cadin_readers[format].read(buf, len, c);
+}
+
+int
+loft_cadin_find(const char *name, int *i, struct loft_error *err)
+{
+	const char *words[LOFT_CADIN_MAXREADERS + 1];
+	int n = 0;
+
+	for (const struct loft_cadin_reader *r = loft_cadin_readers;
+	    r->name != NULL; r++)
+		if (n < LOFT_CADIN_MAXREADERS)
+			words[n++] = r->name;
+	words[n] = NULL;
+	return loft_parse_word(name, words, i, err);
 }
 
 void
@@ -140,9 +173,8 @@ loft__cadin_done(struct loft_cadin *c, size_t mark, long line)
 
 	if (!bad)
 		return 0;
-	w->len = mark < w->len ? mark : w->len;
+	loft_writer_cut(w, mark);
 	w->bad = 0;
-	w->col = 0;
 	loft__cadin_say(c, line, "%s", bad == LOFT_ENOMEM ? "out of memory" :
 	    "result is not finite (the input is too extreme)");
 	return -1;

@@ -58,6 +58,12 @@ void loft__echo_row(const struct loft__echo *e, struct loft_writer *w,
  * the texts of e (may be NULL; see struct loft__echo). */
 void loft__pts_put(struct loft_writer *w, const struct loft__echo *e,
     const double *p, size_t n, int dim);
+/* The sniffs of loft_cadin_readers: whether buf[0..len) is a binary or
+ * ASCII DXF (a group code alone on its first line), an XML document
+ * (SVG), or a text whose first line names an x and a y column (CSV). */
+int loft__dxf_sniff(const char *buf, size_t len);
+int loft__svg_sniff(const char *buf, size_t len);
+int loft__csv_sniff(const char *buf, size_t len);
 /* Complain about line of the document, printf-style; counts it. */
 void loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -9,21 +9,6 @@
 #include "internal.h"
 
 /*
- * A piecewise type has a row per piece, rows_per_point points to a row;
- * a control-point type (eval NULL) is one piece of a point per row,
- * evaluated by eval_ctl.
- */
-struct loft__curve_type {
-	const char *name;
-	int rows_per_point;     /* numbers in a row, per coordinate */
-	void (*eval)(const double *piece, int dim, double u,
-	    double *p, double *d1, double *d2);
-	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
-	    double *p, double *d1, double *d2);
-	int (*bezier)(const double *piece, int dim, double *ctl);
-};
-
-/*
  * Manning's eq. 7 in the Bernstein basis: the inner control points are
  * one third of the end tangents in from the ends, as P'(0) = 3 (b1 - b0).
  */
@@ -39,34 +24,30 @@ cubic_bezier(const double *seg, int dim, double *ctl)
 	return 3;
 }
 
-/*
- * MacCallum's quartic (0) (1) (0)_u (1)_u (h) in the Bernstein basis of
- * degree 4: P'(0) = 4 (b1 - b0), P'(1) = 4 (b4 - b3), and the point at
- * u = 1/2 is (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16, which gives b2.
- */
+/* MacCallum's quartic in the Bernstein basis of degree 4
+ * (loft_quartic_bezier). */
 static int
 quartic_bezier(const double *q, int dim, double *ctl)
 {
-	for (int k = 0; k < dim; k++) {
-		double b0 = q[k], b4 = q[dim + k];
-		double b1 = b0 + q[2 * dim + k] / 4, b3 = b4 - q[3 * dim + k] / 4;
-
-		ctl[k] = b0;
-		ctl[dim + k] = b1;
-		ctl[2 * dim + k] = (16 * q[4 * dim + k] - b0 - b4 -
-		    4 * (b1 + b3)) / 6;
-		ctl[3 * dim + k] = b3;
-		ctl[4 * dim + k] = b4;
-	}
+	loft_quartic_bezier(q, (size_t)dim, ctl, (size_t)dim, dim);
 	return 4;
 }
 
+/* A quartic segment is its own quartic form. */
+static void
+quartic_copy(const double *q, int dim, double *out)
+{
+	memcpy(out, q, 5 * (size_t)dim * sizeof *out);
+}
+
 const struct loft__curve_type loft__cubic_type =
-	{ "cubic", 4, loft_cubic_eval, NULL, cubic_bezier };
+	{ "cubic", 4, loft_cubic_eval, NULL, cubic_bezier,
+	    loft_cubic_to_quartic };
 const struct loft__curve_type loft__quartic_type =
-	{ "quartic", 5, loft_quartic_eval, NULL, quartic_bezier };
+	{ "quartic", 5, loft_quartic_eval, NULL, quartic_bezier,
+	    quartic_copy };
 const struct loft__curve_type loft__bezier_type =
-	{ "bezier", 1, NULL, loft_bezier_eval, NULL };
+	{ "bezier", 1, NULL, loft_bezier_eval, NULL, NULL };
 
 /* Parse an optional 0/1 attribute; -1 when it is something else. */
 static int
@@ -115,6 +96,8 @@ loft_curve_from_record(const struct loft_record *rec, struct loft_curve *c,
 	c->eval = t->eval;
 	c->eval_ctl = t->eval_ctl;
 	c->bezier = t->bezier;
+	c->quartic = t->quartic;
+	c->degree = t->eval != NULL ? rt->degree : (int)rec->nrows - 1;
 	c->closed = flag_attr(rec, "closed");
 	if (c->closed < 0)
 		return loft_fail(err, LOFT_EINPUT, -1,
@@ -147,6 +130,8 @@ loft_curve_cubic(struct loft_curve *c, const double *seg, size_t nseg, int dim,
 	c->eval = t->eval;
 	c->eval_ctl = NULL;
 	c->bezier = t->bezier;
+	c->quartic = t->quartic;
+	c->degree = loft_type_named(t->name)->degree;
 	c->closed = closed != 0;
 }
 
@@ -158,6 +143,12 @@ loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl)
 		return (int)c->npts - 1;
 	}
 	return c->bezier(c->coef + i * c->rowlen, c->dim, ctl);
+}
+
+void
+loft_curve_quartic(const struct loft_curve *c, size_t i, double *q)
+{
+	c->quartic(c->coef + i * (size_t)c->rowlen, c->dim, q);
 }
 
 int

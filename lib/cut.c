@@ -302,24 +302,31 @@ walk(const struct ctx *c, struct root *r, char *seen, long i,
 	}
 }
 
-/* The cut of one surface, its box lo..hi, into ps. */
-static int
-cut_surface(const struct ctx *c, const double *lo, const double *hi,
-    struct pieces *ps)
-{
-	int m = 2 * (c->s->m > c->s->n ? c->s->m : c->s->n), in[4] = { 0 };
-	int dim = c->dim, rc = 0, ne = 0;
-	double *g = NULL, size, far = 0;
-	long *hx = NULL, *vx = NULL;
-	struct root *r = NULL;
-	size_t nr = 0, cap;
-	char *seen = NULL;
+/*
+ * cut_surface's marching grid: g the plane's function at the (m + 1)^2
+ * nodes (a / m, b / m), hx and vx the index in r of the root on each
+ * side of a cell along u and along v (or -1), r the nr roots.
+ */
+struct grid {
+	int m;
+	double *g;
+	long *hx, *vx;
+	struct root *r;
+	size_t nr;
+};
+#define G(a, b) gr->g[(size_t)(a) * (gr->m + 1) + (b)]
 
-	m = m < GRID_MIN ? GRID_MIN : m > GRID_MAX ? GRID_MAX : m;
-	size = vdist(lo, hi, dim);
-	for (int k = 0; k < dim; k++)
+/* Which edges of the surface lie in the plane (in[e]), each a piece
+ * into ps; *ne their count.  0 or LOFT_ENOMEM. */
+static int
+plane_edges(const struct ctx *c, const double *lo, const double *hi,
+    int *in, int *ne, struct pieces *ps)
+{
+	double size = vdist(lo, hi, c->dim), far = 0;
+	int rc;
+
+	for (int k = 0; k < c->dim; k++)
 		far = fmax(far, fmax(fabs(lo[k]), fabs(hi[k])));
-	/* edges in the plane */
 	for (int e = 0; e < 4; e++) {
 		in[e] = 1;
 		for (int i = 0; i <= 16 && in[e]; i++) {
@@ -330,28 +337,25 @@ cut_surface(const struct ctx *c, const double *lo, const double *hi,
 				in[e] = 0;
 		}
 		if (in[e]) {
-			ne++;
+			++*ne;
 			if ((rc = edge_piece(c, e, ps)) != 0)
 				return rc;
 		}
 	}
-	if (ne == 4)
-		return 0;
-	cap = (size_t)2 * m * (m + 1);
-	g = malloc((size_t)(m + 1) * (m + 1) * sizeof *g);
-	hx = malloc(cap / 2 * sizeof *hx);
-	vx = malloc(cap / 2 * sizeof *vx);
-	r = malloc(cap * sizeof *r);
-	if (g == NULL || hx == NULL || vx == NULL || r == NULL) {
-		rc = LOFT_ENOMEM;
-		goto out;
-	}
-#define G(a, b) g[(size_t)(a) * (m + 1) + (b)]
+	return 0;
+}
+
+/* The function at the grid's nodes; an edge in the plane takes the
+ * signs beside it, so that it has no roots. */
+static void
+grid_values(const struct ctx *c, struct grid *gr, const int *in)
+{
+	int m = gr->m;
+
 	for (int a = 0; a <= m; a++)
 		for (int b = 0; b <= m; b++)
 			G(a, b) = gval(c, (double)a / m, (double)b / m, NULL, NULL,
 			    NULL);
-	/* an edge in the plane takes the signs beside it: no roots there */
 	for (int k = 0; k <= m; k++) {
 		if (in[LOFT_U0])
 			G(0, k) = G(1, k);
@@ -362,37 +366,54 @@ cut_surface(const struct ctx *c, const double *lo, const double *hi,
 		if (in[LOFT_V1])
 			G(k, m) = G(k, m - 1);
 	}
-	/* roots on the lines v = b / m, then u = a / m */
+}
+
+/* The roots on the grid's lines v = b / m, then u = a / m. */
+static void
+grid_roots(const struct ctx *c, struct grid *gr, const int *in)
+{
+	int m = gr->m;
+
 	for (int b = 0; b <= m; b++)
 		for (int a = 0; a < m; a++) {
-			long *x = &hx[(size_t)b * m + a];
+			long *x = &gr->hx[(size_t)b * m + a];
 
 			*x = -1;
 			if ((G(a, b) < 0) != (G(a + 1, b) < 0) &&
 			    !((b == 0 && in[LOFT_V0]) || (b == m && in[LOFT_V1]))) {
 				bracket_root(c, 0, (double)b / m, (double)a / m,
-				    (double)(a + 1) / m, G(a, b), &r[nr]);
-				*x = (long)nr++;
+				    (double)(a + 1) / m, G(a, b), &gr->r[gr->nr]);
+				*x = (long)gr->nr++;
 			}
 		}
 	for (int a = 0; a <= m; a++)
 		for (int b = 0; b < m; b++) {
-			long *x = &vx[(size_t)a * m + b];
+			long *x = &gr->vx[(size_t)a * m + b];
 
 			*x = -1;
 			if ((G(a, b) < 0) != (G(a, b + 1) < 0) &&
 			    !((a == 0 && in[LOFT_U0]) || (a == m && in[LOFT_U1]))) {
 				bracket_root(c, 1, (double)a / m, (double)b / m,
-				    (double)(b + 1) / m, G(a, b), &r[nr]);
-				*x = (long)nr++;
+				    (double)(b + 1) / m, G(a, b), &gr->r[gr->nr]);
+				*x = (long)gr->nr++;
 			}
 		}
-	/* cells: bottom, right, top, left */
+}
+
+/* The roots on each cell's sides (bottom, right, top, left) linked in
+ * pairs; a cell of four by the sign at its centre. */
+static void
+grid_links(const struct ctx *c, struct grid *gr)
+{
+	int m = gr->m;
+	struct root *r = gr->r;
+
 	for (int a = 0; a < m; a++)
 		for (int b = 0; b < m; b++) {
-			long e[4] = { hx[(size_t)b * m + a],
-			    vx[(size_t)(a + 1) * m + b],
-			    hx[(size_t)(b + 1) * m + a], vx[(size_t)a * m + b] };
+			long e[4] = { gr->hx[(size_t)b * m + a],
+			    gr->vx[(size_t)(a + 1) * m + b],
+			    gr->hx[(size_t)(b + 1) * m + a],
+			    gr->vx[(size_t)a * m + b] };
 			long got[4];
 			int k = 0;
 
@@ -414,29 +435,66 @@ cut_surface(const struct ctx *c, const double *lo, const double *hi,
 				}
 			}
 		}
+}
 #undef G
-	if ((seen = calloc(nr + 1, 1)) == NULL) {
-		rc = LOFT_ENOMEM;
-		goto out;
-	}
-	/* open pieces from their ends, then loops */
+
+/* The linked roots into pieces of ps: open pieces from their ends,
+ * then loops.  0 or LOFT_ENOMEM. */
+static int
+grid_walk(const struct ctx *c, struct grid *gr, struct pieces *ps)
+{
+	char *seen = calloc(gr->nr + 1, 1);
+	int rc = 0;
+
+	if (seen == NULL)
+		return LOFT_ENOMEM;
 	for (int pass = 1; pass <= 2 && rc == 0; pass++)
-		for (size_t i = 0; i < nr && rc == 0; i++) {
+		for (size_t i = 0; i < gr->nr && rc == 0; i++) {
 			struct piece *pc;
 
-			if (seen[i] || r[i].deg != pass)
+			if (seen[i] || gr->r[i].deg != pass)
 				continue;
 			if ((pc = new_piece(ps)) == NULL)
 				rc = LOFT_ENOMEM;
 			else
-				rc = walk(c, r, seen, (long)i, pc);
+				rc = walk(c, gr->r, seen, (long)i, pc);
 		}
-out:
-	free(g);
-	free(hx);
-	free(vx);
-	free(r);
 	free(seen);
+	return rc;
+}
+
+/* The cut of one surface, its box lo..hi, into ps: its edges in the
+ * plane, then the rest by marching over a grid of its parameters. */
+static int
+cut_surface(const struct ctx *c, const double *lo, const double *hi,
+    struct pieces *ps)
+{
+	int m = 2 * (c->s->m > c->s->n ? c->s->m : c->s->n), in[4] = { 0 };
+	int rc, ne = 0;
+	struct grid gr = { 0 };
+	size_t cap;
+
+	m = m < GRID_MIN ? GRID_MIN : m > GRID_MAX ? GRID_MAX : m;
+	if ((rc = plane_edges(c, lo, hi, in, &ne, ps)) != 0 || ne == 4)
+		return rc;
+	cap = (size_t)2 * m * (m + 1);
+	gr.m = m;
+	gr.g = malloc((size_t)(m + 1) * (m + 1) * sizeof *gr.g);
+	gr.hx = malloc(cap / 2 * sizeof *gr.hx);
+	gr.vx = malloc(cap / 2 * sizeof *gr.vx);
+	gr.r = malloc(cap * sizeof *gr.r);
+	if (gr.g == NULL || gr.hx == NULL || gr.vx == NULL || gr.r == NULL) {
+		rc = LOFT_ENOMEM;
+	} else {
+		grid_values(c, &gr, in);
+		grid_roots(c, &gr, in);
+		grid_links(c, &gr);
+		rc = grid_walk(c, &gr, ps);
+	}
+	free(gr.g);
+	free(gr.hx);
+	free(gr.vx);
+	free(gr.r);
 	return rc;
 }
 
@@ -586,6 +644,70 @@ append(struct loft_cut_curve *out, const struct piece *pc, int e, int first,
 	return 0;
 }
 
+/* The ends of the open pieces of ps into e, sorted by x, each mated
+ * with the first end after it within jt that has no mate yet (not the
+ * other end of a piece of fewer than three points); pieces of fewer
+ * than two points are marked used.  Returns the count of ends. */
+static size_t
+mate_ends(struct pieces *ps, int dim, double jt, struct end *e, char *used)
+{
+	size_t ne = 0;
+
+	for (size_t i = 0; i < ps->n; i++) {
+		if (ps->v[i].n < 2) {
+			used[i] = 1;
+			continue;
+		}
+		for (int k = 0; k < 2 && !ps->v[i].closed; k++)
+			e[ne++] = (struct end){ i, k, end_point(&ps->v[i], k, dim),
+			    -1 };
+	}
+	qsort(e, ne, sizeof *e, end_cmp);
+	for (size_t a = 0; a < ne; a++)
+		for (size_t b = a + 1; b < ne && e[a].mate < 0 &&
+		    e[b].p[0] - e[a].p[0] <= jt; b++)
+			if (e[b].mate < 0 && !(e[b].i == e[a].i &&
+			    ps->v[e[a].i].n < 3) && vdist(e[a].p, e[b].p, dim) <= jt) {
+				e[a].mate = (long)b;
+				e[b].mate = (long)a;
+			}
+	return ne;
+}
+
+/* Curve cv from piece i, entered at its end from, then on through the
+ * mates of its far ends while they lead to unused pieces; on pass 1 a
+ * chain back to piece i closes cv as a ring.  0 or LOFT_ENOMEM. */
+static int
+chain(struct pieces *ps, const struct end *e, const long *where, char *used,
+    size_t i, int from, int pass, struct loft_cut_curve *cv, int dim,
+    double jt)
+{
+	size_t at = i;
+	int rc = 0;
+
+	for (int first = 1; rc == 0; first = 0) {
+		long m;
+
+		used[at] = 1;
+		rc = append(cv, &ps->v[at], from, first, dim, jt);
+		m = e[where[2 * at + !from]].mate;
+		if (m < 0)
+			break;
+		if (e[m].i == i && pass == 1) {
+			cv->closed = 1;
+			break;
+		}
+		if (used[e[m].i])
+			break;
+		at = e[m].i;
+		from = e[m].e;
+	}
+	if (cv->closed && cv->n > 1 && vdist(cv->p, cv->p +
+	    (cv->n - 1) * dim, dim) <= jt)
+		cv->n--;
+	return rc;
+}
+
 /* Join the pieces ps into out's curves. */
 static int
 join(struct pieces *ps, int dim, double jt, struct loft_cut *out)
@@ -605,31 +727,13 @@ join(struct pieces *ps, int dim, double jt, struct loft_cut *out)
 		rc = LOFT_ENOMEM;
 		goto out;
 	}
-	for (size_t i = 0; i < ps->n; i++) {
-		if (ps->v[i].n < 2) {
-			used[i] = 1;
-			continue;
-		}
-		for (int k = 0; k < 2 && !ps->v[i].closed; k++)
-			e[ne++] = (struct end){ i, k, end_point(&ps->v[i], k, dim),
-			    -1 };
-	}
-	qsort(e, ne, sizeof *e, end_cmp);
-	for (size_t a = 0; a < ne; a++)
-		for (size_t b = a + 1; b < ne && e[a].mate < 0 &&
-		    e[b].p[0] - e[a].p[0] <= jt; b++)
-			if (e[b].mate < 0 && !(e[b].i == e[a].i &&
-			    ps->v[e[a].i].n < 3) && vdist(e[a].p, e[b].p, dim) <= jt) {
-				e[a].mate = (long)b;
-				e[b].mate = (long)a;
-			}
+	ne = mate_ends(ps, dim, jt, e, used);
 	for (size_t a = 0; a < ne; a++)
 		where[2 * e[a].i + e[a].e] = (long)a;
 	/* open curves from a free end, then rings, then closed pieces */
 	for (int pass = 0; pass < 3 && rc == 0; pass++)
 		for (size_t i = 0; i < ps->n && rc == 0; i++) {
 			struct loft_cut_curve *cv;
-			size_t at = i;
 			int from = 0;
 
 			if (used[i] || (pass == 2) != (ps->v[i].closed != 0))
@@ -653,26 +757,7 @@ join(struct pieces *ps, int dim, double jt, struct loft_cut *out)
 				rc = append(cv, &ps->v[i], 0, 1, dim, jt);
 				continue;
 			}
-			for (int first = 1; rc == 0; first = 0) {
-				long m;
-
-				used[at] = 1;
-				rc = append(cv, &ps->v[at], from, first, dim, jt);
-				m = e[where[2 * at + !from]].mate;
-				if (m < 0)
-					break;
-				if (e[m].i == i && pass == 1) {
-					cv->closed = 1;
-					break;
-				}
-				if (used[e[m].i])
-					break;
-				at = e[m].i;
-				from = e[m].e;
-			}
-			if (cv->closed && cv->n > 1 && vdist(cv->p, cv->p +
-			    (cv->n - 1) * dim, dim) <= jt)
-				cv->n--;
+			rc = chain(ps, e, where, used, i, from, pass, cv, dim, jt);
 		}
 out:
 	free(e);

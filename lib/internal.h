@@ -219,6 +219,47 @@ int loft__cholesky_solve(double *a, double *b, size_t n, double rel,
 /* grow.c: grow *buf to hold at least need elements of size sz; 0 or -1. */
 int loft__grow(void **buf, size_t *cap, size_t need, size_t sz);
 
+/*
+ * The operations of a curve type, which its row of types.c's table
+ * names (curve.c has the built-in ones).  A piecewise type has a row
+ * per piece, rows_per_point numbers a coordinate in a row, and eval; a
+ * control-point type (eval NULL) is one piece of a point per row,
+ * evaluated by eval_ctl, and is its own Bezier form (bezier NULL).
+ * bezier: a piece's Bernstein control points, returning its degree.
+ * quartic: a piece as MacCallum's quartic (0) (1) (0)_u (1)_u (h),
+ * 5 dim numbers, exactly; NULL for a type of no such form (degree above
+ * four, or no Hermite segments): programs that work on quartic segments
+ * (patchnew -b, patchdrag, patchloft) then refuse it with a message.
+ */
+struct loft__curve_type {
+	const char *name;
+	int rows_per_point;     /* numbers in a row, per coordinate */
+	void (*eval)(const double *piece, int dim, double u,
+	    double *p, double *d1, double *d2);
+	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
+	    double *p, double *d1, double *d2);
+	int (*bezier)(const double *piece, int dim, double *ctl);
+	void (*quartic)(const double *piece, int dim, double *q);
+};
+
+/*
+ * The operations of a surface type (surface.c has the built-in ones).
+ * bezier: its control net in space (loft_surface_bezier).
+ */
+struct loft__surface_type {
+	const char *name;
+	/* check rec's rows and attributes; set s->dim, s->m, s->n */
+	int (*check)(const struct loft_record *rec, struct loft_surface *s,
+	    struct loft_error *err);
+	void (*eval)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv);
+	void (*eval2)(const struct loft_surface *s, double u, double v,
+	    double *p, double *du, double *dv, double *duu, double *dvv);
+	/* the box of a set of points around the surface (its hull) */
+	void (*box)(const struct loft_surface *s, double *lo, double *hi);
+	void (*bezier)(const struct loft_surface *s, double *ctl);
+};
+
 /* curve.c and surface.c: the operations of each curve and surface type,
  * which types.c's table names. */
 extern const struct loft__curve_type loft__cubic_type, loft__quartic_type,

@@ -420,6 +420,9 @@ struct loft_curve {
 	void (*eval_ctl)(const double *ctl, size_t npts, int dim, double u,
 	    double *p, double *d1, double *d2);
 	int (*bezier)(const double *piece, int dim, double *ctl);
+	/* its type's quartic form of a piece, or NULL: it has none */
+	void (*quartic)(const double *piece, int dim, double *q);
+	int degree;             /* of its Bezier pieces (loft_curve_bezier) */
 };
 
 /*
@@ -452,8 +455,8 @@ void loft_curve_eval(const struct loft_curve *c, size_t i, double u,
  * Bezier curve over its own [0, 1]), written to ctl, dim numbers a
  * point: exact conversions of the record's rows (a cubic's inner points
  * a third of its end tangents in, a quartic's from its ends, end
- * derivatives and (h)).  ctl must hold LOFT_BEZIER_MAXPTS * dim numbers.
- * Returns the degree, 1 to LOFT_BEZIER_MAXPTS - 1.
+ * derivatives and (h)).  ctl must hold (c->degree + 1) * dim numbers.
+ * Returns the degree, c->degree, 1 to LOFT_BEZIER_MAXPTS - 1.
  */
 int loft_curve_bezier(const struct loft_curve *c, size_t i, double *ctl);
 
@@ -901,6 +904,41 @@ int loft_drag_project(double *delta, const double *view, int dim,
     struct loft_error *err);
 
 /* ------------------------------------------------------------------ */
+/* Exact Bezier forms of the record types (bezform.c)                  */
+
+/*
+ * The quartic in MacCallum's form (0) (1) (0)_u (1)_u (h), its five
+ * vectors of dim numbers in_step numbers apart in k, as its Bernstein
+ * control points b0..b4, out_step apart in b: b0 = (0), b4 = (1), the
+ * end derivatives 4 (b1 - b0) and 4 (b4 - b3), and the point at u = 1/2
+ * (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16 = (h), so
+ * b2 = (16 (h) - 5 (0) - 5 (1) - (0)_u + (1)_u) / 6.  The one conversion
+ * of a quartic to the Bernstein basis: curves, patches and their boxes
+ * use it.  k and b do not overlap.
+ */
+void loft_quartic_bezier(const double *k, size_t in_step, double *b,
+    size_t out_step, int dim);
+
+/*
+ * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
+ * net of the same polynomial surface, u-major: P_ij, i the u index, at
+ * ctl[(5 * i + j) * dim] (25 * dim numbers).
+ */
+void loft_patch_bezier(const double *b, int dim, double *ctl);
+
+/*
+ * The fewest equal parameter steps n that put the polyline through the
+ * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
+ * the same parameter, so every point of the curve is within tol of the
+ * polyline): linear interpolation over steps h errs by at most
+ * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
+ * difference of the control points.  tol > 0.  Returns 1 to max, or 0
+ * when more than max steps would be needed.
+ */
+long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
+    long max);
+
+/* ------------------------------------------------------------------ */
 /* MacCallum's bi-quartic patches (patch.c)                            */
 
 /*
@@ -1088,12 +1126,13 @@ int loft_patch_coons(const double *const *c, int dim, double *b,
  * patchnew's boundaries and patchdrag's dragged curves are, and fill c
  * as loft_curve_from_record does.  Returns 0, or LOFT_EINPUT when rec is
  * no curve or a curve of another kind (a bezier record's rows are
- * control points, not segments).
+ * control points, not segments), or its type has no quartic form.
  */
 int loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
     struct loft_error *err);
 
-/* Segment i of c (from loft_curve_segments) as a quartic: 5 * dim numbers. */
+/* Segment i of c as a quartic: 5 * dim numbers, by its type's quartic
+ * form.  c is from loft_curve_segments, or has c->quartic set. */
 void loft_curve_quartic(const struct loft_curve *c, size_t i, double *q);
 
 /* ------------------------------------------------------------------ */
@@ -1110,6 +1149,7 @@ struct loft_surface {
 	void (*eval2)(const struct loft_surface *s, double u, double v,
 	    double *p, double *du, double *dv, double *duu, double *dvv);
 	void (*box)(const struct loft_surface *s, double *lo, double *hi);
+	void (*bezier)(const struct loft_surface *s, double *ctl);
 };
 
 /* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
@@ -1144,6 +1184,14 @@ void loft_surface_from_patch(const double *b, int dim, struct loft_surface *s);
  * form), so a plane that misses the box misses the surface.
  */
 void loft_surface_box(const struct loft_surface *s, double *lo, double *hi);
+
+/*
+ * The control net of s, of (s->m + 1)(s->n + 1) points of 3 numbers,
+ * u-major (P_ij at ctl[3 * (i * (s->n + 1) + j)]), in space: a plane
+ * surface's z is 0.  The same polynomial surface exactly: a patch's net
+ * is loft_patch_bezier's.
+ */
+void loft_surface_bezier(const struct loft_surface *s, double *ctl);
 
 /* ------------------------------------------------------------------ */
 /* Grading outlines into shoe sizes (grade.c)                          */

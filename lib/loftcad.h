@@ -7,7 +7,8 @@
  * polynomial pieces of one degree, a surface as tensor-product Bezier
  * patches.  A format is one module behind struct loft_cad_format, a table
  * of callbacks in the manner of libspiro's bezctx: the geometry knows no
- * format, and a new format is one file and one line of loft_cad_formats.
+ * format, and a new format is one file and one line of loft_cad_formats
+ * (cadformats.c).
  * A format sets only the callbacks of what it can take; cad.c turns
  * curves into polylines (within the tolerance) for a format that takes
  * only polylines, and surfaces into one welded triangle mesh for a format
@@ -39,27 +40,8 @@
 
 #include "loftprog.h"
 
-/* ------------------------------------------------------------------ */
-/* Exact Bezier forms of the record types (bezform.c)                  */
-
-/*
- * The bi-quartic patch b (loft_patch_eval's layout) as the 5 x 5 control
- * net of the same polynomial surface, u-major: P_ij, i the u index, at
- * ctl[(5 * i + j) * dim] (25 * dim numbers).
- */
-void loft_patch_bezier(const double *b, int dim, double *ctl);
-
-/*
- * The fewest equal parameter steps n that put the polyline through the
- * Bezier curve ctl of degree deg at t = j/n within tol of the curve (at
- * the same parameter, so every point of the curve is within tol of the
- * polyline): linear interpolation over steps h errs by at most
- * h^2/8 max |C''|, and |C''| <= deg (deg - 1) times the largest second
- * difference of the control points.  tol > 0.  Returns 1 to max, or 0
- * when more than max steps would be needed.
- */
-long loft_bezier_steps(const double *ctl, int deg, int dim, double tol,
-    long max);
+/* The exact Bezier forms of the record types are the core's
+ * (loft.h, bezform.c). */
 
 /* ------------------------------------------------------------------ */
 /* Documents (cad.c)                                                   */
@@ -201,6 +183,11 @@ extern const struct loft_cad_entry loft_cad_formats[];
 
 /* The format of loft_cad_formats called name, or NULL. */
 const struct loft_cad_format *loft_cad_format_named(const char *name);
+
+/* loft_parse_word of name among loft_cad_formats' names (tocad -f): 0
+ * and the entry's index in *i, or an error naming the choices. */
+#define LOFT_CAD_MAXFORMATS 32
+int loft_cad_format_find(const char *name, int *i, struct loft_error *err);
 
 /* The document being made. */
 struct loft_cad_doc {

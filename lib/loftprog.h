@@ -56,6 +56,13 @@ void loft_put_row(struct loft_writer *w, const double *v, int n);
 void loft_end_line(struct loft_writer *w);
 void loft_end_record(struct loft_writer *w);   /* the blank line */
 void loft_writer_free(struct loft_writer *w);
+/*
+ * Take back what w holds after mark, a w->len read at the start of a
+ * record (or 0: everything): w->len is mark again (kept when it is
+ * already below), and w is at the start of a line.  w->bad is the
+ * caller's to clear.  The one way a record is taken out of a writer.
+ */
+void loft_writer_cut(struct loft_writer *w, size_t mark);
 
 /*
  * Grow the malloc'd array *buf of *cap elements of sz bytes (NULL and 0
@@ -253,9 +260,26 @@ void loft_outfiles_free(struct loft_outfiles *s);
 /* Reading CAD documents into records (cadread.c, dxfread.c,          */
 /* svgread.c, csvread.c)                                               */
 
-/* The formats, by the names of fromcad -f. */
-enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV };
-extern const char *const loft_cadin_format_name[];       /* NULL-ended */
+struct loft_cadin;
+
+/*
+ * A reader of a CAD format: its name (fromcad -f's word), whether a
+ * document buf[0..len) looks like one of its (sniff: 1 or 0), and its
+ * reading (as loft_cadin_read).  loft_cadin_readers (cadreaders.c) is
+ * the table of them, in the order they are sniffed, ended by a NULL
+ * name: a new reader is its module and one line there.
+ */
+struct loft_cadin_reader {
+	const char *name;
+	int (*sniff)(const char *buf, size_t len);
+	int (*read)(const char *buf, size_t len, struct loft_cadin *c);
+};
+extern const struct loft_cadin_reader loft_cadin_readers[];
+
+/* loft_parse_word of name among the readers' names (fromcad -f): 0 and
+ * the reader's index in *i, or an error naming the choices. */
+#define LOFT_CADIN_MAXREADERS 32
+int loft_cadin_find(const char *name, int *i, struct loft_error *err);
 
 /*
  * Circular and elliptic arcs are not polynomial, so the readers
@@ -288,8 +312,9 @@ struct loft_cadin {
 /*
  * The format of the document buf[0..len), told from its content: a
  * binary or ASCII DXF, an XML document (SVG), or a text whose first line
- * names columns (CSV).  Returns the enum loft_cadin_format, or -1 when it
- * is none of them (len 0 included).
+ * names columns (CSV): the first reader of loft_cadin_readers whose
+ * sniff takes it.  Returns its index there, or -1 when no reader takes
+ * it (len 0 included).
  */
 int loft_cadin_sniff(const char *buf, size_t len);
 
@@ -301,6 +326,7 @@ int loft_cadin_sniff(const char *buf, size_t len);
  * (complained about too; what was read before may be in w).
  */
 int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c);
+/* The readers of loft_cadin_readers, and their sniffs (cadread.c). */
 int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);

@@ -161,21 +161,11 @@ loft_curve_segments(const struct loft_record *rec, struct loft_curve *c,
 {
 	int rc = loft_curve_from_record(rec, c, err);
 
-	if (rc == 0 && !loft_record_is(rec, LOFT_KIND_SEGMENTS))
+	if (rc == 0 && (!loft_record_is(rec, LOFT_KIND_SEGMENTS) ||
+	    c->quartic == NULL))
 		return loft_fail(err, LOFT_EINPUT, -1, "a %s record: want a "
 		    "curve of cubic or quartic segments", c->type);
 	return rc;
-}
-
-void
-loft_curve_quartic(const struct loft_curve *c, size_t i, double *q)
-{
-	const double *piece = c->coef + i * (size_t)c->rowlen;
-
-	if (c->rowlen == 4 * c->dim)            /* a cubic's four vectors */
-		loft_cubic_to_quartic(piece, c->dim, q);
-	else
-		memcpy(q, piece, 5 * (size_t)c->dim * sizeof *q);
 }
 
 /*
@@ -812,16 +802,11 @@ cut_link(struct loft_design *d, struct loft_patch *child, int e, int c,
 	return 0;
 }
 
-int
-loft_design_split(struct loft_design *d, size_t i, int dir, double t,
+/* loft_design_split's preconditions: 0, or LOFT_EINPUT with err. */
+static int
+split_check(const struct loft_design *d, size_t i, int dir, double t,
     struct loft_error *err)
 {
-	int keep0 = dir == 0 ? LOFT_U0 : LOFT_V0;
-	int keep1 = dir == 0 ? LOFT_U1 : LOFT_V1;
-	int cut[2] = { dir == 0 ? LOFT_V0 : LOFT_U0,
-	    dir == 0 ? LOFT_V1 : LOFT_U1 };
-	struct loft_patch ch[2], *q;
-
 	if (i >= d->n || (dir != 0 && dir != 1) || !(t > 0 && t < 1))
 		return loft_fail(err, LOFT_EINPUT, -1, "split of patch %zu of "
 		    "%zu, direction %d, at %g: want a patch of the design, "
@@ -838,6 +823,50 @@ loft_design_split(struct loft_design *d, size_t i, int dir, double t,
 	if (d->maxid > ID_MAX - 2)
 		return loft_fail(err, LOFT_EINPUT, -1, "ids are used up (the "
 		    "largest is %ld)", d->maxid);
+	return 0;
+}
+
+/* The links of q across the edges cut[0..1] the split cuts, divided at
+ * t between the children ch (and renamed in the neighbours): 0, or -1
+ * when memory ran out. */
+static int
+split_cut_links(struct loft_design *d, struct loft_patch *q,
+    struct loft_patch *ch, const int *cut, double t)
+{
+	for (int k = 0; k < 2; k++) {
+		int e = cut[k];
+
+		for (size_t m = 0; m < q->nlink[e]; m++) {
+			struct loft_link l = q->link[e][m], back;
+			long qi = loft_design_find(d, l.id);
+			int f;
+			size_t r;
+
+			if (qi < 0 || !find_link(&d->p[qi], q->id, &f, &r))
+				continue;       /* loft_design_check refuses */
+			back = d->p[qi].link[f][r];
+			drop_link(&d->p[qi], f, r);
+			for (int c = 0; c < 2; c++)
+				if (cut_link(d, &ch[c], e, c, t, &l, qi, f,
+				    &back) != 0)
+					return -1;
+		}
+	}
+	return 0;
+}
+
+int
+loft_design_split(struct loft_design *d, size_t i, int dir, double t,
+    struct loft_error *err)
+{
+	int keep0 = dir == 0 ? LOFT_U0 : LOFT_V0;
+	int keep1 = dir == 0 ? LOFT_U1 : LOFT_V1;
+	int cut[2] = { dir == 0 ? LOFT_V0 : LOFT_U0,
+	    dir == 0 ? LOFT_V1 : LOFT_U1 };
+	struct loft_patch ch[2], *q;
+
+	if (split_check(d, i, dir, t, err) != 0)
+		return LOFT_EINPUT;
 	if (design_grow(d, err) != 0 || index_reserve(d, 2) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	q = &d->p[i];
@@ -868,25 +897,8 @@ loft_design_split(struct loft_design *d, size_t i, int dir, double t,
 	    add_link(&ch[1], keep0, ch[0].id, 0, 1) != 0)
 		goto nomem;
 	/* the edges the split cuts: their links divide at t */
-	for (int k = 0; k < 2; k++) {
-		int e = cut[k];
-
-		for (size_t m = 0; m < q->nlink[e]; m++) {
-			struct loft_link l = q->link[e][m], back;
-			long qi = loft_design_find(d, l.id);
-			int f;
-			size_t r;
-
-			if (qi < 0 || !find_link(&d->p[qi], q->id, &f, &r))
-				continue;       /* loft_design_check refuses */
-			back = d->p[qi].link[f][r];
-			drop_link(&d->p[qi], f, r);
-			for (int c = 0; c < 2; c++)
-				if (cut_link(d, &ch[c], e, c, t, &l, qi, f,
-				    &back) != 0)
-					goto nomem;
-		}
-	}
+	if (split_cut_links(d, q, ch, cut, t) != 0)
+		goto nomem;
 	index_drop(d, q->id, i);
 	patch_free(q);
 	d->p[i] = ch[0];

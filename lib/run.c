@@ -65,9 +65,8 @@ run_stream(struct loft_run *run, FILE *fp, const char *name)
 			loft_report(run, &rec, &err);
 			continue;
 		}
-		run->w.len = 0;
+		loft_writer_cut(&run->w, 0);
 		run->w.bad = 0;
-		run->w.col = 0;
 		err.line = 0;
 		err.row = -1;
 		if (run->handle(run, &rec, &err) != 0) {
@@ -202,7 +201,7 @@ loft_run_made(struct loft_run *run)
 		fprintf(run->msg, "%s: %s\n", run->prog, run->w.bad ==
 		    LOFT_ENOMEM ? "out of memory" : "result is not finite");
 		run->status = 1;
-		run->w.len = 0;
+		loft_writer_cut(&run->w, 0);
 	}
 	status = loft_run_write(run, run->w.buf, run->w.len);
 	loft_writer_free(&run->w);
@@ -284,8 +283,8 @@ loft_run_design(struct loft_run *run, int nfiles, char **files,
 			    "is one design, and part of it is bad\n",
 			    run->prog);
 	} else {
-		run->w.len = 0;         /* loft_run_files freed it */
-		run->w.bad = run->w.col = 0;
+		loft_writer_cut(&run->w, 0);    /* loft_run_files freed it */
+		run->w.bad = 0;
 		if (design(run, c.recs, c.n) != 0) {
 			run->status = 1;
 		} else if (run->w.bad) {

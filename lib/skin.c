@@ -98,7 +98,7 @@ cmp_double(const void *a, const void *b)
 }
 
 /* The piece [lo, hi] of piece i of c as a quartic q: exact for curves
- * of degree four or less; a whole piece is copied. */
+ * of degree four or less; a whole piece is its type's quartic form. */
 static void
 piece(const struct loft_curve *c, size_t i, double lo, double hi, double *q)
 {
@@ -106,10 +106,7 @@ piece(const struct loft_curve *c, size_t i, double lo, double hi, double *q)
 	double len = hi - lo;
 
 	if (lo == 0 && hi == 1) {
-		if (c->rowlen == 5 * dim)
-			memcpy(q, c->coef + i * c->rowlen, 5 * dim * sizeof *q);
-		else
-			loft_cubic_to_quartic(c->coef + i * c->rowlen, dim, q);
+		loft_curve_quartic(c, i, q);
 		return;
 	}
 	loft_curve_eval(c, i, lo, q, q + 2 * dim, NULL);
@@ -637,8 +634,7 @@ skin_free(struct skin *s)
 static int
 check_section(const struct loft_curve *sec, size_t k, struct loft_error *err)
 {
-	if (sec[k].eval_ctl != NULL || (sec[k].rowlen != 4 * sec[k].dim &&
-	    sec[k].rowlen != 5 * sec[k].dim))
+	if (sec[k].quartic == NULL)
 		return loft_fail(err, LOFT_EINPUT, (long)k, "a %s record: "
 		    "a section is a cubic or quartic curve", sec[k].type);
 	if (sec[k].npieces == 0)

@@ -470,6 +470,14 @@ loft_writer_free(struct loft_writer *w)
 	w->len = w->cap = 0;
 }
 
+void
+loft_writer_cut(struct loft_writer *w, size_t mark)
+{
+	if (mark < w->len)
+		w->len = mark;
+	w->col = 0;
+}
+
 int
 loft_grow(void **buf, size_t *cap, size_t need, size_t sz)
 {

@@ -8,19 +8,6 @@
 
 #include "internal.h"
 
-struct loft__surface_type {
-	const char *name;
-	/* check rec's rows and attributes; set s->dim, s->m, s->n */
-	int (*check)(const struct loft_record *rec, struct loft_surface *s,
-	    struct loft_error *err);
-	void (*eval)(const struct loft_surface *s, double u, double v,
-	    double *p, double *du, double *dv);
-	void (*eval2)(const struct loft_surface *s, double u, double v,
-	    double *p, double *du, double *dv, double *duu, double *dvv);
-	/* the box of a set of points around the surface (its hull) */
-	void (*box)(const struct loft_surface *s, double *lo, double *hi);
-};
-
 /* Widen lo, hi (dim numbers each) to hold p; first: start with p. */
 static void
 widen(const double *p, int dim, int first, double *lo, double *hi)
@@ -33,46 +20,37 @@ widen(const double *p, int dim, int first, double *lo, double *hi)
 	}
 }
 
-/*
- * A quartic in MacCallum's form (0) (1) (0)_u (1)_u (h), k[0..4] apart
- * by step, as its Bernstein (Bezier) control points: b0 = (0), b4 =
- * (1), b1 = (0) + (0)_u / 4, b3 = (1) - (1)_u / 4, and b2 from the
- * point at 1/2, (b0 + 4 b1 + 6 b2 + 4 b3 + b4) / 16 = (h).
- */
-static void
-quartic_bernstein(const double *k, size_t step, int dim, double *b)
-{
-	for (int c = 0; c < dim; c++) {
-		double p0 = k[c], p1 = k[step + c], d0 = k[2 * step + c],
-		    d1 = k[3 * step + c], h = k[4 * step + c];
-		double b1 = p0 + d0 / 4, b3 = p1 - d1 / 4;
-
-		b[c] = p0;
-		b[dim + c] = b1;
-		b[2 * dim + c] = (16 * h - p0 - 4 * b1 - 4 * b3 - p1) / 6;
-		b[3 * dim + c] = b3;
-		b[4 * dim + c] = p1;
-	}
-}
-
 /* patch: the box of its bi-quartic Bezier net, which holds it (the
  * Bernstein polynomials are positive and sum to 1). */
 static void
 box_patch(const struct loft_surface *s, double *lo, double *hi)
 {
-	double rows[5][5 * LOFT_MAXDIM], col[5 * LOFT_MAXDIM], net[5 * LOFT_MAXDIM];
+	double net[25 * LOFT_MAXDIM];
 	int dim = s->dim;
 
-	for (int i = 0; i < 5; i++)
-		quartic_bernstein(s->coef + 5 * i * dim, (size_t)dim, dim, rows[i]);
-	for (int j = 0; j < 5; j++) {
-		for (int i = 0; i < 5; i++)
-			for (int c = 0; c < dim; c++)
-				col[i * dim + c] = rows[i][j * dim + c];
-		quartic_bernstein(col, (size_t)dim, dim, net);
-		for (int i = 0; i < 5; i++)
-			widen(net + i * dim, dim, i == 0 && j == 0, lo, hi);
-	}
+	loft_patch_bezier(s->coef, dim, net);
+	for (int i = 0; i < 25; i++)
+		widen(net + i * dim, dim, i == 0, lo, hi);
+}
+
+/* patch: its net (loft_patch_bezier), in space. */
+static void
+bezier_patch(const struct loft_surface *s, double *ctl)
+{
+	double b[25 * LOFT_MAXDIM];
+
+	loft_patch_bezier(s->coef, s->dim, b);
+	for (size_t i = 0; i < 25; i++)
+		for (int k = 0; k < 3; k++)
+			ctl[3 * i + k] = k < s->dim ? b[i * s->dim + k] : 0;
+}
+
+/* bezier-surface: its own control points. */
+static void
+bezier_bezier_surface(const struct loft_surface *s, double *ctl)
+{
+	memcpy(ctl, s->coef, 3 * (size_t)(s->m + 1) * (s->n + 1) *
+	    sizeof *ctl);
 }
 
 /* bezier-surface: the box of its control points. */
@@ -188,10 +166,11 @@ eval2_bezier_surface(const struct loft_surface *s, double u, double v,
 }
 
 const struct loft__surface_type loft__patch_type =
-	{ "patch", check_patch, eval_patch, eval2_patch, box_patch };
+	{ "patch", check_patch, eval_patch, eval2_patch, box_patch,
+	    bezier_patch };
 const struct loft__surface_type loft__bezier_surface_type =
 	{ "bezier-surface", check_bezier_surface, eval_bezier_surface,
-	    eval2_bezier_surface, box_bezier_surface };
+	    eval2_bezier_surface, box_bezier_surface, bezier_bezier_surface };
 
 /* The surface operations of rec's type, or NULL: it is no surface. */
 static const struct loft__surface_type *
@@ -225,6 +204,7 @@ loft_surface_from_record(const struct loft_record *rec,
 	s->eval = t->eval;
 	s->eval2 = t->eval2;
 	s->box = t->box;
+	s->bezier = t->bezier;
 	return 0;
 }
 
@@ -241,6 +221,7 @@ loft_surface_from_patch(const double *b, int dim, struct loft_surface *s)
 	s->eval = t->eval;
 	s->eval2 = t->eval2;
 	s->box = t->box;
+	s->bezier = t->bezier;
 }
 
 void
@@ -261,4 +242,10 @@ loft_surface_eval2(const struct loft_surface *s, double u, double v,
     double *p, double *du, double *dv, double *duu, double *dvv)
 {
 	s->eval2(s, u, v, p, du, dv, duu, dvv);
+}
+
+void
+loft_surface_bezier(const struct loft_surface *s, double *ctl)
+{
+	s->bezier(s, ctl);
 }

@@ -7,6 +7,13 @@
 
 #include "internal.h"
 
+#ifdef LOFT_TEST_LINE
+/* tests/linetype.c: a degree-1 segment type, built into make check's
+ * copies of the programs in bin/test/line only, to see every program
+ * take a type it was not written for or refuse it with a message. */
+extern const struct loft__curve_type loft__test_line_type;
+#endif
+
 const struct loft_type loft_types[] = {
 	{ "points", LOFT_KIND_KNOTS, 0, NULL, NULL },
 	{ "cubic", LOFT_KIND_CURVE | LOFT_KIND_SEGMENTS, 3,
@@ -19,6 +26,10 @@ const struct loft_type loft_types[] = {
 	    NULL, &loft__patch_type },
 	{ "bezier-surface", LOFT_KIND_SURFACE | LOFT_KIND_CONTROL, 0,
 	    NULL, &loft__bezier_surface_type },
+#ifdef LOFT_TEST_LINE
+	{ "line", LOFT_KIND_CURVE | LOFT_KIND_SEGMENTS, 1,
+	    &loft__test_line_type, NULL },
+#endif
 	{ NULL, 0, 0, NULL, NULL }
 };
 

@@ -34,6 +34,8 @@ suite sh tests/cmd.sh
 suite sh tests/fit.sh
 slow bin/test/patch
 suite sh tests/patch.sh
+suite sh tests/linetype.sh
+suite sh tests/registry.sh
 suite bin/test/bezier
 suite sh tests/bezapprox.sh
 slow bin/test/numtest
