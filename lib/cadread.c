@@ -68,8 +68,7 @@ loft_cadin_sniff(const char *buf, size_t len)
 
 	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0)
 		return LOFT_CADIN_DXF;
-	if (len >= 3 && memcmp(buf, "\xef\xbb\xbf", 3) == 0)
-		i = 3;          /* a UTF-8 byte order mark */
+	i = loft_bom(buf, len);
 	while (i < len && (buf[i] == ' ' || buf[i] == '\t' || buf[i] == '\r' ||
 	    buf[i] == '\n'))
 		i++;
@@ -88,7 +87,10 @@ loft_cadin_sniff(const char *buf, size_t len)
 		    len - i)) != NULL && nl + 1 < buf + len)
 			return LOFT_CADIN_DXF;
 	}
-	/* CSV: a header line that names an x and a y column */
+	/* CSV: Excel's "sep=;" line, or a header line that names an x and
+	 * a y column */
+	if (n >= 5 && (memcmp(l, "sep=", 4) == 0 || memcmp(l, "\"sep=", 5) == 0))
+		return LOFT_CADIN_CSV;
 	{
 		int x = 0, y = 0;
 
@@ -110,6 +112,10 @@ loft_cadin_sniff(const char *buf, size_t len)
 int
 loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c)
 {
+	size_t bom = loft_bom(buf, len);
+
+	buf += bom;     /* every reader starts after a byte order mark */
+	len -= bom;
 	switch (format) {
 	case LOFT_CADIN_DXF: return loft_dxf_read(buf, len, c);
 	case LOFT_CADIN_SVG: return loft_svg_read(buf, len, c);

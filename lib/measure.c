@@ -486,6 +486,8 @@ end_limit(const struct loft__piece *pc, int end, double *k)
 	int n2 = LOFT__DEG(pc, 2), n3 = LOFT__DEG(pc, 3);
 	double a[LOFT_MAXDIM], b[LOFT_MAXDIM], d[LOFT_MAXDIM], na, nb;
 
+	if (!(speed_scale(pc) > 0))
+		return -1;      /* the piece is a point: no tangent anywhere */
 	if (piece_straight(pc)) {
 		*k = 0;
 		return 0;
