@@ -391,8 +391,9 @@ stream_cases() {
 	bad "a header after a row" 3 "header line inside a record"
 	awk 'NR == 1 { print }' "$T/g1" >"$T/case"
 	bad "a header and no rows" 1
-	printf '\357\273\277' | cat - "$T/g1" >"$T/case"
-	bad "a UTF-8 byte order mark" 1
+	# (one that begins a file is skipped: see "a byte order mark")
+	printf '\n\357\273\277' | cat - "$T/g1" >"$T/case"
+	bad "a UTF-8 byte order mark inside the stream" 2
 	cp "$T/g1" "$T/ref"
 	awk 'NR == 1 { gsub(/ /, " \t  "); $0 = "  " $0 " # note" } { print }' \
 	    "$T/g1" >"$T/case"
@@ -1281,6 +1282,11 @@ grade_good() {
 grade_opts="-r -1:1 -l 1 -w 0.5"
 grade_cases() {
 	opts -r -1:1 -l 1 -w 0.5
+	# issue 28: +1001 was written, then refused when read back
+	printf 'points size=+1000\n0 0\n10 1\n5 3\n' >"$T/case"
+	bad "a step past size=+1000" 1 "size +1001 is beyond what size= holds"
+	printf 'points size=-1000\n0 0\n10 1\n5 3\n' >"$T/case"
+	bad "a step past size=-1000" 1 "size -1001 is beyond what size= holds"
 	knots '0 0\n'
 	bad "one knot" 1 "no extent along x"
 	knots '1 0\n1 1\n1 5\n'
@@ -2028,6 +2034,9 @@ alone_in() {
 
 patchcut_kind=design
 patchcut_opts="-x 1"
+# patchcut(1): 1 when a plane misses every surface, and with no surfaces
+# every plane does (issue 28: it exited 0)
+patchcut_empty="patchcut: no surfaces in the input: every plane misses"
 patchcut_run() { "$B/patchcut" "$@"; }
 patchcut_good() { patchsplit_good "$@"; }
 
@@ -2042,6 +2051,17 @@ patchcut_cases() {
 	good "a bezier-surface"
 	OPTS="-x 100"
 	alone_in "a plane that misses" "plane x = 100 misses the design"
+	# issue 28: an all-zero patch gave a curve of one point and said
+	# the plane missed; now only the message, exit 1
+	printf 'patch id=1\n' >"$T/zero"
+	for i in 1 2 3 4 5; do echo "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0"; done >>"$T/zero"
+	OPTS="-x 0"
+	tc="an all-zero patch"
+	run "$T/zero"
+	status 1
+	message_at "$T/zero" 1
+	says "plane x = 0 misses the design (it meets it in single points"
+	[ ! -s "$T/out" ] && ok || no "$what: wrote $(head -3 "$T/out")"
 	OPTS="-x 100 -x 1"
 	tc="a plane that misses, one that cuts"
 	run "$T/g12"
