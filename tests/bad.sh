@@ -1964,6 +1964,16 @@ tocad_cases() {
 	opts -t 1e-300
 	printf 'quartic\n0 0 1 0 0 1 0 -1 0.5 0.4\n' >"$T/case"
 	good "a quartic at a tolerance below its rounding"
+	# issue 28: a patch of no area gave an STL of no facets, exit 0
+	printf 'patch id=1\n' >"$T/zero"
+	for i in 1 2 3 4 5; do echo "0 0 0 0 0 0 0 0 0 0 0 0 0 0 0"; done >>"$T/zero"
+	for f in stl obj; do
+		what="a patch of no area into $f"
+		"$B/tocad" -f $f "$T/zero" >"$T/out" 2>"$T/err"
+		[ $? -eq 1 ] && [ ! -s "$T/out" ] &&
+		    grep -q "^tocad: the surfaces have no area" "$T/err" && ok ||
+		    no "$what: $(head -2 "$T/out" "$T/err")"
+	done
 }
 
 # ---- patchloft -----------------------------------------------------------------
