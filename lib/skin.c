@@ -191,6 +191,20 @@ next(const struct skin *s, size_t k)
 	return k + 1 == s->ns ? 0 : k + 1;
 }
 
+/* The sign of a . b, of unit copies: products of sections of 1e-300 or
+ * 1e300 underflow or overflow (issue 28). */
+static double
+same_way(const double *a, const double *b, int dim)
+{
+	double ua[LOFT_MAXDIM], ub[LOFT_MAXDIM];
+
+	vcopy(ua, a, dim);
+	vcopy(ub, b, dim);
+	vunit(ua, dim);
+	vunit(ub, dim);
+	return vdot(ua, ub, dim);
+}
+
 /*
  * Sections that cross: in strip k the chord from section k to k + 1
  * at some breakpoint points against the strip's mean chord, or against
@@ -214,8 +228,8 @@ check_order(const struct skin *s, struct loft_error *err)
 
 			vcopy(prior, d, dim);
 			vsub(d, NODE(s, next(s, k), j), NODE(s, k, j), dim);
-			dot = j > 0 ? vdot(d, prior, dim) : 1;
-			if (!(vdot(d, mean, dim) > 0) || !(dot > 0))
+			dot = j > 0 ? same_way(d, prior, dim) : 1;
+			if (!(same_way(d, mean, dim) > 0) || !(dot > 0))
 				return loft_fail(err, LOFT_EGEOM, (long)next(s, k),
 				    "section %zu crosses section %zu (at its "
 				    "breakpoint %zu of %zu): the sections must "
