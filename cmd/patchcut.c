@@ -250,6 +250,11 @@ cut_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 		loft_report(run, &recs[0], &err);
 		rc = 1;
 	}
+	if (rc == 0 && o->tol > 0 && loft_tol_check(o->tol, k.size, 0,
+	    &err) != 0) {
+		loft_report(run, &recs[0], &err);
+		rc = 1;
+	}
 	for (size_t i = 0; rc == 0 && i < o->npl; i++) {
 		const struct plane *p = &o->pl[i];
 		struct loft_cut cut = { 0 };

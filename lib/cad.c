@@ -383,7 +383,7 @@ item(const struct loft_cad_doc *d, const struct loft_record *rec,
 	if (measure(p, n, dim, box, box + 3, &it->size, err) != 0)
 		return LOFT_EGEOM;
 	it->tol = d->o.tol > 0 ? d->o.tol : LOFT_CAD_RELTOL * it->size;
-	return 0;
+	return d->o.tol > 0 ? loft_tol_check(d->o.tol, it->size, 0, err) : 0;
 }
 
 /* The record goes in: the document's begin, its box, begin_record. */

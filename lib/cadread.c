@@ -338,6 +338,8 @@ loft__arc_chords(const struct loft_cadin *c, double r, double a)
 {
 	double tol = arc_tol(c, r), t, n;
 
+	if (loft_tol_check(tol, r, 0, NULL) != 0)
+		return -1;      /* t = 0 below rounding: was a square */
 	a = fabs(a);
 	t = tol >= r ? M_PI / 2 : 2 * acos(1 - tol / r);
 	if (!(t > 0) || t > M_PI / 2)
@@ -364,6 +366,8 @@ loft__arc_cubics(const struct loft_cadin *c, double r, double a)
 {
 	double tol = arc_tol(c, r), n, t;
 
+	if (loft_tol_check(tol, r, 0, NULL) != 0)
+		return -1;
 	a = fabs(a);
 	/* sin^6(t/4) ~ (t/4)^6: a first guess from below, then step up */
 	t = 4 * pow(27 * tol / (2 * r), 1.0 / 6);
