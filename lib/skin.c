@@ -329,14 +329,23 @@ ratios(const struct skin *s)
 	for (size_t k = 0; k < s->ns; k++)
 		for (size_t j = 0; j < s->nodes; j++) {
 			double *r = &s->rho[k * s->nodes + j];
-			const double *a, *b;
-			double ab, bb, e[LOFT_MAXDIM];
+			double a[LOFT_MAXDIM], b[LOFT_MAXDIM], ab, bb,
+			    e[LOFT_MAXDIM], m;
 
 			*r = 0;
 			if (!s->cs && (j == 0 || j == s->nseg))
 				continue;
-			a = SEG(s, k, j) + 2 * dim;
-			b = SEG(s, k, j > 0 ? j - 1 : s->nseg - 1) + 3 * dim;
+			vcopy(a, SEG(s, k, j) + 2 * dim, dim);
+			vcopy(b, SEG(s, k, j > 0 ? j - 1 : s->nseg - 1) + 3 * dim,
+			    dim);
+			/* both by one power of two, exactly: the products of
+			 * sections of 1e+-160 over- or underflowed (issue 28) */
+			m = fmax(vmaxabs(a, dim), vmaxabs(b, dim));
+			if (m > 0 && m < INFINITY)
+				for (int q = 0, x = ilogb(m); q < dim; q++) {
+					a[q] = ldexp(a[q], -x);
+					b[q] = ldexp(b[q], -x);
+				}
 			ab = vdot(a, b, dim);
 			bb = vdot(b, b, dim);
 			if (!(ab > 0 && bb > 0))
