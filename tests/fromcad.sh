@@ -899,6 +899,14 @@ csv 'x,y\n"1,2\n'
 status 1
 says "c.csv:2: a quote is never closed"
 out_empty
+# issue 28: a DXF circle at -t 1e-18 of its radius came out as 4 chords,
+# a square, exit 0: a tolerance below the rounding is refused
+printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n1\n0\nENDSEC\n0\nEOF\n' >"$T/circ.dxf"
+fails 1 "circ.dxf:5: CIRCLE: it needs more chords than the tolerance allows" "$F -t 1e-18 $T/circ.dxf"
+# a byte order mark before a DXF
+{ printf '\357\273\277'; cat "$T/circ.dxf"; } >"$T/bom.dxf"
+run "$F $T/bom.dxf"
+status 0
 # 10^5 columns in a pass: a quadratic reading took 20 s (issue 28); a
 # failing sanitizer or valgrind run would time out the suite, not this
 awk 'BEGIN { for (i = 0; i < 100000; i++) printf "c%d,", i; print "x,y"

@@ -238,6 +238,25 @@ sweep "fromcad, CSV" rows scale_csv '"$B/fromcad" $IN'
 SRC=$T/c.dxf
 sweep "fromcad, DXF" rows scale_dxf '"$B/fromcad" -f dxf $IN'
 
+# directions of any length are the same direction, to the last digit
+# (issue 28: -S 1e-320,0 and -w 0,0,1e-320 differed in the last digit)
+same_as() {
+	what=$1
+	eval "$2" >"$T/a" 2>&1
+	eval "$3" >"$T/b" 2>&1
+	cmp -s "$T/a" "$T/b" && [ -s "$T/a" ] && ok ||
+	    no "$what: $(diff "$T/a" "$T/b" | head -3)"
+}
+same_as "splinefit -o -S 1e-320,0,0" '"$B/splinefit" -o -S 1e-320,0,0 $H' \
+    '"$B/splinefit" -o -S 1,0,0 $H'
+same_as "splinefit -S 0,1e300" '"$B/splinefit" -S 0,1e300 $K' \
+    '"$B/splinefit" -S 0,1 $K'
+same_as "patchdrag -w 0,0,1e-320" \
+    '"$B/patchdrag" -i 8 -u 0.5 -v 0.5 -b 1,2,3 -w 0,0,1e-320 $T/hull.design' \
+    '"$B/patchdrag" -i 8 -u 0.5 -v 0.5 -b 1,2,3 -w 0,0,1 $T/hull.design'
+same_as "patchloft -S 0,0,1e-300" '"$B/patchloft" -S 0,0,1e-300 $T/hull.cubic' \
+    '"$B/patchloft" -S 0,0,1 $T/hull.cubic'
+
 # the refusals, for the record (each was "a clear refusal")
 sed 's/^/note: /' "$T/refusals"
 finish units
