@@ -342,6 +342,14 @@ grade_record(struct loft_run *run, const struct loft_record *rec,
 		off[k] = run->w.len;
 		if (known == 1 && (rc = in_range(o, size, err)) != 0)
 			break;
+		if (!(fabs(size) <= MAX_SIZE)) {     /* size= could not say it
+			                                and be read back */
+			format_size(sizes[k], size, known != 1);
+			rc = loft_fail(err, LOFT_EINPUT, -1, "size %s is beyond "
+			    "what size= holds, -%d to %d", sizes[k], MAX_SIZE,
+			    MAX_SIZE);
+			break;
+		}
 		format_size(sizes[k], size, known != 1);
 		rc = put_size(run, &ol, sizes[k], d * o->lstep, d * o->wstep, 0,
 		    err);

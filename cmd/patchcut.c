@@ -239,11 +239,19 @@ cut_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 	size_t ns = 0;
 	int rc;
 
-	if (n == 0)
-		return 0;
+	if (n == 0) {   /* every plane misses: exit 1, as patchcut(1) says */
+		fprintf(run->msg, "patchcut: no surfaces in the input: every "
+		    "plane misses\n");
+		return 1;
+	}
 	rc = gather(run, recs, n, &d, &s, &ns);
 	err.line = 0;
 	if (rc == 0 && loft_cutter_init(&k, s, ns, &err) != 0) {
+		loft_report(run, &recs[0], &err);
+		rc = 1;
+	}
+	if (rc == 0 && o->tol > 0 && loft_tol_check(o->tol, k.size, 0,
+	    &err) != 0) {
 		loft_report(run, &recs[0], &err);
 		rc = 1;
 	}
@@ -255,19 +263,26 @@ cut_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 		err.line = 0;
 		rc = loft_cut_plane(&k, p->n, p->d, tol, &cut, &err);
 		if (rc == LOFT_EGEOM) {
-			/* a plane that misses: said, and the others cut */
+			/* a plane that misses: said, and the others cut; one
+			 * that meets the surfaces in points only (an all-zero
+			 * patch) cuts no curve, and nothing of it is written */
 			static const char *const axis[3] = { "x", "y", "z" };
+			const char *what = d.n > 0 ? "design" : "surfaces",
+			    *how = cut.n > 0 ? " (it meets it in single points,"
+			    " no curve)" : "";
 
 			if (p->axis >= 0)
 				loft_fail(&err, LOFT_EGEOM, -1, "plane %s = %g "
-				    "misses the %s", axis[p->axis], p->d, d.n > 0 ?
-				    "design" : "surfaces");
+				    "misses the %s%s", axis[p->axis], p->d, what,
+				    how);
 			else
 				loft_fail(&err, LOFT_EGEOM, -1, "plane %gx + %gy + "
-				    "%gz = %g misses the %s", p->n[0], p->n[1],
-				    p->n[2], p->d, d.n > 0 ? "design" : "surfaces");
+				    "%gz = %g misses the %s%s", p->n[0], p->n[1],
+				    p->n[2], p->d, what, how);
 			loft_report(run, &recs[0], &err);
+			loft_cut_free(&cut);
 			rc = 0;
+			continue;
 		} else if (rc != 0) {
 			loft_report(run, &recs[0], &err);
 		}

@@ -4,6 +4,7 @@
  * the paper allows (MacCallum 1970, section 4).
  */
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -61,7 +62,7 @@ displacement(const struct opts *o, const double *p, int dim, double *delta,
 		    o->nview, dim);
 	for (int c = 0; c < dim; c++) {
 		delta[c] = o->target ? o->move[c] - p[c] : o->move[c];
-		len += delta[c] * delta[c];
+		len = fmax(len, fabs(delta[c]));  /* no square to underflow */
 	}
 	if (o->nview > 0)
 		return loft_drag_project(delta, o->view, dim, err);

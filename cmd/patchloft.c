@@ -100,13 +100,11 @@ static void
 parse_slope(int c, const char *arg, double *v, int *have, int *dim)
 {
 	struct loft_error err;
-	double len = 0;
 
 	if (loft_parse_list(arg, v, LOFT_MAXDIM, dim, &err) != 0)
 		loft_usage_error(usage_text, c, err.msg);
-	for (int k = 0; k < *dim; k++)
-		len += v[k] * v[k];
-	if (*dim < 2 || !(len > 0)) {
+	/* the scaled norm: 0,0,1e-300 is a direction (issue 28) */
+	if (*dim < 2 || loft_unit_tangent(v, *dim, v) != 0) {
 		snprintf(err.msg, sizeof err.msg, "'%s': want a direction of "
 		    "2 or 3 numbers, not zero", arg);
 		loft_usage_error(usage_text, c, err.msg);

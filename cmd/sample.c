@@ -229,9 +229,8 @@ chosen_params(struct opts *o, const struct loft_curve *c, size_t *n,
 	loft_curve_bbox(c, lo, hi);
 	for (int k = 0; k < c->dim; k++)
 		size = fmax(size, hi[k] - lo[k]);
-	if (!isfinite(size) || o->tol < MIN_TOL * size)
-		return loft_fail(err, LOFT_EINPUT, -1, "-t %g is below %g of "
-		    "the curve's size %g", o->tol, MIN_TOL, size);
+	if (loft_tol_check(o->tol, size, MIN_TOL, err) != 0)  /* issue 28 */
+		return LOFT_EINPUT;
 	while ((*n = loft_curve_flatten(c, o->tol, o->u, o->ucap)) > o->ucap)
 		if (*n > o->most)
 			return loft_fail(err, LOFT_EINPUT, -1, "-t %g: more "

@@ -236,11 +236,23 @@ walk_piece(struct walk *w, const struct loft_curve *c, size_t i)
 static void
 speed2(const struct loft__piece *pc, double u, double *v, double *dv)
 {
-	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], m;
+	int e = 0;
 
 	loft__piece_eval(pc, u, NULL, d1, d2);
 	*v = vnorm(d1, pc->dim);
-	*dv = *v > 0 ? vdot(d1, d2, pc->dim) / *v : 0;
+	/* P'.P'' of a curve of 1e-200 underflowed to 0, and Newton's step
+	 * was then taken as exact (issue 28): by a power of two first */
+	m = fmax(vmaxabs(d1, pc->dim), vmaxabs(d2, pc->dim));
+	if (m > 0 && m < INFINITY) {
+		e = ilogb(m);
+		for (int k = 0; k < pc->dim; k++) {
+			d1[k] = ldexp(d1[k], -e);
+			d2[k] = ldexp(d2[k], -e);
+		}
+	}
+	*dv = *v > 0 ? ldexp(vdot(d1, d2, pc->dim) / vnorm(d1, pc->dim), e) :
+	    0;
 }
 
 /*

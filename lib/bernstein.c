@@ -278,7 +278,7 @@ loft__curve_extent(const struct loft_curve *c)
 {
 	double ctl[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
 	/* zero, not unset, for a curve of no pieces (cppcheck, scan-build) */
-	double lo[LOFT_MAXDIM] = { 0 }, hi[LOFT_MAXDIM] = { 0 }, d = 0;
+	double lo[LOFT_MAXDIM] = { 0 }, hi[LOFT_MAXDIM] = { 0 };
 
 	for (size_t i = 0; i < c->npieces; i++) {
 		int n = loft_curve_bezier(c, i, ctl);
@@ -294,6 +294,27 @@ loft__curve_extent(const struct loft_curve *c)
 			}
 	}
 	for (int k = 0; k < c->dim; k++)
-		d += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-	return sqrt(d);
+		lo[k] = hi[k] - lo[k];
+	return vnorm(lo, c->dim);       /* no square overflows (issue 28) */
+}
+
+void
+loft__piece_scale(struct loft__piece *pc, int e)
+{
+	int n = pc->n;
+
+	for (int k = 0; k < pc->dim; k++) {
+		for (int j = 0; j <= n; j++) {
+			pc->b[k][j] = ldexp(pc->b[k][j], e);
+			pc->d1[k][j] = ldexp(pc->d1[k][j], e);
+			pc->d2[k][j] = ldexp(pc->d2[k][j], e);
+			pc->d3[k][j] = ldexp(pc->d3[k][j], e);
+		}
+		if (n <= POWER_DEG) {
+			for (int j = 0; j < n; j++)
+				pc->p1[k][j] = ldexp(pc->p1[k][j], e);
+			for (int j = 0; j <= LOFT__DEG(pc, 2); j++)
+				pc->p2[k][j] = ldexp(pc->p2[k][j], e);
+		}
+	}
 }

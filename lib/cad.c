@@ -369,7 +369,7 @@ item(const struct loft_cad_doc *d, const struct loft_record *rec,
 	if (measure(p, n, dim, box, box + 3, &it->size, err) != 0)
 		return LOFT_EGEOM;
 	it->tol = d->o.tol > 0 ? d->o.tol : LOFT_CAD_RELTOL * it->size;
-	return 0;
+	return d->o.tol > 0 ? loft_tol_check(d->o.tol, it->size, 0, err) : 0;
 }
 
 /* The record goes in: the document's begin, its box, begin_record. */
@@ -990,6 +990,8 @@ make_mesh(struct loft_cad_doc *d)
 		rc = weld(&me, WELD_TOL * size);
 	if (rc == 0)
 		rc = orient(&me);
+	if (rc == 0 && me.nt == 0)
+		rc = LOFT_EGEOM;        /* no area: no facet (issue 28) */
 	if (rc == 0)
 		rc = d->f->mesh(d, me.v, me.nv, me.t, me.nt);
 	free(me.v);
@@ -1004,8 +1006,10 @@ loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 	err->row = -1;
 	if (d->nrec == 0)
 		return loft_fail(err, LOFT_EINPUT, -1, "nothing to draw");
-	if (!d->bad && d->nsurf > 0 && make_mesh(d) != 0)
-		d->bad = LOFT_ENOMEM;
+	if (!d->bad && d->nsurf > 0 && (d->bad = make_mesh(d)) == LOFT_EGEOM)
+		return loft_fail(err, LOFT_EGEOM, -1, "the surfaces have no "
+		    "area: a mesh of them has no facet to write");
+	d->bad = d->bad ? LOFT_ENOMEM : 0;
 	if (!d->bad && d->f->end != NULL && d->f->end(d) != 0)
 		d->bad = LOFT_ENOMEM;
 	if (d->bad || d->out.bad == LOFT_ENOMEM || d->head.bad == LOFT_ENOMEM)

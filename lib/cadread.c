@@ -63,10 +63,8 @@ trimmed_line(const char *s, size_t len, const char **a, size_t *n)
 static size_t
 content_start(const char *buf, size_t len)
 {
-	size_t i = 0;
+	size_t i = loft_bom(buf, len);
 
-	if (len >= 3 && memcmp(buf, "\xef\xbb\xbf", 3) == 0)
-		i = 3;          /* a UTF-8 byte order mark */
 	while (i < len && (buf[i] == ' ' || buf[i] == '\t' || buf[i] == '\r' ||
 	    buf[i] == '\n'))
 		i++;
@@ -109,8 +107,11 @@ loft__csv_sniff(const char *buf, size_t len)
 
 	if (i == len)
 		return 0;
-	/* a header line that names an x and a y column */
+	/* Excel's "sep=;" line, or a header line that names an x and a y
+	 * column */
 	trimmed_line(buf + i, len - i, &l, &n);
+	if (n >= 5 && (memcmp(l, "sep=", 4) == 0 || memcmp(l, "\"sep=", 5) == 0))
+		return 1;
 	for (size_t k = 0; k < n;) {
 		size_t m = 0;
 
@@ -135,6 +136,10 @@ loft_cadin_sniff(const char *buf, size_t len)
 int
 loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c)
 {
+	size_t bom = loft_bom(buf, len);
+
+	buf += bom;     /* every reader starts after a byte order mark */
+	len -= bom;
 	return loft_cadin_readers[format].read(buf, len, c);
 }
 
@@ -364,6 +369,8 @@ loft__arc_chords(const struct loft_cadin *c, double r, double a)
 {
 	double tol = arc_tol(c, r), t, n;
 
+	if (loft_tol_check(tol, r, 0, NULL) != 0)
+		return -1;      /* t = 0 below rounding: was a square */
 	a = fabs(a);
 	t = tol >= r ? M_PI / 2 : 2 * acos(1 - tol / r);
 	if (!(t > 0) || t > M_PI / 2)
@@ -390,6 +397,8 @@ loft__arc_cubics(const struct loft_cadin *c, double r, double a)
 {
 	double tol = arc_tol(c, r), n, t;
 
+	if (loft_tol_check(tol, r, 0, NULL) != 0)
+		return -1;
 	a = fabs(a);
 	/* sin^6(t/4) ~ (t/4)^6: a first guess from below, then step up */
 	t = 4 * pow(27 * tol / (2 * r), 1.0 / 6);

@@ -21,15 +21,26 @@ struct flat {
 static double
 segment_distance(const double *p, const double *a, const double *b, int dim)
 {
-	double ab[LOFT_MAXDIM], ap[LOFT_MAXDIM], l2, t;
+	double ab[LOFT_MAXDIM], ap[LOFT_MAXDIM], l2, t, m;
+	int e = 0;
 
 	vsub(ab, b, a, dim);
 	vsub(ap, p, a, dim);
+	/* by a power of two, exactly, so that no product under- or
+	 * overflows for curves of 1e-200 or 1e200 (issue 28) */
+	m = fmax(vmaxabs(ab, dim), vmaxabs(ap, dim));
+	if (m > 0 && m < INFINITY) {
+		e = ilogb(m);
+		for (int k = 0; k < dim; k++) {
+			ab[k] = ldexp(ab[k], -e);
+			ap[k] = ldexp(ap[k], -e);
+		}
+	}
 	l2 = vdot(ab, ab, dim);
 	t = l2 > 0 ? vdot(ap, ab, dim) / l2 : 0;
 	t = t < 0 ? 0 : t > 1 ? 1 : t;
 	vaxpy(ap, -t, ab, dim);
-	return vnorm(ap, dim);
+	return ldexp(vnorm(ap, dim), e);
 }
 
 /*

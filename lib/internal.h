@@ -117,7 +117,10 @@ vdist(const double *a, const double *b, int dim)
 /*
  * Scale a to unit length; returns its former length (0: left alone).
  * A length whose reciprocal would overflow or be subnormal is scaled by
- * a power of two first, exactly.
+ * a power of two first, exactly.  Each coordinate is divided by the
+ * length, correctly rounded, not multiplied by its rounded reciprocal:
+ * a direction along an axis is then exactly that axis whatever its
+ * length (issue 28: -S 1e-320,0 was not -S 1,0 to the last digit).
  */
 static inline double
 vunit(double *a, int dim)
@@ -126,14 +129,18 @@ vunit(double *a, int dim)
 
 	if (n > 0 && (n < VNORM_LO || n > VNORM_HI) &&
 	    vmaxabs(a, dim) < INFINITY) {       /* n may overflow, a not */
-		double m[LOFT_MAXDIM];
+		double m[LOFT_MAXDIM], l;
 		int e = ilogb(vmaxabs(a, dim));
 
 		for (int k = 0; k < dim; k++)
 			m[k] = ldexp(a[k], -e);
-		vscale(a, 1 / vnorm(m, dim), m, dim);
-	} else if (n > 0)
-		vscale(a, 1 / n, a, dim);
+		l = vnorm(m, dim);
+		for (int k = 0; k < dim; k++)
+			a[k] = m[k] / l;
+	} else if (n > 0) {
+		for (int k = 0; k < dim; k++)
+			a[k] /= n;
+	}
 	return n;
 }
 
@@ -333,6 +340,9 @@ void loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc);
 /* Point, first and second derivatives at u (any may be NULL). */
 void loft__piece_eval(const struct loft__piece *pc, double u, double *p,
     double *d1, double *d2);
+/* Every coefficient of pc times 2^e: exact, but for overflow and
+ * subnormals; a piece of any size brought near 1 (issue 28). */
+void loft__piece_scale(struct loft__piece *pc, int e);
 /* The diagonal of the box around all control points of c: its size. */
 double loft__curve_extent(const struct loft_curve *c);
 

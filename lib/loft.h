@@ -105,6 +105,20 @@ int loft_parse_word(const char *s, const char *const *words, int *i,
 #define LOFT_NUMBUF 32
 int loft_format_num(char *buf, double x, int digits);
 
+/*
+ * The one check of a tolerance tol, a distance (every program's -t), for
+ * geometry of size size (its box's diagonal, or an arc's radius):
+ * meaningful only from rel of size up, and never below LOFT_TOL_ROUNDING
+ * of it, where the coordinates' own rounding (1.1e-16 of them, grown by
+ * any method's arithmetic) and not tol would decide the result (issue
+ * 28: a DXF circle at -t 1e-18 of its radius came out a square).
+ * Returns 0, or LOFT_EINPUT with err (may be NULL) saying so; a tol or
+ * size not finite, or tol not above 0, fails too.
+ */
+#define LOFT_TOL_ROUNDING 1e-12
+int loft_tol_check(double tol, double size, double rel,
+    struct loft_error *err);
+
 /* ------------------------------------------------------------------ */
 /* Records (record.c): what a stream holds, as plain data              */
 

@@ -20,6 +20,10 @@
 
 struct loft_reader;
 
+/* The length of the UTF-8 byte order mark that text s[0..n) begins
+ * with: 3, or 0 when none.  Every reader of text skips it (issue 24). */
+size_t loft_bom(const char *s, size_t n);
+
 /* A reader over fp, whose messages call it name.  NULL: out of memory. */
 struct loft_reader *loft_reader_new(FILE *fp, const char *name);
 void loft_reader_free(struct loft_reader *rd);

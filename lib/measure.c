@@ -7,6 +7,7 @@
  * P' x P'', the numerator of dk/du) are exact products of the control
  * values and their roots are isolated by subdivision, never sampled.
  */
+#include <float.h>
 #include <math.h>
 
 #include "internal.h"
@@ -39,16 +40,40 @@
 /* A closed curve encloses no area below this fraction of its size^2. */
 #define AREA_ZERO 1e-12
 
+/*
+ * The products below (a coordinate cubed, a speed to the sixth) leave
+ * the doubles for curves of 1e+-60 and beyond, so every piece is taken
+ * scaled by 2^-e, e the exponent of the curve's size: exact, and the
+ * same e for every piece, so that the results of pieces compare; each
+ * result is scaled back by the power of e it has (issue 28).
+ */
+static int
+curve_exp(const struct loft_curve *c)
+{
+	double size = loft__curve_extent(c);
+
+	return size > 0 && size < INFINITY ? ilogb(size) : 0;
+}
+
+/* Piece i of c scaled by 2^-e. */
+static void
+piece_at(const struct loft_curve *c, size_t i, int e, struct loft__piece *pc)
+{
+	loft__piece(c, i, pc);
+	loft__piece_scale(pc, -e);
+}
+
 void
 loft_curve_bbox(const struct loft_curve *c, double *lo, double *hi)
 {
 	struct loft__piece pc;
 	double r[LOFT__BMAX];
+	int e = curve_exp(c);
 
 	for (size_t i = 0; i < c->npieces; i++) {
 		double big = 0;
 
-		loft__piece(c, i, &pc);
+		piece_at(c, i, e, &pc);
 		for (int k = 0; k < c->dim; k++)
 			big = fmax(big, loft__bern_max(pc.d1[k], pc.n - 1));
 		for (int k = 0; k < c->dim; k++) {
@@ -66,6 +91,10 @@ loft_curve_bbox(const struct loft_curve *c, double *lo, double *hi)
 				hi[k] = fmax(hi[k], x);
 			}
 		}
+	}
+	for (int k = 0; k < c->dim && c->npieces > 0; k++) {
+		lo[k] = ldexp(lo[k], e);
+		hi[k] = ldexp(hi[k], e);
 	}
 }
 
@@ -102,9 +131,10 @@ green(const struct loft__piece *pc, const double *o, double *m)
 		m[2] += t[j] / (3 * n);
 }
 
-/* Area and first moments of a plane curve, about its first point o. */
+/* Area and first moments of a plane curve, about its first point o, of
+ * the curve scaled by 2^-e. */
 static void
-plane_moments(const struct loft_curve *c, double *o, double *area,
+plane_moments(const struct loft_curve *c, int e, double *o, double *area,
     double *mx, double *my)
 {
 	struct loft__piece pc;
@@ -112,7 +142,7 @@ plane_moments(const struct loft_curve *c, double *o, double *area,
 
 	*area = *mx = *my = 0;
 	for (size_t i = 0; i < c->npieces; i++) {
-		loft__piece(c, i, &pc);
+		piece_at(c, i, e, &pc);
 		if (i == 0) {
 			o[0] = pc.b[0][0];
 			o[1] = pc.b[1][0];
@@ -129,11 +159,18 @@ loft_curve_area(const struct loft_curve *c, double *area,
     struct loft_error *err)
 {
 	double o[2], mx, my;
+	int e = curve_exp(c);
 
 	if (c->dim != 2)
 		return loft_fail(err, LOFT_EINPUT, -1, "a space curve bounds no "
 		    "plane area");
-	plane_moments(c, o, area, &mx, &my);
+	plane_moments(c, e, o, area, &mx, &my);
+	mx = *area;
+	*area = ldexp(*area, 2 * e);
+	if (mx != 0 && !(fabs(*area) >= DBL_MIN))
+		return loft_fail(err, LOFT_EGEOM, -1, "the area, of the "
+		    "order of %g^2, underflows: no double holds it",
+		    ldexp(1, e));
 	return 0;
 }
 
@@ -156,6 +193,7 @@ loft_curve_centroid(const struct loft_curve *c, double *cen,
 {
 	struct loft__piece pc;
 	double o[LOFT_MAXDIM], sum[LOFT_MAXDIM + 1] = { 0 };
+	int e = curve_exp(c);
 
 	if (c->npieces == 0)    /* o below is the first piece's start */
 		return loft_fail(err, LOFT_EINPUT, -1, "a curve of no pieces "
@@ -163,17 +201,17 @@ loft_curve_centroid(const struct loft_curve *c, double *cen,
 	if (c->closed && c->dim == 2) {
 		double area, mx, my, size;
 
-		plane_moments(c, o, &area, &mx, &my);
-		size = loft__curve_extent(c);
+		plane_moments(c, e, o, &area, &mx, &my);
+		size = ldexp(loft__curve_extent(c), -e);
 		if (!(fabs(area) > AREA_ZERO * size * size))
 			return loft_fail(err, LOFT_EGEOM, -1, "the closed curve "
 			    "encloses no area: its centroid is undefined");
-		cen[0] = o[0] + mx / area;
-		cen[1] = o[1] + my / area;
+		cen[0] = ldexp(o[0] + mx / area, e);
+		cen[1] = ldexp(o[1] + my / area, e);
 		return 0;
 	}
 	for (size_t i = 0; i < c->npieces; i++) {
-		loft__piece(c, i, &pc);
+		piece_at(c, i, e, &pc);
 		if (i == 0)
 			for (int k = 0; k < c->dim; k++)
 				o[k] = pc.b[k][0];
@@ -182,11 +220,11 @@ loft_curve_centroid(const struct loft_curve *c, double *cen,
 	}
 	if (!(sum[0] > 0)) {
 		for (int k = 0; k < c->dim; k++)
-			cen[k] = o[k];
+			cen[k] = ldexp(o[k], e);
 		return 0;
 	}
 	for (int k = 0; k < c->dim; k++)
-		cen[k] = o[k] + sum[k + 1] / sum[0];
+		cen[k] = ldexp(o[k] + sum[k + 1] / sum[0], e);
 	return 0;
 }
 
@@ -368,11 +406,12 @@ count_changes(const struct loft_curve *c,
 	struct loft__piece pc;
 	struct signs s = { 0, 0, 0 };
 	double p[LOFT__BMAX], r[LOFT__BMAX], zero;
+	int e = curve_exp(c);
 
 	for (size_t i = 0; i < c->npieces; i++) {
 		int deg, nr;
 
-		loft__piece(c, i, &pc);
+		piece_at(c, i, e, &pc);
 		deg = poly(&pc, p, &zero);
 		nr = loft__bern_roots(p, deg, zero, r, LOFT__BMAX);
 		feed_piece(&s, p, deg, zero, r, nr);
@@ -400,31 +439,121 @@ loft_curve_extrema(const struct loft_curve *c, long *count,
 	return 0;
 }
 
+/* |a x b| in the plane or in space. */
+static double
+cross_norm(const double *a, const double *b, int dim)
+{
+	double c[3];
+
+	if (dim == 2)
+		return fabs(a[0] * b[1] - a[1] * b[0]);
+	c[0] = a[1] * b[2] - a[2] * b[1];
+	c[1] = a[2] * b[0] - a[0] * b[2];
+	c[2] = a[0] * b[1] - a[1] * b[0];
+	return vnorm(c, 3);
+}
+
+/* Whether piece pc is straight: P' x P'' within rounding throughout. */
+static int
+piece_straight(const struct loft__piece *pc)
+{
+	static const int pair[3][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 } };
+	double t[LOFT__BMAX], m = speed_scale(pc), zero = CURV_ZERO * m * m;
+
+	for (int k = 0; k < (pc->dim == 2 ? 1 : 3); k++) {
+		int deg = cross_poly(pc->d1, LOFT__DEG(pc, 1), pc->d2,
+		    LOFT__DEG(pc, 2), pair[k][0], pair[k][1], t);
+
+		if (loft__bern_max(t, deg) > zero)
+			return 0;
+	}
+	return 1;
+}
+
+/*
+ * |k| at the end `end` (0 or 1) of piece pc where P' vanishes, as a
+ * retracted Bezier handle makes it: the limit from inside the piece.
+ * With h the distance in u from that end, P' = h P'' + h^2/2 P''' +
+ * h^3/6 P'''' + ..., so P' x P'' = h^2/2 P'' x P''' + h^3/3 P'' x P''''
+ * + ... and |P'|^3 = |h|^3 |P''|^3: |k| grows without bound unless
+ * P'' x P''' = 0, and is then |P'' x P''''| / (3 |P''|^3).  A straight
+ * piece has k = 0 whatever its speed.  Returns 0 with *k set, 1 when k
+ * grows without bound, or -1 when P'' vanishes too (no limit taken).
+ */
+static int
+end_limit(const struct loft__piece *pc, int end, double *k)
+{
+	int n2 = LOFT__DEG(pc, 2), n3 = LOFT__DEG(pc, 3);
+	double a[LOFT_MAXDIM], b[LOFT_MAXDIM], d[LOFT_MAXDIM], na, nb;
+
+	if (!(speed_scale(pc) > 0))
+		return -1;      /* the piece is a point: no tangent anywhere */
+	if (piece_straight(pc)) {
+		*k = 0;
+		return 0;
+	}
+	for (int q = 0; q < pc->dim; q++) {
+		a[q] = pc->d2[q][end ? n2 : 0];
+		b[q] = pc->d3[q][end ? n3 : 0];
+		d[q] = n3 == 0 ? 0 : end ? n3 * (pc->d3[q][n3] -
+		    pc->d3[q][n3 - 1]) : n3 * (pc->d3[q][1] - pc->d3[q][0]);
+	}
+	na = vnorm(a, pc->dim);
+	nb = vnorm(b, pc->dim);
+	if (!(na > CURV_ZERO * speed_scale(pc)))
+		return -1;
+	if (cross_norm(a, b, pc->dim) > CURV_ZERO * na * nb)
+		return 1;
+	*k = cross_norm(a, d, pc->dim) / (3 * na * na * na);
+	return 0;
+}
+
+/* |k| of piece pc at u into *k: 0, or as end_limit where P' = 0. */
+static int
+piece_curvature(const struct loft__piece *pc, double u, double *k)
+{
+	double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+
+	loft__piece_eval(pc, u, NULL, d1, d2);
+	if (loft_curvature(d1, d2, pc->dim, k) == 0) {
+		*k = fabs(*k);
+		return 0;
+	}
+	return u == 0 || u == 1 ? end_limit(pc, u == 1, k) : -1;
+}
+
 int
 loft_curve_min_radius(const struct loft_curve *c, double *radius, double *u,
     struct loft_error *err)
 {
 	struct loft__piece pc;
 	double poly[LOFT__BMAX], r[LOFT__BMAX + 2], zero, most = 0, where = 0;
+	int e = curve_exp(c);
 
 	for (size_t i = 0; i < c->npieces; i++) {
 		int deg, nr;
 
-		loft__piece(c, i, &pc);
+		piece_at(c, i, e, &pc);
 		deg = curvature_slope(&pc, poly, &zero);
 		nr = loft__bern_roots(poly, deg, zero, r + 1, LOFT__BMAX);
 		r[0] = 0;
 		r[nr + 1] = 1;
 		for (int j = 0; j < nr + 2; j++) {
-			double d1[LOFT_MAXDIM], d2[LOFT_MAXDIM], k;
+			double k;
+			int rc = piece_curvature(&pc, r[j], &k);
 
-			loft__piece_eval(&pc, r[j], NULL, d1, d2);
-			if (loft_curvature(d1, d2, c->dim, &k) != 0)
+			if (rc < 0)
 				return loft_fail(err, LOFT_EGEOM, (long)i, "the "
 				    "tangent vanishes in piece %zu at u = %.17g: "
 				    "a cusp, of radius 0", i + 1, r[j]);
-			if (fabs(k) > most) {
-				most = fabs(k);
+			if (rc > 0)
+				return loft_fail(err, LOFT_EGEOM, (long)i, "the "
+				    "curvature grows without bound toward u = "
+				    "%.17g of piece %zu, where a handle is "
+				    "retracted and the curve bends (as y = "
+				    "x^1.5): no smallest radius", r[j], i + 1);
+			if (k > most) {
+				most = k;
 				where = (double)i + r[j];
 			}
 		}
@@ -432,12 +561,12 @@ loft_curve_min_radius(const struct loft_curve *c, double *radius, double *u,
 	if (!isfinite(most))
 		return loft_fail(err, LOFT_EGEOM, -1, "the curvature "
 		    "overflows: coefficients too large");
-	if (!(most * loft__curve_extent(c) > FLAT)) {
+	if (!(most * ldexp(loft__curve_extent(c), -e) > FLAT)) {
 		*radius = 0;
 		*u = 0;
 		return 0;
 	}
-	*radius = 1 / most;
+	*radius = ldexp(1 / most, e);
 	*u = where;
 	return 0;
 }
@@ -486,17 +615,19 @@ loft_curve_energy(const struct loft_curve *c, double *energy,
     struct loft_error *err)
 {
 	struct loft__piece pc;
-	double floor = ENERGY_REL / loft__curve_extent(c), e = 0;
+	int x = curve_exp(c);
+	double floor = ENERGY_REL / ldexp(loft__curve_extent(c), -x), e = 0;
 
 	for (size_t i = 0; i < c->npieces; i++) {
-		loft__piece(c, i, &pc);
+		piece_at(c, i, x, &pc);
 		if (loft__quad(&pc, 0, 1, 1, bending, NULL, ENERGY_REL, &floor,
 		    &e, NULL) != 0 || !isfinite(e))
 			return loft_fail(err, LOFT_EGEOM, (long)i, "the bending "
-			    "energy of piece %zu is not finite: its tangent "
-			    "vanishes (a cusp)", i + 1);
+			    "energy of piece %zu is unbounded: its tangent "
+			    "vanishes (a cusp) or its curvature grows without "
+			    "bound at an end (a retracted handle)", i + 1);
 	}
-	*energy = e;
+	*energy = ldexp(e, -x);
 	return 0;
 }
 

@@ -11,6 +11,7 @@
  * matrix weighted by the normals' dot products, which is exact, and only
  * its right-hand side needs quadrature.
  */
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -109,6 +110,32 @@ scale_of(const double *pts, int n)
 		m = fmax(m, fabs(pts[k]));
 	return m > 0 && isfinite(m) && (m < SCALE_LO || m > SCALE_HI) ?
 	    ilogb(m) : 0;
+}
+
+/*
+ * F of the scaled curve (of size 1 to 2) below this is rounding, its
+ * points' 1e-16 squared and summed: written as it comes, 0 when it
+ * underflows, it is as true as its digits.  Above it, F must survive
+ * the scaling back.
+ */
+#define F_ROUNDING 1e-28
+
+/* F scaled back by 2^(2e): 0, or LOFT_EGEOM where it overflows, or
+ * underflows while it is more than rounding (issue 28: a curve of size
+ * 1e-200 had error=0). */
+static int
+unscale_error(double *error, int e, const char *what, struct loft_error *err)
+{
+	double f = *error;
+
+	*error = ldexp(f, 2 * e);
+	if (!isfinite(*error))
+		return loft_fail(err, LOFT_EGEOM, -1, "the %s is too large: "
+		    "F, in its units squared, overflows", what);
+	if (f > F_ROUNDING && !(*error >= DBL_MIN))
+		return loft_fail(err, LOFT_EGEOM, -1, "the %s is too small: "
+		    "F, in its units squared, underflows", what);
+	return 0;
 }
 
 #define SCALE_PROBES 9  /* t = 0, 1/8, ..., 1 (and that squared) */
@@ -216,17 +243,50 @@ all_finite(const double *v, int n)
 	return 1;
 }
 
-/* loft__cholesky_solve, with the message of a singular system. */
+/*
+ * A system singular to working precision is solved again with its
+ * diagonal loaded by this fraction of itself (ridge regression).  The
+ * matrix is positive definite in exact arithmetic (a Schur product of
+ * the positive definite Bernstein Gram matrices and the normals' Gram
+ * matrix, whose diagonal is 1), so a negative or tiny pivot is rounding
+ * of the order of n 1e-16 of the diagonal; 1e-12 lies above that for
+ * every n allowed, and moves lambda only along directions F hardly
+ * sees (high degrees, issue 28: 24,24 on a saddle was "singular").
+ */
+#define RIDGE 1e-12
+
+/* loft__cholesky_solve, ridged where it must be, with the message of a
+ * system that is singular even so.  a is overwritten. */
 static int
 cholesky_solve(double *a, double *b, size_t n, struct loft_error *err)
 {
 	size_t j;
-	double pivot;
+	double pivot, *a0 = malloc(n * n * sizeof *a0),
+	    *b0 = malloc(n * sizeof *b0);
 
-	if (loft__cholesky_solve(a, b, n, SINGULAR_TOL, &j, &pivot) != 0)
-		return loft_fail(err, LOFT_EGEOM, -1, "the system for the "
-		    "control points is singular (pivot %zu of %zu is %.3g of "
-		    "the largest)", j + 1, n, pivot);
+	if (a0 == NULL || b0 == NULL) {
+		free(a0);
+		free(b0);
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	memcpy(a0, a, n * n * sizeof *a0);
+	memcpy(b0, b, n * sizeof *b0);
+	if (loft__cholesky_solve(a, b, n, SINGULAR_TOL, &j, &pivot) != 0) {
+		memcpy(a, a0, n * n * sizeof *a0);
+		for (size_t i = 0; i < n; i++)
+			a[i * n + i] += RIDGE * a0[i * n + i];
+		memcpy(b, b0, n * sizeof *b0);
+		if (loft__cholesky_solve(a, b, n, SINGULAR_TOL, &j, &pivot) !=
+		    0) {
+			free(a0);
+			free(b0);
+			return loft_fail(err, LOFT_EGEOM, -1, "the system for the "
+			    "control points is singular (pivot %zu of %zu is "
+			    "%.3g of the largest)", j + 1, n, pivot);
+		}
+	}
+	free(a0);
+	free(b0);
 	return 0;
 }
 
@@ -486,11 +546,7 @@ loft_normal_curve(const struct loft_pcurve *a, int n, int clamp,
 		return rc;
 	unscale(ctl, (n + 1) * a->dim, c.e);
 	unscale(lambda, lambda != NULL ? n + 1 : 0, c.e);
-	*error = ldexp(*error, 2 * c.e);
-	if (!isfinite(*error))
-		return loft_fail(err, LOFT_EGEOM, -1, "the curve is too large: "
-		    "F, in its units squared, overflows");
-	return 0;
+	return unscale_error(error, c.e, "curve", err);
 }
 
 static int
@@ -818,11 +874,7 @@ loft_normal_surface(const struct loft_psurface *x, int m, int n, int clamp,
 	if (rc != 0 || c.e == 0)
 		return rc;
 	unscale(ctl, (m + 1) * (n + 1) * 3, c.e);
-	*error = ldexp(*error, 2 * c.e);
-	if (!isfinite(*error))
-		return loft_fail(err, LOFT_EGEOM, -1, "the surface is too "
-		    "large: F, in its units squared, overflows");
-	return 0;
+	return unscale_error(error, c.e, "surface", err);
 }
 
 static int

@@ -282,3 +282,19 @@ loft_format_num(char *buf, double x, int digits)
 		return loft_format_num(buf, sign ? -x : x, 0);
 	return sign + n;
 }
+
+int
+loft_tol_check(double tol, double size, double rel, struct loft_error *err)
+{
+	double floor = fmax(rel, LOFT_TOL_ROUNDING);
+
+	if (!(tol > 0) || !isfinite(tol) || !isfinite(size))
+		return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g: want a "
+		    "distance above 0, for a size that is finite", tol);
+	if (tol >= floor * size)
+		return 0;
+	return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g is below %g of "
+	    "the size %g%s", tol, floor, size, floor > LOFT_TOL_ROUNDING ? "" :
+	    ": the coordinates' rounding, not the tolerance, would decide the "
+	    "result");
+}

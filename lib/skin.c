@@ -188,6 +188,20 @@ next(const struct skin *s, size_t k)
 	return k + 1 == s->ns ? 0 : k + 1;
 }
 
+/* The sign of a . b, of unit copies: products of sections of 1e-300 or
+ * 1e300 underflow or overflow (issue 28). */
+static double
+same_way(const double *a, const double *b, int dim)
+{
+	double ua[LOFT_MAXDIM], ub[LOFT_MAXDIM];
+
+	vcopy(ua, a, dim);
+	vcopy(ub, b, dim);
+	vunit(ua, dim);
+	vunit(ub, dim);
+	return vdot(ua, ub, dim);
+}
+
 /*
  * Sections that cross: in strip k the chord from section k to k + 1
  * at some breakpoint points against the strip's mean chord, or against
@@ -211,8 +225,8 @@ check_order(const struct skin *s, struct loft_error *err)
 
 			vcopy(prior, d, dim);
 			vsub(d, NODE(s, next(s, k), j), NODE(s, k, j), dim);
-			dot = j > 0 ? vdot(d, prior, dim) : 1;
-			if (!(vdot(d, mean, dim) > 0) || !(dot > 0))
+			dot = j > 0 ? same_way(d, prior, dim) : 1;
+			if (!(same_way(d, mean, dim) > 0) || !(dot > 0))
 				return loft_fail(err, LOFT_EGEOM, (long)next(s, k),
 				    "section %zu crosses section %zu (at its "
 				    "breakpoint %zu of %zu): the sections must "
@@ -312,14 +326,23 @@ ratios(const struct skin *s)
 	for (size_t k = 0; k < s->ns; k++)
 		for (size_t j = 0; j < s->nodes; j++) {
 			double *r = &s->rho[k * s->nodes + j];
-			const double *a, *b;
-			double ab, bb, e[LOFT_MAXDIM];
+			double a[LOFT_MAXDIM], b[LOFT_MAXDIM], ab, bb,
+			    e[LOFT_MAXDIM], m;
 
 			*r = 0;
 			if (!s->cs && (j == 0 || j == s->nseg))
 				continue;
-			a = SEG(s, k, j) + 2 * dim;
-			b = SEG(s, k, j > 0 ? j - 1 : s->nseg - 1) + 3 * dim;
+			vcopy(a, SEG(s, k, j) + 2 * dim, dim);
+			vcopy(b, SEG(s, k, j > 0 ? j - 1 : s->nseg - 1) + 3 * dim,
+			    dim);
+			/* both by one power of two, exactly: the products of
+			 * sections of 1e+-160 over- or underflowed (issue 28) */
+			m = fmax(vmaxabs(a, dim), vmaxabs(b, dim));
+			if (m > 0 && m < INFINITY)
+				for (int q = 0, x = ilogb(m); q < dim; q++) {
+					a[q] = ldexp(a[q], -x);
+					b[q] = ldexp(b[q], -x);
+				}
 			ab = vdot(a, b, dim);
 			bb = vdot(b, b, dim);
 			if (!(ab > 0 && bb > 0))

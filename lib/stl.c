@@ -16,10 +16,21 @@
 static void
 normal(const double *a, const double *b, const double *c, double *n)
 {
-	double u[3], v[3];
+	double u[3], v[3], m;
 
 	vsub(u, b, a, 3);
 	vsub(v, c, a, 3);
+	m = fmax(vmaxabs(u, 3), vmaxabs(v, 3));
+	if (m > 0 && m < INFINITY) {
+		/* by a power of two, exactly: the cross product of sides of
+		 * 1e-200 or 1e200 would underflow or overflow (issue 28) */
+		int e = ilogb(m);
+
+		for (int k = 0; k < 3; k++) {
+			u[k] = ldexp(u[k], -e);
+			v[k] = ldexp(v[k], -e);
+		}
+	}
 	n[0] = u[1] * v[2] - u[2] * v[1];
 	n[1] = u[2] * v[0] - u[0] * v[2];
 	n[2] = u[0] * v[1] - u[1] * v[0];

@@ -107,6 +107,12 @@ looks_nonfinite(const char *s)
 	return 0;
 }
 
+size_t
+loft_bom(const char *s, size_t n)
+{
+	return n >= 3 && memcmp(s, "\xef\xbb\xbf", 3) == 0 ? 3 : 0;
+}
+
 /* Kinds of line; L_NOMEM: a line too long for memory, skipped. */
 enum { L_EOF, L_BLANK, L_COMMENT, L_HEADER, L_ROW, L_FAIL, L_NOMEM };
 
@@ -145,6 +151,10 @@ next_line(struct loft_reader *rd, struct loft_error *err, int *bad)
 		}
 		rd->eof = 1;
 		return L_EOF;
+	}
+	if (rd->lineno == 0 && loft_bom(rd->line, (size_t)n) > 0) {
+		n -= 3;         /* the file's first bytes: a UTF-8 BOM */
+		memmove(rd->line, rd->line + 3, (size_t)n + 1);
 	}
 	rd->lineno++;
 	rd->linelen = (size_t)n;

@@ -209,4 +209,61 @@ if [ -w /dev/full ]; then
 	says "bezapprox: write error"
 fi
 
+# issue 28: 24,24, the documented top degrees, on a saddle was "the
+# system is singular": rounding made the positive definite system look
+# so.  Ridged, it solves, and its error= is the F of the control points
+# written: an independent 25-point Gauss-Legendre integral of |x - B|^2
+# here (exact for that polynomial of degree 48 in each variable)
+cat >"$T/f.awk" <<'AWK'
+# F = the double integral of |x - B|^2 over [0,1]^2 for x = (u, v, u^2 - v^2)
+# and the bezier-surface B read, by 25-point Gauss-Legendre in each
+# direction: exact for the polynomial |x - B|^2 of degree 48 in each.
+function gl(q,   i, k, x, p0, p1, p2, dp) {
+	for (i = 1; i <= q; i++) {
+		x = cos(3.141592653589793 * (i - 0.25) / (q + 0.5))
+		for (it = 0; it < 100; it++) {
+			p0 = 1; p1 = x
+			for (k = 2; k <= q; k++) { p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2 }
+			dp = q * (x * p1 - p0) / (x * x - 1)
+			x -= p1 / dp
+		}
+		p0 = 1; p1 = x
+		for (k = 2; k <= q; k++) { p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2 }
+		dp = q * (x * p1 - p0) / (x * x - 1)
+		T[i] = (1 - x) / 2; W[i] = 1 / ((1 - x * x) * dp * dp)
+	}
+}
+function bern(n, i, t,   c, k) {
+	c = 1
+	for (k = 1; k <= i; k++) c = c * (n - k + 1) / k
+	return c * t ^ i * (1 - t) ^ (n - i)
+}
+NR == 1 { for (f = 2; f <= NF; f++) if ($f ~ /^[mn]=/) { split($f, kv, "="); D[kv[1]] = kv[2] + 0 }
+	if ($f ~ /^error=/) ; next }
+NF == 3 { P[np, 1] = $1; P[np, 2] = $2; P[np, 3] = $3; np++ }
+END {
+	m = D["m"]; n = D["n"]; q = 25; gl(q)
+	for (a = 1; a <= q; a++) for (i = 0; i <= m; i++) BU[a, i] = bern(m, i, T[a])
+	for (a = 1; a <= q; a++) for (j = 0; j <= n; j++) BV[a, j] = bern(n, j, T[a])
+	F = 0
+	for (a = 1; a <= q; a++) for (b = 1; b <= q; b++) {
+		x[1] = T[a]; x[2] = T[b]; x[3] = T[a] ^ 2 - T[b] ^ 2
+		for (c = 1; c <= 3; c++) y[c] = 0
+		for (i = 0; i <= m; i++) for (j = 0; j <= n; j++) {
+			w = BU[a, i] * BV[b, j]
+			for (c = 1; c <= 3; c++) y[c] += w * P[i * (n + 1) + j, c]
+		}
+		d = 0; for (c = 1; c <= 3; c++) d += (x[c] - y[c]) ^ 2
+		F += W[a] * W[b] * d
+	}
+	printf "%.17g\n", F
+}
+AWK
+for mn in 24,24 16,16; do
+	run "$B/bezapprox -n $mn -x u -y v -z 'u*u-v*v'"
+	status 0
+	f=$(awk -f "$T/f.awk" "$T/out")
+	error_near "$f" "$(awk -v f="$f" 'BEGIN { print f * 1e-9 }')"
+done
+
 finish bezcmd

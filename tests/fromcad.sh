@@ -851,6 +851,70 @@ printf 'x,y\n1,2\n3' >"$T/badend.csv"
 fails 1 "badend.csv:3: the row has no column y" "$F $T/badend.csv"
 printf 'a,b\n1,2\n' >"$T/nohdr.csv"
 fails 1 "nohdr.csv:1: the header line names no x and y" "$F -f csv $T/nohdr.csv"
+# CSV as spreadsheets write it (issues 24, 28): RFC 4180 quotes holding
+# separators, doubled quotes and a line end; extra fields an error, not
+# passed over; units honoured (reference: 1 in = 25.4 mm, 1 cm = 10 mm);
+# decimal commas with ';'; Excel's sep= line; trailing empty columns
+# and rows; a byte order mark
+csv() { printf "$1" >"$T/c.csv"; run "$F $T/c.csv"; }
+csv 'label,x,y\n"Smith, J",5,5\n'
+status 0
+out_is "5 5
+"
+csv 'x,y\n1,5,2,5\n'
+status 1
+says "c.csv:2: the row has 4 fields and the header 2"
+out_empty
+csv 'name,x,y\n"a ""quoted""\nname",1,2\n"b",3,4\n'
+status 0
+out_is "1 2
+3 4
+"
+csv 'X (mm),Y (cm),z [in]\n1,2,1\n'
+status 0
+out_is "1 20 25.4
+"
+csv 'x (furlong),y\n1,2\n'
+status 1
+says "c.csv:1: column x: unit 'furlong' is none loft knows"
+csv 'x;y\n1,5;2,5\n-0,25;1e3\n'
+status 0
+out_is "1.5 2.5
+-0.25 1000
+"
+csv 'sep=;\nx;y\n1,5;2\n'
+status 0
+out_is "1.5 2
+"
+csv 'x,y,,\r\n1,2,,\r\n3,4,,\r\n,,,\r\n,,,\r\n'
+status 0
+out_is "1 2
+3 4
+"
+csv '\357\273\277x,y\n1,2\n'
+status 0
+out_is "1 2
+"
+csv 'x,y\n"1,2\n'
+status 1
+says "c.csv:2: a quote is never closed"
+out_empty
+# issue 28: a DXF circle at -t 1e-18 of its radius came out as 4 chords,
+# a square, exit 0: a tolerance below the rounding is refused
+printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n1\n0\nENDSEC\n0\nEOF\n' >"$T/circ.dxf"
+fails 1 "circ.dxf:5: CIRCLE: it needs more chords than the tolerance allows" "$F -t 1e-18 $T/circ.dxf"
+# a byte order mark before a DXF
+{ printf '\357\273\277'; cat "$T/circ.dxf"; } >"$T/bom.dxf"
+run "$F $T/bom.dxf"
+status 0
+# 10^5 columns in a pass: a quadratic reading took 20 s (issue 28); a
+# failing sanitizer or valgrind run would time out the suite, not this
+awk 'BEGIN { for (i = 0; i < 100000; i++) printf "c%d,", i; print "x,y"
+	for (i = 0; i < 100000; i++) printf "%d,", i; print "7,8" }' >"$T/wide.csv"
+run "$F $T/wide.csv"
+status 0
+out_is "7 8
+"
 
 # ---- formats, files, output -------------------------------------------
 fails 1 "empty.dxf: empty file" "$F $(: >"$T/empty.dxf"; echo "$T/empty.dxf")"

@@ -266,10 +266,34 @@ fails 1 ":1: a point record is no curve" "printf '0 0\n1 1\n' | $B/measure"
 awk 'BEGIN { print "patch id=1"; for (i = 0; i < 5; i++) { s = i
 	for (j = 1; j < 10; j++) s = s " " i + j; print s } }' >"$T/one.patch"
 fails 1 ":1: a patch record is a surface" "$B/measure $T/one.patch"
-# a zero start tangent: a cusp, k ~ 1/u, energy diverges like log u
+# a zero start tangent that bends: no cusp, but k ~ 1/u toward the end
+# (y ~ x^1.5), and the energy diverges like log u (issue 24)
 printf 'cubic\n0 0 1 0 0 0 1 1\n' >"$T/cusp.cubic"
-fails 1 "tangent vanishes in piece 1" "$B/measure -f minradius $T/cusp.cubic"
-fails 1 "bending energy of piece 1 is not finite" "$B/measure -f energy $T/cusp.cubic"
+fails 1 "curvature grows without bound toward u = 0 of piece 1" "$B/measure -f minradius $T/cusp.cubic"
+fails 1 "bending energy of piece 1 is unbounded" "$B/measure -f energy $T/cusp.cubic"
+# a true cusp inside a piece: x'(1/2) = y'(1/2) = 0 and the tangent
+# turns back there
+printf 'bezier\n0 0\n1 1\n1 0\n0 1\n' >"$T/cusp2.bezier"
+fails 1 "tangent vanishes in piece 1 at u = 0.5: a cusp" "$B/measure -f minradius $T/cusp2.bezier"
+# retracted handles (issue 24): a line drawn as a cubic with both
+# handles on their ends is straight (k = 0); one handle retracted
+# along a straight piece, likewise
+for h in '0 0\n3 0' '0 0\n2 0' '1 0\n3 0'; do
+	printf "bezier\n0 0\n$h\n3 0\n" >"$T/line.bezier"
+	run "$B/measure -f minradius,minradius_u,energy,inflexions,extrema $T/line.bezier"
+	status 0
+	out_is "0 0 0 0 0
+"
+done
+# one retracted handle on a degree-4 piece whose limit is finite: P =
+# (4u^2, u^4) has P' = 0 at u = 0 and k -> |P'' x P''''| / (3 |P''|^3)
+# = (8 * 24) / (3 * 8^3) = 1/8 there: the smallest radius is 8 at u = 0
+# (k = 64 / (64 + 16 u^4)^(3/2) falls from 1/8 as u grows)
+printf 'bezier\n0 0\n0 0\n0.6666666666666666 0\n2 0\n4 1\n' >"$T/quart.bezier"
+run "$B/measure -f minradius,minradius_u $T/quart.bezier"
+status 0
+awk 'NF { exit !($1 > 8 * (1 - 1e-9) && $1 < 8 * (1 + 1e-9) && $2 == 0) }' "$T/out" &&
+    ok || no "measure: radius at a retracted handle of (4u^2, u^4): $(cat "$T/out"), want 8 at 0"
 run "$B/measure -f length $T/cusp.cubic"
 status 0
 # a closed curve that runs out and back along a line has no area

@@ -45,6 +45,12 @@ whole() {
 		echo "not a whole SVG document"
 		return 1
 	fi
+	if [ "$3" = stl ]; then          # an STL of what could be read
+		[ "$(head -n 1 "$1")" = "solid loft" ] &&
+		    [ "$(tail -n 1 "$1")" = "endsolid loft" ] && return 0
+		echo "not a whole STL document"
+		return 1
+	fi
 	[ "$3" = records ] || { echo "part of the output"; return 1; }
 	[ -z "$(tail -c 1 "$1")" ] || { echo "no final newline"; return 1; }
 	awk 'BEGIN { RS = "" } NR == FNR { good[$0] = 1; next }
@@ -132,6 +138,14 @@ oom records sample -d -k -u "$T/insole.cubic"
 oom records bezapprox -n 3,3 "$T/p1"
 oom document loftplot -c -b -m -t -K $F/insole.knots "$T/insole.cubic" "$T/net" \
     "$T/p1"
+# issue 28: the programs and readers that round touched
+oom records measure "$T/insole.cubic"
+printf 'sep=;\nname;X (mm);y\n"a;\nb";1,5;2\n;3;4\n' >"$T/pts.csv"
+oom records fromcad "$T/pts.csv"
+oom design patchcut -x 2 -z 0.5 "$T/design"
+oom stl tocad -f stl "$T/design"
+"$B/splinefit" -o $F/hull.knots >"$T/hull.cubic" || exit 2
+oom design patchloft "$T/hull.cubic"
 
 # issue 12: a record too large for memory (made so by failing every
 # allocation above 1 MB) is one bad record, reported at a line of it

@@ -57,5 +57,6 @@ slow sh tests/install.sh
 slow sh tests/examples.sh
 slow sh tests/approx.sh
 suite sh tests/synopsis.sh
+slow sh tests/units.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

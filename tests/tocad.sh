@@ -741,9 +741,14 @@ run "$B/tocad -f step $T/huge $T/ins.cubic"
 status 1
 says "coefficients too large"
 step_eval "$T/out" "$T/ins.pts" >"$T/val"; within "step: the good curve after a bad one" 3e-12
-run "$B/tocad -f dxf -t 1e-300 $T/ins.cubic"
+run "$B/tocad -f dxf -t 1e-9 $T/ins.cubic"
 status 1
 says "needs more than 65536 steps a piece"
+# issue 28: a tolerance below the rounding of the coordinates (1e-12 of
+# the size, 283 here) is refused by the one check every -t has
+run "$B/tocad -f dxf -t 1e-300 $T/ins.cubic"
+status 1
+says "tolerance 1e-300 is below 1e-12 of the size 282.9"
 
 # ---- OBJ ---------------------------------------------------------------------
 
