@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "loftcad.h"
+#include "internal.h"       /* vnorm: a comb of any units (issue 28) */
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640
@@ -107,6 +108,7 @@ struct pic {
 	long grid;              /* a surface's parameter intervals each way */
 	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
+	double comb_div;        /* teeth are scale * curvature / comb_div */
 	double comb_cap;        /* the longest tooth, in the drawing's units */
 	const char *background; /* -B, or NULL */
 	const char *label_key;
@@ -294,7 +296,17 @@ check_points(const struct loft_record *rec, struct loft_error *err)
 	return 0;
 }
 
-/* A point record: a polyline through its rows, and markers with -m. */
+/* A point record's closed=1 (loft(5)): its outline is closed. */
+static int
+closed_points(const struct loft_record *rec)
+{
+	const char *v = loft_attr(rec, "closed");
+
+	return v != NULL && strcmp(v, "1") == 0 && rec->nrows > 2;
+}
+
+/* A point record: a polyline through its rows, closed where the record
+ * says closed=1, and markers with -m. */
 static int
 draw_points(struct pic *pc, const struct loft_record *rec, struct extent *e,
     struct loft_error *err)
@@ -309,6 +321,13 @@ draw_points(struct pic *pc, const struct loft_record *rec, struct extent *e,
 		if (add_seen(pc, s, e, rec->num + i * rec->ncols, rec->ncols,
 		    err) != 0)
 			return (err->row = i), -1;
+	if (closed_points(rec)) {       /* back to the first point, and Z */
+		s->closed = 1;
+		if (memcmp(rec->num, rec->num + (rec->nrows - 1) * rec->ncols,
+		    rec->ncols * sizeof *rec->num) != 0 && add_seen(pc, s, e,
+		    rec->num, rec->ncols, err) != 0)
+			return -1;
+	}
 	return pc->marks ? add_marks(pc, rec, K_MARKS, pc->nrec, e, err) : 0;
 }
 
@@ -507,15 +526,13 @@ add_comb(struct pic *pc, const struct loft_curve *c, struct loft_error *err)
 				return loft_fail(err, LOFT_EGEOM, (long)i, "the "
 				    "tangent vanishes in segment %zu at u = %g: "
 				    "no curvature for the comb", i + 1, u);
-			len = 0;
-			for (int k = 0; k < c->dim; k++)
-				len += kn[k] * kn[k];
+			len = vnorm(kn, c->dim);
 			if (!isfinite(len))
 				return loft_fail(err, LOFT_EGEOM, (long)i,
 				    "curvature too large to draw in segment %zu",
 				    i + 1);
-			if (sqrt(len) > pc->kmax)
-				pc->kmax = sqrt(len);
+			if (len > pc->kmax)
+				pc->kmax = len;
 			project(pc->view, p, c->dim, q);
 			if (add_point(pc, s, q, err) != 0)
 				return -1;
@@ -911,12 +928,16 @@ tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
     double scale, double *tip)
 {
 	const double *base = pc->pt + 2 * (s->first + 2 * j), *kn = base + 2;
-	double len = scale * hypot(kn[0], kn[1]);
+	/* kn / comb_div first: an automatic scale of a drawing of 1e160 or
+	 * 1e-160 units would overflow, the curvatures relative to the
+	 * largest do not */
+	double k[2] = { kn[0] / pc->comb_div, kn[1] / pc->comb_div };
+	double len = hypot(k[0], k[1]);
 
-	if (len > pc->comb_cap)         /* cut to the cap */
-		scale *= pc->comb_cap / len;
-	tip[0] = base[0] - scale * kn[0];
-	tip[1] = base[1] - scale * kn[1];
+	if (scale * len > pc->comb_cap)         /* cut to the cap */
+		scale = pc->comb_cap / len;
+	tip[0] = base[0] - scale * k[0];
+	tip[1] = base[1] - scale * k[1];
 }
 
 /* Begin a record of the picture, of style class cls, colour and stroke
@@ -1650,8 +1671,11 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 
 	/* the comb's scale, from the curves' extent, and its teeth's tips */
 	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
-	if (scale == 0 && kmax > 0)
-		scale = COMB_LENGTH * big / kmax;
+	pc->comb_div = 1;
+	if (scale == 0 && kmax > 0) {
+		scale = COMB_LENGTH * big;
+		pc->comb_div = kmax;
+	}
 	pc->comb_cap = COMB_CAP * big;
 	for (size_t i = 0; i < pc->nst; i++)
 		for (size_t j = 0; pc->st[i].kind == K_COMB &&

@@ -892,5 +892,37 @@ awk -f tests/svgcmp.awk "$f" "$T/digit.svg" >/dev/null && ok ||
 [ "$n" -ge 42 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
     no "$n figures committed, $(ls "$T/figures/"*.svg | wc -l) made"
 
+# ---- issue 28: the comb of a curve in any units ---------------------------
+# The insole drawn with -c at 1e160 and 1e-160 is the picture at unit
+# scale with every number times the scale: the comb's points divided by
+# it agree with the unit picture's within 0.05 mm, a tenth of a pixel of
+# its 640 (the digits written of a number of 1e160 are fewer; a comb scaled
+# through squares of 1e-320 or 1e320 was refused, or lost).
+combs() {
+	awk -v s="$1" '/^[0-9-]/ { print $1 * s, $2 * s; next } { print }' \
+	    man/figures/insole.knots | "$B/splinefit" | "$B/loftplot" -c |
+	    awk -v s="$1" '/class="comb"/ { sub(/.* d="/, ""); sub(/".*/, "")
+		gsub(/[ML]/, " "); n = split($0, v, " ")
+		for (i = 1; i <= n; i++) printf "%.4f\n", v[i] / s }'
+}
+combs 1 >"$T/comb1"
+for sc in 1e160 1e-160; do
+	combs "$sc" >"$T/comb$sc"
+	[ "$(wc -l <"$T/comb1")" -gt 100 ] &&
+	    awk 'NR == FNR { a[FNR] = $1; next }
+		{ d = $1 - a[FNR]; if (d < 0) d = -d; if (d > 0.05) bad = 1 }
+		END { exit bad || NR != 2 * FNR }' "$T/comb1" "$T/comb$sc" &&
+	    ok || no "loftplot -c at scale $sc is not the unit comb scaled"
+done
+
+# ---- issue 24: a point record's closed=1 closes its polyline --------------
+d=$(printf 'points closed=1\n0 0\n1 0\n1 1\n' | "$B/loftplot" |
+    sed -n 's/.*class="curve".* d="\([^"]*\)".*/\1/p')
+[ "$d" = "M0 0 L1 0 L1 -1 L0 0 Z" ] && ok ||
+    no "points closed=1: path '$d', want back to the first point and Z"
+d=$(printf 'points closed=0\n0 0\n1 0\n1 1\n' | "$B/loftplot" |
+    sed -n 's/.*class="curve".* d="\([^"]*\)".*/\1/p')
+[ "$d" = "M0 0 L1 0 L1 -1" ] && ok || no "points closed=0: path '$d'"
+
 echo "loftplot: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
