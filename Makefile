@@ -81,6 +81,49 @@ $(LIB): $(LIBOBJ)
 bin/%: cmd/%.c $(LIB) lib/loft.h lib/loftprog.h
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# loftplot -i (issue 27): loftplot carries its page, made into C by
+# lib/wasm/embed.c from lib/wasm/page.html and the WebAssembly module of
+# lib/wasm/build.sh (loft's programs built by clang for wasm32-wasi).
+# Without that toolchain build.sh says so in a line and the page is
+# made with no module: loftplot -i then says how to get one.
+WASM_CC  = clang
+WASMSRC  = $(filter-out lib/approx.c lib/outfiles.c,$(LIBSRC))
+PAGEOBJ  = bin/obj/page.o bin/obj/pageout.o
+
+bin/loftplot: cmd/loftplot.c $(PAGEOBJ) $(LIB) lib/loft.h lib/loftprog.h \
+    lib/wasm/page.h
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ cmd/loftplot.c $(PAGEOBJ) $(LIB) \
+	    $(LDLIBS)
+
+bin/wasm/embed: lib/wasm/embed.c bin/obj/.dir
+	mkdir -p bin/wasm
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ lib/wasm/embed.c
+
+bin/wasm/loft.wasm: $(WASMSRC) lib/wasm/loftwasm.c lib/wasm/build.sh \
+    cmd/splinefit.c cmd/patchdrag.c cmd/loftplot.c lib/loft.h \
+    lib/loftprog.h lib/loftcad.h lib/internal.h lib/wasm/page.h
+	rm -f $@
+	@sh lib/wasm/build.sh $(WASM_CC) $@ $(WASMSRC); rc=$$?; \
+	    if [ $$rc -eq 3 ]; then : >$@; else exit $$rc; fi
+
+bin/obj/page.c: bin/wasm/embed lib/wasm/page.html bin/wasm/loft.wasm
+	if [ -s bin/wasm/loft.wasm ]; then \
+	    bin/wasm/embed lib/wasm/page.html bin/wasm/loft.wasm >$@; else \
+	    bin/wasm/embed lib/wasm/page.html >$@; fi
+
+bin/obj/page.o: bin/obj/page.c lib/wasm/page.h
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ bin/obj/page.c
+
+bin/obj/pageout.o: lib/wasm/pageout.c lib/wasm/page.h lib/loftprog.h \
+    bin/obj/.dir
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ lib/wasm/pageout.c
+
+# make bench-page: the page's time per drag of a knot of 100 with the
+# comb (refit and redraw, by performance.now() in headless Chromium);
+# skipped without the module, chromium or puppeteer-core
+bench-page: all
+	@sh tests/browser/run.sh bench
+
 bin/test/%: tests/%.c tests/check.h $(LIB) lib/loft.h lib/loftprog.h \
     bin/test/.dir
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
@@ -189,6 +232,7 @@ ifneq ($(filter clean,$(MAKECMDGOALS)),)
 endif
 
 .PHONY: all check check-quick bench compare demo figures install uninstall clean examples
+.PHONY: bench-page
 .SECONDARY:
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------

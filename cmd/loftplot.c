@@ -17,6 +17,7 @@
 
 #include "loftcad.h"
 #include "internal.h"       /* vnorm: a comb of any units (issue 28) */
+#include "wasm/page.h"
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640
@@ -112,6 +113,7 @@ struct pic {
 	double comb_cap;        /* the longest tooth, in the drawing's units */
 	const char *background; /* -B, or NULL */
 	const char *label_key;
+	struct loft_page *page; /* -i: the records the page holds, or NULL */
 	/* the picture */
 	double *pt;             /* projected points, 2 numbers each */
 	size_t npt, ptcap;
@@ -130,7 +132,7 @@ struct pic {
 };
 
 static const char usage_text[] =
-    "usage: loftplot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
+    "usage: loftplot [-bcimt] [-B colour] [-C scale] [-g lines] [-K file] "
     "[-l key]\n            [-n steps] [-v xy|yz|xz|iso] [file ...]\n";
 
 /* Colours of records 0, 1, ... in turn; the -K knots are black. */
@@ -880,6 +882,10 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_EINPUT;
 	}
 	box_join(&pc->box, &e.box);
+	if (pc->page != NULL)
+		loft_put_record(loft_record_is(rec, LOFT_KIND_KNOTS) ?
+		    &pc->page->points : surface ? &pc->page->design :
+		    &pc->page->curves, rec);
 	pc->rec[pc->nrec] = (struct drawn){ e.box, pc->kmax, rec->file,
 	    rec->line };
 	pc->kmax = fmax(kmax, pc->kmax);
@@ -909,6 +915,8 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 	}
 	box_join(&pc->box, &e.box);
 	box_join(&pc->kbox, &e.box);
+	if (pc->page != NULL)
+		loft_put_record(&pc->page->knots, rec);
 	return 0;
 }
 
@@ -1871,6 +1879,35 @@ colour_ok(const char *s)
 }
 
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
+/* -i: the page of the records kept (lib/wasm/pageout.c); exit status 1
+ * when a record was bad or no module was built, as the page says. */
+static int
+write_page(struct loft_run *run, struct pic *pc, const char *view)
+{
+	struct loft_page *pg = pc->page;
+	int status = run->status;
+
+	pg->view = view;
+	pg->comb = pc->comb;
+	if (pc->nst == 0) {
+		fputs("loftplot: nothing to draw\n", stderr);
+		status = 1;
+	} else if (loft_page_wasm_bytes == 0) {
+		fputs("loftplot: -i: the page's WebAssembly module was not "
+		    "built: install clang, lld, wasi-libc and "
+		    "libclang-rt-14-dev-wasm32, then make again\n", stderr);
+		status = 1;
+	} else if (loft_page_write(stdout, pg) != 0) {
+		fputs("loftplot: cannot write the page\n", stderr);
+		status = 1;
+	}
+	loft_writer_free(&pg->knots);
+	loft_writer_free(&pg->curves);
+	loft_writer_free(&pg->points);
+	loft_writer_free(&pg->design);
+	return status;
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -1879,12 +1916,13 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "loftplot", .out = stdout, .msg = stderr,
 	    .handle = keep_record, .ctx = &pc };
 	struct loft_cad_doc d = { 0 };
+	struct loft_page page = { 0 };
 	struct loft_error err;
 	char *knots = NULL;
 	int c, rc = 0, word, status;
 
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "bcmtB:C:g:K:l:n:v:h")) != -1) {
+	while ((c = getopt(argc, argv, "bcimtB:C:g:K:l:n:v:h")) != -1) {
 		switch (c) {
 		case 'b': pc.control = 1; break;
 		case 'B': pc.background = optarg;
@@ -1894,6 +1932,7 @@ main(int argc, char *argv[])
 				optarg);
 		    break;
 		case 'c': pc.comb = 1; break;
+		case 'i': pc.page = &page; break;
 		case 'm': pc.marks = 1; break;
 		case 't': pc.handles = 1; break;
 		case 'C': rc = loft_parse_real(optarg, 1e-300, 1e300,
@@ -1920,7 +1959,9 @@ main(int argc, char *argv[])
 		run.handle = keep_record;
 	}
 	loft_run_files(&run, argc - optind, argv + optind);
-	if (pc.nst == 0) {
+	if (pc.page != NULL)
+		status = write_page(&run, &pc, views[pc.view]);
+	else if (pc.nst == 0) {
 		fputs("loftplot: nothing to draw\n", stderr);
 		status = 1;
 	} else if ((rc = write_svg(&d, &pc, &err)) != 0) {
