@@ -87,7 +87,7 @@ bin/%: cmd/%.c $(LIB) lib/loft.h lib/loftprog.h
 # Without that toolchain build.sh says so in a line and the page is
 # made with no module: loftplot -i then says how to get one.
 WASM_CC  = clang
-WASMSRC  = $(filter-out lib/approx.c lib/outfiles.c,$(LIBSRC))
+WASMSRC  = $(filter-out lib/approx.c lib/outfiles.c,$(LIBOBJ:bin/obj/%.o=lib/%.c))
 PAGEOBJ  = bin/obj/page.o bin/obj/pageout.o
 
 bin/loftplot: cmd/loftplot.c $(PAGEOBJ) $(LIB) lib/loft.h lib/loftprog.h \
