@@ -39,6 +39,7 @@ suite sh tests/bezapprox.sh
 slow bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
 slow sh tests/loftplot.sh
+slow sh tests/browser/run.sh
 suite sh tests/grade.sh
 slow sh tests/offset.sh
 suite bin/test/cad

@@ -31,11 +31,14 @@ slurp(const char *name, size_t *n)
 	}
 	for (;;) {
 		if (*n == cap) {
+			unsigned char *g;
+
 			cap = cap ? 2 * cap : 65536;
-			if ((b = realloc(b, cap + 1)) == NULL) {
+			if ((g = realloc(b, cap + 1)) == NULL) {
 				perror("embed");
 				exit(1);
 			}
+			b = g;
 		}
 		size_t k = fread(b + *n, 1, cap - *n, fp);
 		if (k == 0)

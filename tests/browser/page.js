@@ -5,6 +5,8 @@
 //   node tests/browser/page.js check DIR   the tests: a line "ok ..." or
 //                                          "FAIL ..." each
 //   node tests/browser/page.js bench DIR   ms per drag of 1 knot of 100
+//   node tests/browser/page.js shot DIR    DIR/page.png: the insole's page
+//                                          after a drag, for the README
 //
 // The references are outside the page: splinefit and patchdrag run as
 // commands on what the page saved, and the mouse's own displacement.
@@ -174,6 +176,25 @@ async function surfaces(browser) {
   return requests;
 }
 
+async function shot(browser) {
+  const html = path.join(dir, "shot.html");
+  fs.writeFileSync(html, execFileSync(path.join(B, "loftplot"),
+    ["-i", "-c", "-K", "man/figures/insole.knots"],
+    { input: sh("splinefit", ["-m", "manning"], fs.readFileSync(
+      "man/figures/insole.knots", "utf8")) }));
+  const page = await open(browser, html, []);
+  await page.setViewport({ width: 1100, height: 600 });
+  await page.click("#frame");
+  await page.select("#method", "manning");
+  const at = await page.evaluate(() => {
+    const r = document.querySelector('[data-k="0"][data-i="17"]')
+      .getBoundingClientRect();
+    return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+  });
+  await drag(page, at.x, at.y, 0, -25);
+  await page.screenshot({ path: path.join(dir, "page.png") });
+}
+
 async function bench(browser) {
   // 100 knots on a wavy oval, as a designer's outline might have
   const k = [];
@@ -205,6 +226,8 @@ async function bench(browser) {
   try {
     if (mode === "bench") {
       await bench(browser);
+    } else if (mode === "shot") {
+      await shot(browser);
     } else {
       const req = (await curves(browser)).concat(await surfaces(browser));
       const far = req.filter(u => !/^(file|data|blob):/.test(u) ||
