@@ -38,10 +38,13 @@ struct box {
 
 /* What the labels keep clear of: the lines, then the leaders placed
  * (from nlines on), as segments with their records, in a grid of cells
- * a font high each way. */
+ * a font high each way.  A line drawn again by another record (a pile
+ * of the same outline) is filed once, marked multi: a cell of a
+ * thousand copies would make every look at it a thousand. */
 struct lines {
 	double (*seg)[4];
 	int *rec;
+	unsigned char *multi;   /* the line is other records' too */
 	size_t n, cap, nlines;
 	struct loft_grid g;
 };
@@ -54,6 +57,15 @@ struct place {
 	struct box *placed;     /* the boxes of labels 0..i-1 */
 	struct loft_grid g;     /* their grid */
 	struct lines o;
+	const double *seg;      /* the caller's lines */
+	const int *segrec;
+	size_t nseg;
+	struct byrec { int rec; size_t k; } *byrec;     /* their indices by
+	                                                 * record, then index */
+	struct loft_grid own;   /* the lines of the label being placed */
+	double origin[2];       /* of the grids */
+	struct stack { double x, y, at; } *stack;       /* last_resort's */
+	size_t nstack;          /* a power of two */
 	int spot[NSPOT][2], lead[NLEADSPOT][2];
 };
 
@@ -139,18 +151,40 @@ hit_visit(void *ctx, size_t id)
 {
 	const struct hit_q *q = ctx;
 
-	return (q->o->rec[id] == q->rec) == q->own &&
+	return (q->o->rec[id] != q->rec || q->o->multi[id]) &&
 	    loft_segment_meets_box(q->o->seg[id], q->b->lo, q->b->hi);
 }
 
-/* Whether a segment of record rec (own) or of another record (!own)
- * meets b; any segment: rec = ANYREC, own = 0. */
+/* Whether a segment of another record than rec meets b; any segment:
+ * rec = ANYREC. */
 static int
-lines_meet(const struct lines *o, const struct box *b, int rec, int own)
+lines_meet(const struct lines *o, const struct box *b, int rec)
 {
-	struct hit_q q = { o, b, rec, own };
+	struct hit_q q = { o, b, rec, 0 };
 
 	return loft_grid_each(&o->g, b->lo, b->hi, hit_visit, &q);
+}
+
+struct own_q {
+	const double *seg;
+	const struct box *b;
+};
+
+static int
+own_visit(void *ctx, size_t id)
+{
+	const struct own_q *q = ctx;
+
+	return loft_segment_meets_box(q->seg + 4 * id, q->b->lo, q->b->hi);
+}
+
+/* Whether a line of the label being placed meets b (p->own). */
+static int
+own_meets(const struct place *p, const struct box *b)
+{
+	struct own_q q = { p->seg, b };
+
+	return loft_grid_each(&p->own, b->lo, b->hi, own_visit, &q);
 }
 
 struct cross_q {
@@ -201,11 +235,81 @@ add_line(struct lines *o, const double *sg, int rec)
 		if ((r = realloc(o->rec, cap * sizeof *o->rec)) == NULL)
 			return LOFT_ENOMEM;
 		o->rec = r;
+		if ((r = realloc(o->multi, cap)) == NULL)
+			return LOFT_ENOMEM;
+		o->multi = r;
 		o->cap = cap;
 	}
 	memcpy(o->seg[o->n], sg, sizeof o->seg[0]);
 	o->rec[o->n] = rec;
+	o->multi[o->n] = 0;
 	return loft_grid_add_segment(&o->g, sg, o->n++);
+}
+
+/* ---- the same line twice ---------------------------------------------- */
+
+/* A table of the lines filed, by their four numbers: slot + 1, 0 empty. */
+struct seen {
+	size_t *slot, size;
+};
+
+static size_t
+seen_hash(const double *sg, size_t size)
+{
+	uint64_t h = 1469598103934665603u;
+
+	for (int k = 0; k < 4; k++) {
+		double x = sg[k] + 0.0;         /* -0 as 0: the same point */
+		uint64_t b;
+
+		memcpy(&b, &x, sizeof b);
+		h = (h ^ b) * 1099511628211u;
+		h ^= h >> 29;
+	}
+	return (size_t)h & (size - 1);
+}
+
+/* The line filed before with the four numbers of sg, or (size_t)-1
+ * (and sg's index k is noted). */
+static size_t
+seen_before(struct seen *t, const struct lines *o, const double *sg,
+    size_t k)
+{
+	size_t h = seen_hash(sg, t->size);
+
+	for (; t->slot[h] != 0; h = (h + 1) & (t->size - 1)) {
+		const double *q = o->seg[t->slot[h] - 1];
+
+		if (q[0] == sg[0] && q[1] == sg[1] && q[2] == sg[2] &&
+		    q[3] == sg[3])
+			return t->slot[h] - 1;
+	}
+	t->slot[h] = k + 1;
+	return (size_t)-1;
+}
+
+/* File the caller's nseg lines, each distinct one once. */
+static int
+file_lines(struct place *p)
+{
+	struct seen t = { NULL, 64 };
+	int rc = 0;
+
+	while (t.size < 2 * p->nseg)
+		t.size *= 2;
+	if ((t.slot = calloc(t.size, sizeof *t.slot)) == NULL)
+		return LOFT_ENOMEM;
+	for (size_t k = 0; k < p->nseg && rc == 0; k++) {
+		const double *sg = p->seg + 4 * k;
+		size_t r = seen_before(&t, &p->o, sg, p->o.n);
+
+		if (r == (size_t)-1)
+			rc = add_line(&p->o, sg, p->segrec[k]);
+		else if (p->o.rec[r] != p->segrec[k])
+			p->o.multi[r] = 1;
+	}
+	free(t.slot);
+	return rc;
 }
 
 /* ---- placing ---------------------------------------------------------- */
@@ -235,13 +339,12 @@ try_spots(struct place *p, struct loft_label *l, int nanc,
 			if (first_label(p, b) != (size_t)-1)
 				continue;
 			widen(&w, b, GAP * font);
-			if (lines_meet(&p->o, &w, ANYREC, 0))
+			if (lines_meet(&p->o, &w, ANYREC))
 				continue;
 			if (strict == 0)
 				return 1;
 			widen(&w, b, far);
-			if (lines_meet(&p->o, &w, strict == 1 ? l->rec : ANYREC,
-			    0))
+			if (lines_meet(&p->o, &w, strict == 1 ? l->rec : ANYREC))
 				continue;
 			memcpy(l->lo, b->lo, sizeof l->lo);
 			memcpy(l->hi, b->hi, sizeof l->hi);
@@ -249,7 +352,7 @@ try_spots(struct place *p, struct loft_label *l, int nanc,
 			    leader_blocked(p, sg)))
 				continue;
 			widen(&w, b, near);
-			if (strict == 1 && !lines_meet(&p->o, &w, l->rec, 1))
+			if (strict == 1 && !own_meets(p, &w))
 				continue;
 			return 1;
 		}
@@ -274,7 +377,7 @@ try_on_curve(struct place *p, struct loft_label *l, struct box *b)
 		set_box(p, l, b);
 		widen(&w, b, GAP * p->font);
 		if (first_label(p, b) == (size_t)-1 &&
-		    !lines_meet(&p->o, &w, l->rec, 0))
+		    !lines_meet(&p->o, &w, l->rec))
 			return 1;
 	}
 	l->oncurve = 0;
@@ -315,22 +418,82 @@ make_spots(struct place *p)
 	qsort(p->lead, NLEADSPOT, sizeof p->lead[0], nearer);
 }
 
+/* The slot of last_resort's stack of labels at point (x, y) in
+ * p->stack, an open hash table: the point's, or the empty one where it
+ * goes. */
+static size_t
+stack_slot(const struct place *p, double x, double y)
+{
+	double q[4] = { x, y, x, y };
+	size_t h = seen_hash(q, p->nstack);
+
+	while (p->stack[h].at == p->stack[h].at &&     /* not NaN: taken */
+	    (p->stack[h].x != x || p->stack[h].y != y))
+		h = (h + 1) & (p->nstack - 1);
+	return h;
+}
+
 /* Where all spots are taken: label i at its rightmost point, moved down
  * a line at a time while it overlaps a label placed before it, below
- * the first (in input order) it overlaps. */
+ * the first (in input order) it overlaps.  A pile of records with one
+ * rightmost point stacks its labels there: each starts where the one
+ * before it at that point ended, so a pile of n takes n moves, not
+ * n^2 / 2 (issue 28). */
 static void
 last_resort(struct place *p, size_t i)
 {
 	struct loft_label *l = &p->lb[i];
-	size_t j;
+	size_t j, h = stack_slot(p, l->anchor[0], l->anchor[1]);
 
 	l->at[0] = l->anchor[0];
-	l->at[1] = l->anchor[1];
+	l->at[1] = p->stack[h].at == p->stack[h].at ? p->stack[h].at :
+	    l->anchor[1];
 	set_box(p, l, &p->placed[i]);
 	while ((j = first_label(p, &p->placed[i])) != (size_t)-1) {
 		l->at[1] = p->placed[j].lo[1] - 0.6 * p->font;
 		set_box(p, l, &p->placed[i]);
 	}
+	p->stack[h] = (struct stack){ l->anchor[0], l->anchor[1], l->at[1] };
+}
+
+static int
+by_record(const void *pa, const void *pb)
+{
+	const struct byrec *a = pa, *b = pb;
+
+	if (a->rec != b->rec)
+		return a->rec < b->rec ? -1 : 1;
+	return (a->k > b->k) - (a->k < b->k);
+}
+
+/* The grid p->own of the lines of record rec: a label's own, looked up
+ * in p->byrec, so that finding its own line near a spot looks at its
+ * own lines alone (in a pile of records, at one of thousands). */
+static int
+own_lines(struct place *p, int rec)
+{
+	size_t lo = 0, hi = p->nseg;
+	int rc;
+
+	loft_grid_free(&p->own);
+	while (lo < hi) {               /* the first of rec */
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (p->byrec[mid].rec < rec)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	for (hi = lo; hi < p->nseg && p->byrec[hi].rec == rec; hi++)
+		;
+	if ((rc = loft_grid_init(&p->own, p->font, p->font, p->origin,
+	    hi - lo)) != 0)
+		return rc;
+	for (size_t i = lo; i < hi; i++)
+		if ((rc = loft_grid_add_segment(&p->own, p->seg + 4 *
+		    p->byrec[i].k, p->byrec[i].k)) != 0)
+			return rc;
+	return 0;
 }
 
 /* Place label i, file its box, and its leader as a line. */
@@ -341,6 +504,8 @@ place_one(struct place *p, size_t i)
 	struct box *b = &p->placed[i];
 	int rc;
 
+	if (!l->centred && (rc = own_lines(p, l->rec)) != 0)
+		return rc;
 	if (l->centred || !(try_spots(p, l, l->nanc, p->spot, NSPOT, 1, b) ||
 	    try_on_curve(p, l, b) ||
 	    (l->leader = try_spots(p, l, 1, p->lead, NLEADSPOT, 2, b)) ||
@@ -367,15 +532,28 @@ setup(struct place *p, const double *seg, const int *segrec, size_t nseg,
 	for (size_t i = 0; i < p->n; i++)
 		width += p->lb[i].width;
 	cw = fmax(p->font, width / (double)(p->n > 0 ? p->n : 1));
+	p->seg = seg;
+	p->segrec = segrec;
+	p->nseg = nseg;
+	memcpy(p->origin, origin, sizeof p->origin);
 	if ((p->placed = malloc((p->n > 0 ? p->n : 1) *
 	    sizeof *p->placed)) == NULL ||
+	    (p->byrec = malloc((nseg > 0 ? nseg : 1) *
+	    sizeof *p->byrec)) == NULL ||
 	    loft_grid_init(&p->g, cw, p->font, origin, p->n) != 0 ||
-	    loft_grid_init(&p->o.g, p->font, p->font, origin, nseg) != 0)
+	    loft_grid_init(&p->o.g, p->font, p->font, origin, nseg) != 0 ||
+	    file_lines(p) != 0)
 		return LOFT_ENOMEM;
-	for (size_t k = 0; k < nseg; k++)
-		if (add_line(&p->o, seg + 4 * k, segrec[k]) != 0)
-			return LOFT_ENOMEM;
 	p->o.nlines = p->o.n;
+	for (p->nstack = 64; p->nstack < 2 * p->n; p->nstack *= 2)
+		;
+	if ((p->stack = malloc(p->nstack * sizeof *p->stack)) == NULL)
+		return LOFT_ENOMEM;
+	for (size_t k = 0; k < p->nstack; k++)
+		p->stack[k].at = NAN;
+	for (size_t k = 0; k < nseg; k++)
+		p->byrec[k] = (struct byrec){ segrec[k], k };
+	qsort(p->byrec, nseg, sizeof *p->byrec, by_record);
 	make_spots(p);
 	return 0;
 }
@@ -413,8 +591,12 @@ loft_place_labels(struct loft_label *lb, size_t n, const double *seg,
 done:
 	loft_grid_free(&p->g);
 	loft_grid_free(&p->o.g);
+	loft_grid_free(&p->own);
 	free(p->o.seg);
 	free(p->o.rec);
+	free(p->o.multi);
+	free(p->byrec);
+	free(p->stack);
 	free(p->placed);
 	free(p);
 	return rc;
