@@ -1178,70 +1178,37 @@ place_labels(struct pic *pc, double font, double scale, struct box *frame)
 	return rc;
 }
 
-/*
- * Write the whole picture into d (loftplot's SVG picture, svgplot.c),
- * made anew: the picture in d->out.  0, or LOFT_EGEOM (it cannot be
- * framed) or LOFT_ENOMEM with err filled.  d is the caller's, zeroed or
- * made by write_svg before, to be freed with loft_cad_free.
- */
-static int
-write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
+/* The comb's scale, from the extent b of the curves (-C's, or teeth
+ * COMB_LENGTH of it at the largest curvature), and its teeth's tips
+ * added to b. */
+static double
+comb_scale(struct pic *pc, struct box *b)
 {
-	const struct loft_cad_opts o = { .picture_px = PICTURE_PX,
-	    .background = pc->background };
-	struct loft_cad_item it;
-	struct box b = pc->box;
-	double *vb, w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2],
-	    kmax = pc->kmax;
-	int rc;
+	double big = fmax(b->hi[0] - b->lo[0], b->hi[1] - b->lo[1]), tip[2],
+	    scale = pc->comb_scale;
 
-	/* the comb's scale, from the curves' extent, and its teeth's tips */
-	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
 	pc->comb_div = 1;
-	if (scale == 0 && kmax > 0) {
+	if (scale == 0 && pc->kmax > 0) {
 		scale = COMB_LENGTH * big;
-		pc->comb_div = kmax;
+		pc->comb_div = pc->kmax;
 	}
 	pc->comb_cap = COMB_CAP * big;
 	for (size_t i = 0; i < pc->nst; i++)
 		for (size_t j = 0; pc->st[i].kind == K_COMB &&
 		    j < pc->st[i].n / 2; j++) {
 			tooth_tip(pc, &pc->st[i], j, scale, tip);
-			box_add(&b, tip);
+			box_add(b, tip);
 		}
-	/* the frame: the drawing, a margin, and room for the labels */
-	w = b.hi[0] - b.lo[0];
-	h = b.hi[1] - b.lo[1];
-	if (!isfinite(w) || !isfinite(h))
-		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
-		    "to frame");
-	big = fmax(w, h);
-	if (big == 0)   /* one point: a frame of unit size around it */
-		big = fmax(1, fmax(fabs(b.lo[0]), fabs(b.lo[1])));
-	margin = MARGIN * big;
-	if (pc->nlb > 0) {
-		font = LOFT_PLOT_FONT_PX * (big + 2 * margin) / PICTURE_PX;
-		if (place_labels(pc, font, scale, &b) != 0)
-			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	}
-	loft_cad_free(d);
-	loft_cad_init(d, &loft_cad_svgplot, &o);
-	vb = d->o.frame;
-	vb[0] = b.lo[0] - margin;
-	vb[1] = -(b.hi[1] + margin);
-	vb[2] = b.hi[0] - b.lo[0] + 2 * margin;
-	vb[3] = b.hi[1] - b.lo[1] + 2 * margin;
-	big = fmax(vb[2], vb[3]);
-	/* the corner too: a drawing near the largest double has its margin
-	 * beyond it */
-	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
-	    !isfinite(vb[1]))
-		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
-		    "to frame");
-	if ((rc = d->f->begin(d)) != 0)
-		goto done;
-	/* curves and polylines in one pass, in the order of their records,
-	 * so that a later record lies on an earlier one, drawn thinner */
+	return scale;
+}
+
+/* Curves and polylines in one pass, in the order of their records, so
+ * that a later record lies on an earlier one, drawn thinner. */
+static int
+draw_strokes(struct loft_cad_doc *d, const struct pic *pc, double scale)
+{
+	int rc = 0;
+
 	for (int kind = 0; kind < NKIND && rc == 0; kind++)
 		for (size_t i = 0; i < pc->nst && rc == 0; i++) {
 			const struct stroke *s = &pc->st[i];
@@ -1259,6 +1226,18 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 			default: rc = draw_marks(d, pc, s); break;
 			}
 		}
+	return rc;
+}
+
+/* The labels placed, of height font: leaders, the grounds of those on
+ * their curves (of the background's colour, hiding the line under
+ * them), then the texts. */
+static int
+draw_labels(struct loft_cad_doc *d, const struct pic *pc, double font)
+{
+	struct loft_cad_item it;
+	int rc = 0;
+
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
 		const struct loft_label *l = &pc->lb[i].p;
 		double sg[4];
@@ -1270,8 +1249,6 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 		    0 && (rc = d->f->polyline(d, sg, 2, 2, 0)) == 0)
 			rc = d->f->end_record(d);
 	}
-	/* a label on its curve: a ground of the background's colour, its
-	 * box, hides its line under it */
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
 		const struct loft_label *l = &pc->lb[i].p;
 
@@ -1298,9 +1275,68 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 		    (rc = d->f->label(d, q, font, middle, pc->lb[i].text)) == 0)
 			rc = d->f->end_record(d);
 	}
-	if (rc == 0)
+	return rc;
+}
+
+/*
+ * The picture's frame (the viewBox of d), from the drawing's extent b:
+ * a margin, and room for the labels, placed here; their height in
+ * *font.  0, or LOFT_EGEOM (too large to frame) or LOFT_ENOMEM.
+ */
+static int
+frame(struct loft_cad_doc *d, struct pic *pc, struct box *b, double scale,
+    double *font)
+{
+	const struct loft_cad_opts o = { .picture_px = PICTURE_PX,
+	    .background = pc->background };
+	double w = b->hi[0] - b->lo[0], h = b->hi[1] - b->lo[1], big, margin,
+	    *vb;
+
+	if (!isfinite(w) || !isfinite(h))
+		return LOFT_EGEOM;
+	big = fmax(w, h);
+	if (big == 0)   /* one point: a frame of unit size around it */
+		big = fmax(1, fmax(fabs(b->lo[0]), fabs(b->lo[1])));
+	margin = MARGIN * big;
+	*font = 0;
+	if (pc->nlb > 0) {
+		*font = LOFT_PLOT_FONT_PX * (big + 2 * margin) / PICTURE_PX;
+		if (place_labels(pc, *font, scale, b) != 0)
+			return LOFT_ENOMEM;
+	}
+	loft_cad_free(d);
+	loft_cad_init(d, &loft_cad_svgplot, &o);
+	vb = d->o.frame;
+	vb[0] = b->lo[0] - margin;
+	vb[1] = -(b->hi[1] + margin);
+	vb[2] = b->hi[0] - b->lo[0] + 2 * margin;
+	vb[3] = b->hi[1] - b->lo[1] + 2 * margin;
+	big = fmax(vb[2], vb[3]);
+	/* the corner too: a drawing near the largest double has its margin
+	 * beyond it */
+	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
+	    !isfinite(vb[1]))
+		return LOFT_EGEOM;
+	return 0;
+}
+
+/*
+ * Write the whole picture into d (loftplot's SVG picture, svgplot.c),
+ * made anew: the picture in d->out.  0, or LOFT_EGEOM (it cannot be
+ * framed) or LOFT_ENOMEM with err filled.  d is the caller's, zeroed or
+ * made by write_svg before, to be freed with loft_cad_free.
+ */
+static int
+write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
+{
+	struct box b = pc->box;
+	double scale = comb_scale(pc, &b), font;
+	int rc = frame(d, pc, &b, scale, &font);
+
+	if (rc == 0 && (rc = d->f->begin(d)) == 0 &&
+	    (rc = draw_strokes(d, pc, scale)) == 0 &&
+	    (rc = draw_labels(d, pc, font)) == 0)
 		rc = d->f->end(d);
-done:
 	if (rc == LOFT_ENOMEM || d->out.bad == LOFT_ENOMEM)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc != 0 || d->out.bad != 0)
