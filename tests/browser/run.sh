@@ -1,7 +1,7 @@
 #!/bin/sh
 # run.sh: loftplot -i's page in headless Chromium (tests/browser/page.js,
 # puppeteer-core from npm into bin/node_modules), run from the top of
-# the tree; the last line is "loftplot-i: N passed, M failed".
+# the tree; the last line is "browser: N passed, M failed".
 #   sh tests/browser/run.sh          the tests (make check)
 #   sh tests/browser/run.sh bench    the time per drag (make bench-page)
 # Each missing peer skips the whole with one line: the module (no
@@ -13,7 +13,7 @@ CHROMIUM=${CHROMIUM:-/usr/bin/chromium}
 NODE_DIR=$(pwd)/bin
 export B CHROMIUM NODE_DIR
 
-skip() { echo "loftplot-i: skip: $*"; echo "loftplot-i: 0 passed, 0 failed"
+skip() { echo "browser: skip: $*"; echo "browser: 0 passed, 0 failed"
 	exit 0; }
 
 [ -s bin/wasm/loft.wasm ] ||
@@ -37,5 +37,5 @@ grep -v '^ok\|^FAIL' "$T/log" | head -20 >&2
 pass=$(grep -c '^ok' "$T/log")
 fail=$(grep -c '^FAIL' "$T/log")
 [ "$pass" -gt 0 ] || fail=$((fail + 1))
-echo "loftplot-i: $pass passed, $fail failed"
+echo "browser: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
