@@ -130,6 +130,25 @@ async function curves(browser) {
     /(\d+) inflexion/.exec(line) &&
     fig.indexOf(/(\d+) inflexion/.exec(line)[0]) >= 0,
     `the figures are splinefit -v's: '${line.trim()}' in '${fig}'`);
+  // a knot added by a double-click halfway between knots 12 and 13,
+  // then deleted: the record is the saved one again
+  const mid = await page.evaluate(() => {
+    const a = document.querySelector('[data-k="0"][data-i="11"]')
+      .getBoundingClientRect();
+    const b = document.querySelector('[data-k="0"][data-i="12"]')
+      .getBoundingClientRect();
+    return { x: (a.x + b.x + a.width) / 2, y: (a.y + b.y + a.height) / 2 };
+  });
+  await page.mouse.click(mid.x, mid.y, { clickCount: 2 });
+  const added = await page.evaluate(() => window.loftPage.saved().knots);
+  await page.keyboard.press("Delete");
+  const deleted = await page.evaluate(() => window.loftPage.saved().knots);
+  const ra = rows(added);
+  check(ra.length === 23 && ra[12][0] > Math.min(want[11][0], want[12][0]) &&
+    ra[12][0] < Math.max(want[11][0], want[12][0]) && / corners=3(\s|$)/.test(
+      added.split("\n")[0]),
+    `a double-click between knots 12 and 13 adds knot 13: ${ra[12]}`);
+  check(deleted === saved, "Delete takes it out again");
   await page.close();
   return requests;
 }
