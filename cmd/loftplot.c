@@ -1430,6 +1430,25 @@ colour_ok(const char *s)
 }
 
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
+/* -i: option c (with arg, when it takes one) for the page's picture
+ * too, but for those the page sets itself (-v, -c) or has no use for
+ * (-i, -K). */
+static void
+page_option(struct loft_page *pg, int c, const char *arg)
+{
+	static const char *const opts[] = { "-b", "-m", "-t", "-B", "-C",
+	    "-g", "-l", "-n" };
+	static const char letters[] = "bmtBCgln";
+	const char *f = strchr(letters, c);
+
+	if (c == 0 || f == NULL || pg->nargs + 2 >= (int)(sizeof pg->args /
+	    sizeof pg->args[0]))
+		return;
+	pg->args[pg->nargs++] = opts[f - letters];
+	if (f - letters >= 3)           /* -B -C -g -l -n take an argument */
+		pg->args[pg->nargs++] = arg;
+}
+
 /* -i: the page of the records kept (lib/wasm/pageout.c); exit status 1
  * when a record was bad or no module was built, as the page says. */
 static int
@@ -1501,6 +1520,7 @@ main(int argc, char *argv[])
 		}
 		if (rc != 0)
 			loft_usage_error(usage_text, c, err.msg);
+		page_option(&page, c, optarg);
 	}
 	box_empty(&pc.box);
 	box_empty(&pc.kbox);

@@ -27,6 +27,10 @@ extern const size_t loft_page_wasm_bytes;       /* before base64 */
 struct loft_page {
 	const char *view;
 	int comb;
+	const char *args[24];   /* loftplot's other options, for the page's
+	                         * picture: -b -m -t -B -C -g -l -n, NULL
+	                         * ended */
+	int nargs;
 	struct loft_writer knots, curves, points, design;
 };
 

@@ -52,7 +52,14 @@ loft_page_write(FILE *out, const struct loft_page *pg)
 	fputs("<script id=\"loft-data\" type=\"application/json\">\n{\"view\": ",
 	    out);
 	put_json(out, pg->view, strlen(pg->view));
-	fprintf(out, ", \"comb\": %s", pg->comb ? "true" : "false");
+	fprintf(out, ", \"comb\": %s, \"args\": [", pg->comb ? "true" :
+	    "false");
+	for (int i = 0; i < pg->nargs; i++) {
+		if (i > 0)
+			putc(',', out);
+		put_json(out, pg->args[i], strlen(pg->args[i]));
+	}
+	putc(']', out);
 	put_field(out, "knots", &pg->knots);
 	put_field(out, "curves", &pg->curves);
 	put_field(out, "points", &pg->points);
