@@ -943,5 +943,31 @@ else
 	no "a pile of 5000 labelled records: exit $?: $(head -2 "$T/err")"
 fi
 
+# ---- issue 27: loftplot -i writes the page (the browser drives it in
+# tests/browser); here, what the file holds, without a browser
+if [ -s bin/wasm/loft.wasm ]; then
+	printf 'points name=</script><b>x\n0 0\n1 0\n1 1\n0 1\n' >"$T/k"
+	printf 'points\n0 0\nfoo\n\ncubic\n1 2 3\n' >"$T/bad"
+	"$B/splinefit" "$T/k" | "$B/loftplot" -i -K "$T/k" - "$T/bad" \
+	    >"$T/page.html" 2>"$T/err"
+	rc=$?
+	[ "$rc" -eq 1 ] && grep -q 'bad:' "$T/err" && ok ||
+	    no "loftplot -i with bad records: exit $rc, want 1; $(cat "$T/err")"
+	n=$(grep -c '</script>' "$T/page.html")
+	[ "$n" -eq 2 ] && grep -q '^<!DOCTYPE html>' "$T/page.html" &&
+	    [ "$(tail -n 1 "$T/page.html")" = '</html>' ] && ok ||
+	    no "loftplot -i: $n </script> in the page, want 2 (data, code)"
+	grep -q 'name=\\u003c/script>\\u003cb>x' "$T/page.html" && ok ||
+	    no "loftplot -i: the record's < not escaped in the page's data"
+	# the module is all there: its base64 decodes to the file's bytes
+	sed -n 's/^"module": "\([^"]*\)"}$/\1/p' "$T/page.html" >"$T/b64"
+	if command -v base64 >/dev/null 2>&1; then
+		base64 -d "$T/b64" | cmp -s - bin/wasm/loft.wasm && ok ||
+		    no "loftplot -i: the page's module is not bin/wasm/loft.wasm"
+	fi
+else
+	echo "skip: loftplot -i's page (no WebAssembly module)"
+fi
+
 echo "loftplot: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
