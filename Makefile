@@ -36,7 +36,7 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/bernstein.o lib/arclen.o lib/measure.o lib/flatten.o \
           lib/merge.o lib/fair.o lib/skin.o lib/cut.o lib/error.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
-          lib/cholesky.o lib/bezform.o
+          lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
 PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o
 # the CAD output formats (lib/loftcad.h): the document protocol, the
@@ -49,12 +49,17 @@ CADINOBJ = lib/cadread.o lib/cadreaders.o lib/dxfread.o lib/svgread.o \
           lib/csvread.o
 LIBOBJ  = $(COREOBJ) $(PROGOBJ) $(CADOBJ) $(CADINOBJ)
 LIB     = bin/libloft.a
+# loftplot's page (loftplot -i), below
+WASM_CC  = clang
+WASMSRC  = $(LIBOBJ:.o=.c)
+PAGEOBJ  = bin/wasm/page.o lib/wasm/pageout.o
+PAGELIB  = bin/libloftpage.a
 
 BINS    = $(PROGS:%=bin/%)
 CMDOBJ  = $(PROGS:%=cmd/%.o)
 # the test programs, tests/NAME.c each, linked into bin/test
 TESTPROGS = unit paper patch bezier numtest pow10gen offsetref hostile \
-          arclen cad noisy nearest tables
+          arclen cad noisy nearest tables grid
 TESTOBJ = $(TESTPROGS:%=tests/%.o)
 TESTS   = $(TESTPROGS:%=bin/test/%) bin/test/oom.so bin/test/line/progs
 BENCHPROGS = gen floor timeit tandiff numbers
@@ -95,10 +100,51 @@ $(LIB): $(LIBOBJ)
 	ar rcs $@ $(LIBOBJ)
 
 # each program from its object, bin/NAME from cmd/NAME.o (relinking
-# them all when one changes costs a link each, no compiling)
-$(BINS): $(CMDOBJ) $(LIB)
+# them all when one changes costs a link each, no compiling); only
+# loftplot takes anything from $(PAGELIB), its page
+$(BINS): $(CMDOBJ) $(LIB) $(PAGELIB)
 	@mkdir -p bin
-	$(CC) $(CFLAGS) -o $@ cmd/`basename $@`.o $(LIB) $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ cmd/`basename $@`.o $(PAGELIB) $(LIB) $(LDLIBS)
+
+# loftplot -i (issue 27): loftplot carries its page, made into C by
+# lib/wasm/embed.c from lib/wasm/page.html and the WebAssembly module of
+# lib/wasm/build.sh (loft's programs built by clang for wasm32-wasi;
+# build.sh leaves out the modules the page does not run).  Without that
+# toolchain build.sh says so in a line and the page is made with no
+# module: loftplot -i then says how to get one.
+
+$(PAGELIB): $(PAGEOBJ)
+	rm -f $@
+	ar rcs $@ $(PAGEOBJ)
+
+bin/wasm/embed: lib/wasm/embed.c
+	@mkdir -p bin/wasm
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -o $@ lib/wasm/embed.c
+
+bin/wasm/loft.wasm: $(WASMSRC) lib/wasm/loftwasm.c lib/wasm/build.sh \
+    cmd/splinefit.c cmd/patchdrag.c cmd/loftplot.c lib/loft.h \
+    lib/loftprog.h lib/loftcad.h lib/internal.h lib/wasm/page.h
+	@mkdir -p bin/wasm
+	rm -f $@
+	@sh lib/wasm/build.sh $(WASM_CC) $@ $(WASMSRC); rc=$$?; \
+	    if [ $$rc -eq 3 ]; then : >$@; else exit $$rc; fi
+
+bin/wasm/page.c: bin/wasm/embed lib/wasm/page.html bin/wasm/loft.wasm
+	if [ -s bin/wasm/loft.wasm ]; then \
+	    bin/wasm/embed lib/wasm/page.html bin/wasm/loft.wasm >$@; else \
+	    bin/wasm/embed lib/wasm/page.html >$@; fi
+
+bin/wasm/page.o: bin/wasm/page.c lib/wasm/page.h
+	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -c -o $@ bin/wasm/page.c
+
+lib/wasm/pageout.o: lib/wasm/pageout.c lib/wasm/page.h lib/loftprog.h \
+    lib/loft.h
+
+# make bench-page: the page's time per drag of a knot of 100 with the
+# comb (refit and redraw, by performance.now() in headless Chromium);
+# skipped without the module, chromium or puppeteer-core
+bench-page: all
+	@sh tests/browser/run.sh bench
 
 $(TESTPROGS:%=bin/test/%): $(TESTOBJ) $(LIB)
 	@mkdir -p bin/test
@@ -113,9 +159,10 @@ bin/test/oom.so: tests/oom.c
 bin/test/line/types.o: lib/types.c lib/loft.h lib/internal.h
 	@mkdir -p bin/test/line
 	$(CC) $(LOFT_CFLAGS) $(CFLAGS) -DLOFT_TEST_LINE -c -o $@ lib/types.c
-bin/test/line/progs: bin/test/line/types.o tests/linetype.o $(CMDOBJ) $(LIB)
+bin/test/line/progs: bin/test/line/types.o tests/linetype.o $(CMDOBJ) $(LIB) \
+    $(PAGELIB)
 	for p in $(PROGS); do $(CC) $(CFLAGS) -o bin/test/line/$$p \
-	    cmd/$$p.o tests/linetype.o bin/test/line/types.o $(LIB) \
+	    cmd/$$p.o tests/linetype.o bin/test/line/types.o $(PAGELIB) $(LIB) \
 	    $(LDLIBS) || exit 1; done
 	touch $@
 
@@ -211,9 +258,10 @@ examples: all
 
 clean:
 	rm -rf bin
-	rm -f lib/*.o cmd/*.o tests/*.o tests/bench/*.o
+	rm -f lib/*.o lib/wasm/*.o cmd/*.o tests/*.o tests/bench/*.o
 
 .PHONY: all check check-quick bench compare demo figures install uninstall clean examples
+.PHONY: bench-page
 
 # ---- reliability (issue 6): sanitizers, valgrind, fuzzing ---------------
 # Each covers the programs in PROGS and the harnesses in FUZZERS.

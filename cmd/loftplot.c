@@ -16,6 +16,8 @@
 #include <unistd.h>
 
 #include "loftcad.h"
+#include "internal.h"       /* vnorm: a comb of any units (issue 28) */
+#include "wasm/page.h"
 
 /* The picture's larger side, in pixels (the width and height written). */
 #define PICTURE_PX 640
@@ -70,19 +72,13 @@ struct stroke {
 };
 
 /* A label tries these many points of its record's curve. */
-#define NANCHOR 13
+#define NANCHOR LOFT_LABEL_ANCHORS
 
+/* A label: where it goes (labels.c), what it says.  One on its curve
+ * (p.oncurve) stands on a ground of the background's colour. */
 struct label {
-	int rec;
-	double at[2];           /* where the label's text begins */
-	double anchor[2];       /* its record's rightmost point */
+	struct loft_label p;
 	int numbered;           /* the text is the record's number */
-	int centred;            /* a patch's: centred on its anchor */
-	int oncurve;            /* centred on a point of its own curve,
-	                         * on a ground of the background's colour */
-	int rec_anchors;        /* how many of anc are set */
-	int leader;             /* placed far: a line ties it to anchor */
-	double anc[NANCHOR][2]; /* points of its curve, the rightmost first */
 	char *text;
 };
 
@@ -107,9 +103,11 @@ struct pic {
 	long grid;              /* a surface's parameter intervals each way */
 	int comb, handles, marks, control;
 	double comb_scale;      /* 0: automatic */
+	double comb_div;        /* teeth are scale * curvature / comb_div */
 	double comb_cap;        /* the longest tooth, in the drawing's units */
 	const char *background; /* -B, or NULL */
 	const char *label_key;
+	struct loft_page *page; /* -i: the records the page holds, or NULL */
 	/* the picture */
 	double *pt;             /* projected points, 2 numbers each */
 	size_t npt, ptcap;
@@ -128,7 +126,7 @@ struct pic {
 };
 
 static const char usage_text[] =
-    "usage: loftplot [-bcmt] [-B colour] [-C scale] [-g lines] [-K file] "
+    "usage: loftplot [-bcimt] [-B colour] [-C scale] [-g lines] [-K file] "
     "[-l key]\n            [-n steps] [-v xy|yz|xz|iso] [file ...]\n";
 
 /* Colours of records 0, 1, ... in turn; the -K knots are black. */
@@ -294,7 +292,17 @@ check_points(const struct loft_record *rec, struct loft_error *err)
 	return 0;
 }
 
-/* A point record: a polyline through its rows, and markers with -m. */
+/* A point record's closed=1 (loft(5)): its outline is closed. */
+static int
+closed_points(const struct loft_record *rec)
+{
+	const char *v = loft_attr(rec, "closed");
+
+	return v != NULL && strcmp(v, "1") == 0 && rec->nrows > 2;
+}
+
+/* A point record: a polyline through its rows, closed where the record
+ * says closed=1, and markers with -m. */
 static int
 draw_points(struct pic *pc, const struct loft_record *rec, struct extent *e,
     struct loft_error *err)
@@ -309,6 +317,13 @@ draw_points(struct pic *pc, const struct loft_record *rec, struct extent *e,
 		if (add_seen(pc, s, e, rec->num + i * rec->ncols, rec->ncols,
 		    err) != 0)
 			return (err->row = i), -1;
+	if (closed_points(rec)) {       /* back to the first point, and Z */
+		s->closed = 1;
+		if (memcmp(rec->num, rec->num + (rec->nrows - 1) * rec->ncols,
+		    rec->ncols * sizeof *rec->num) != 0 && add_seen(pc, s, e,
+		    rec->num, rec->ncols, err) != 0)
+			return -1;
+	}
 	return pc->marks ? add_marks(pc, rec, K_MARKS, pc->nrec, e, err) : 0;
 }
 
@@ -507,15 +522,13 @@ add_comb(struct pic *pc, const struct loft_curve *c, struct loft_error *err)
 				return loft_fail(err, LOFT_EGEOM, (long)i, "the "
 				    "tangent vanishes in segment %zu at u = %g: "
 				    "no curvature for the comb", i + 1, u);
-			len = 0;
-			for (int k = 0; k < c->dim; k++)
-				len += kn[k] * kn[k];
+			len = vnorm(kn, c->dim);
 			if (!isfinite(len))
 				return loft_fail(err, LOFT_EGEOM, (long)i,
 				    "curvature too large to draw in segment %zu",
 				    i + 1);
-			if (sqrt(len) > pc->kmax)
-				pc->kmax = sqrt(len);
+			if (len > pc->kmax)
+				pc->kmax = len;
 			project(pc->view, p, c->dim, q);
 			if (add_point(pc, s, q, err) != 0)
 				return -1;
@@ -743,7 +756,7 @@ label_anchors(const struct pic *pc, const struct stroke *s, struct label *l)
 	for (int k = 0; n > 0 && k < NANCHOR - 1; k++) {
 		double t = ((double)k + 0.5) * (double)n / (NANCHOR - 1);
 		size_t i = (size_t)t < n ? (size_t)t : n - 1;
-		double *q = l->anc[l->rec_anchors++];
+		double *q = l->p.anc[l->p.nanc++];
 
 		if (s->kind == K_BEZIER) {
 			bezier_at(p + 8 * i, t - (double)i, q);
@@ -771,15 +784,16 @@ add_label(struct pic *pc, const struct loft_record *rec,
 	    (pc->lb[pc->nlb].text = strdup(v)) == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	l = &pc->lb[pc->nlb++];
-	l->rec = pc->nrec;
+	memset(&l->p, 0, sizeof l->p);
+	l->p.rec = pc->nrec;
 	l->numbered = v == num;
-	l->centred = centre != NULL;
-	l->at[0] = l->anchor[0] = centre ? centre[0] : e->right[0];
-	l->at[1] = l->anchor[1] = centre ? centre[1] : e->right[1];
-	l->anc[0][0] = l->anchor[0];
-	l->anc[0][1] = l->anchor[1];
-	l->rec_anchors = 1;
-	if (!l->centred && nst < pc->nst)
+	l->p.centred = centre != NULL;
+	l->p.at[0] = l->p.anchor[0] = centre ? centre[0] : e->right[0];
+	l->p.at[1] = l->p.anchor[1] = centre ? centre[1] : e->right[1];
+	l->p.anc[0][0] = l->p.anchor[0];
+	l->p.anc[0][1] = l->p.anchor[1];
+	l->p.nanc = 1;
+	if (!l->p.centred && nst < pc->nst)
 		label_anchors(pc, &pc->st[nst], l);
 	return 0;
 }
@@ -863,6 +877,10 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_EINPUT;
 	}
 	box_join(&pc->box, &e.box);
+	if (pc->page != NULL)
+		loft_put_record(loft_record_is(rec, LOFT_KIND_KNOTS) ?
+		    &pc->page->points : surface ? &pc->page->design :
+		    &pc->page->curves, rec);
 	pc->rec[pc->nrec] = (struct drawn){ e.box, pc->kmax, rec->file,
 	    rec->line };
 	pc->kmax = fmax(kmax, pc->kmax);
@@ -892,6 +910,8 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 	}
 	box_join(&pc->box, &e.box);
 	box_join(&pc->kbox, &e.box);
+	if (pc->page != NULL)
+		loft_put_record(&pc->page->knots, rec);
 	return 0;
 }
 
@@ -911,12 +931,16 @@ tooth_tip(const struct pic *pc, const struct stroke *s, size_t j,
     double scale, double *tip)
 {
 	const double *base = pc->pt + 2 * (s->first + 2 * j), *kn = base + 2;
-	double len = scale * hypot(kn[0], kn[1]);
+	/* kn / comb_div first: an automatic scale of a drawing of 1e160 or
+	 * 1e-160 units would overflow, the curvatures relative to the
+	 * largest do not */
+	double k[2] = { kn[0] / pc->comb_div, kn[1] / pc->comb_div };
+	double len = hypot(k[0], k[1]);
 
-	if (len > pc->comb_cap)         /* cut to the cap */
-		scale *= pc->comb_cap / len;
-	tip[0] = base[0] - scale * kn[0];
-	tip[1] = base[1] - scale * kn[1];
+	if (scale * len > pc->comb_cap)         /* cut to the cap */
+		scale = pc->comb_cap / len;
+	tip[0] = base[0] - scale * k[0];
+	tip[1] = base[1] - scale * k[1];
 }
 
 /* Begin a record of the picture, of style class cls, colour and stroke
@@ -1035,114 +1059,12 @@ draw_marks(struct loft_cad_doc *d, const struct pic *pc,
 	return rc == 0 ? d->f->end_record(d) : rc;
 }
 
-/* The box label l takes with font size font: its text begins a gap to
- * the right of its point, centred on it in height. */
-static void
-label_box(const struct label *l, double font, struct box *b)
-{
-	double q[2], w = CHAR_EM * font * (double)strlen(l->text);
-
-	box_empty(b);
-	q[0] = l->centred || l->oncurve ? l->at[0] - w / 2 :
-	    l->at[0] + font / 2;
-	q[1] = l->at[1] - font / 2;
-	box_add(b, q);
-	q[0] += w;
-	q[1] += font;
-	box_add(b, q);
-}
-
-static int
-overlap(const struct box *a, const struct box *b)
-{
-	return a->lo[0] < b->hi[0] && b->lo[0] < a->hi[0] &&
-	    a->lo[1] < b->hi[1] && b->lo[1] < a->hi[1];
-}
-
-/*
- * The labels placed so far, in a grid of cells of the size of a typical
- * label (font high, the mean label wide), so that finding those a label
- * may overlap looks at its few cells, not at every label: 20,000 labels
- * took 102 s by comparing each with all the others after every move.
- * A hash of (column, row) picks a chain of the cells' entries.
- */
-struct grid {
-	double cw, ch, x0, y0;  /* cell size, origin */
-	size_t *head;           /* nbucket chains, (size_t)-1 at their end */
-	size_t nbucket;
-	struct cell { long cx, cy; size_t lb, next; } *e;
-	size_t ne, ecap;
-};
-
-static size_t
-bucket(const struct grid *g, long cx, long cy)
-{
-	unsigned long h = (unsigned long)cx * 2654435761UL ^
-	    (unsigned long)cy * 40503UL;
-
-	return (size_t)(h ^ h >> 15) & (g->nbucket - 1);
-}
-
-/* The cell range [c0, c1] of box b along k. */
-static void
-cells(const struct grid *g, const struct box *b, int k, long *c0, long *c1)
-{
-	double o = k ? g->y0 : g->x0, w = k ? g->ch : g->cw;
-
-	*c0 = (long)floor((b->lo[k] - o) / w);
-	*c1 = (long)floor((b->hi[k] - o) / w);
-}
-
-/* Add label lb, in box b, to every cell it covers; -1: out of memory. */
-static int
-grid_add(struct grid *g, const struct box *b, size_t lb)
-{
-	long x0, x1, y0, y1;
-
-	cells(g, b, 0, &x0, &x1);
-	cells(g, b, 1, &y0, &y1);
-	for (long cx = x0; cx <= x1; cx++)
-		for (long cy = y0; cy <= y1; cy++) {
-			size_t h = bucket(g, cx, cy);
-
-			if (loft_grow((void **)&g->e, &g->ecap, g->ne + 1,
-			    sizeof *g->e) != 0)
-				return -1;
-			g->e[g->ne] = (struct cell){ cx, cy, lb, g->head[h] };
-			g->head[h] = g->ne++;
-		}
-	return 0;
-}
-
-/* The first label placed (lowest index) whose box overlaps b, or
- * (size_t)-1 if none does. */
-static size_t
-grid_first(const struct grid *g, const struct box *b, const struct box *placed)
-{
-	size_t first = (size_t)-1;
-	long x0, x1, y0, y1;
-
-	cells(g, b, 0, &x0, &x1);
-	cells(g, b, 1, &y0, &y1);
-	for (long cx = x0; cx <= x1; cx++)
-		for (long cy = y0; cy <= y1; cy++)
-			for (size_t k = g->head[bucket(g, cx, cy)];
-			    k != (size_t)-1; k = g->e[k].next)
-				if (g->e[k].cx == cx && g->e[k].cy == cy &&
-				    g->e[k].lb < first &&
-				    overlap(b, &placed[g->e[k].lb]))
-					first = g->e[k].lb;
-	return first;
-}
-
-/* What the labels must keep clear of: the drawn lines, as segments (a
- * marker is a segment of no length), in a grid like the labels'. */
+/* What the labels keep clear of: the lines drawn, as segments (a
+ * marker is a segment of no length), each with its record. */
 struct obstacles {
 	double (*seg)[4];
-	int *rec;               /* each segment's record */
+	int *rec;
 	size_t n, cap, reccap;
-	size_t nlines;          /* those drawn; the leaders come after */
-	struct grid g;
 };
 
 static int
@@ -1158,6 +1080,25 @@ add_segment(struct obstacles *o, const double *a, const double *b, int rec)
 	o->seg[o->n][3] = b[1];
 	o->n++;
 	return 0;
+}
+
+/* The segments of a stroke of a line (mesh, polyline, net), closed or
+ * not, and of a marker stroke (segments of no length). */
+static int
+line_segments(const struct stroke *s, const double *p, struct obstacles *o)
+{
+	int rc = 0;
+
+	if (s->kind != K_MESH && s->kind != K_LINE && s->kind != K_NET) {
+		for (size_t j = 0; rc == 0 && j < s->n; j++)
+			rc = add_segment(o, p + 2 * j, p + 2 * j, s->rec);
+		return rc;
+	}
+	for (size_t j = 0; rc == 0 && j + 1 < s->n; j++)
+		rc = add_segment(o, p + 2 * j, p + 2 * j + 2, s->rec);
+	if (rc == 0 && s->closed && s->n > 2)
+		rc = add_segment(o, p + 2 * (s->n - 1), p, s->rec);
+	return rc;
 }
 
 /*
@@ -1199,499 +1140,75 @@ collect_segments(const struct pic *pc, double scale, struct obstacles *o)
 			for (size_t j = 0; rc == 0 && j + 1 < s->n; j += 2)
 				rc = add_segment(o, p + 2 * j, p + 2 * j + 2, s->rec);
 			break;
-		case K_MESH:
-		case K_LINE:
-		case K_NET:
-			for (size_t j = 0; rc == 0 && j + 1 < s->n; j++)
-				rc = add_segment(o, p + 2 * j, p + 2 * j + 2, s->rec);
-			if (rc == 0 && s->closed && s->n > 2)
-				rc = add_segment(o, p + 2 * (s->n - 1), p, s->rec);
-			break;
-		default:        /* markers */
-			for (size_t j = 0; rc == 0 && j < s->n; j++)
-				rc = add_segment(o, p + 2 * j, p + 2 * j, s->rec);
+		default:
+			rc = line_segments(s, p, o);
 		}
 		if (rc != 0)
 			return -1;
 	}
-	o->nlines = o->n;
-	return 0;
-}
-
-/* A segment sg is looked at in n pieces no longer than a cell of g
- * (cell_pieces), each by its box (piece_box): the cells of those boxes
- * are the cells it passes through. */
-static size_t
-cell_pieces(const struct grid *g, const double *sg)
-{
-	double len = fmax(fabs(sg[2] - sg[0]) / g->cw,
-	    fabs(sg[3] - sg[1]) / g->ch);
-
-	return len < 1 ? 1 : (size_t)ceil(len);
-}
-
-static void
-piece_box(const double *sg, size_t i, size_t n, struct box *b)
-{
-	double q[2];
-
-	box_empty(b);
-	for (int e = 0; e < 2; e++) {
-		double t = (double)(i + e) / (double)n;
-
-		q[0] = sg[0] + t * (sg[2] - sg[0]);
-		q[1] = sg[1] + t * (sg[3] - sg[1]);
-		box_add(b, q);
-	}
-}
-
-/* File segment k in every cell it passes through. */
-static int
-grid_add_segment(struct grid *g, const double *sg, size_t k)
-{
-	size_t n = cell_pieces(g, sg);
-	struct box b;
-
-	for (size_t i = 0; i < n; i++) {
-		piece_box(sg, i, n, &b);
-		if (grid_add(g, &b, k) != 0)
-			return -1;
-	}
-	return 0;
-}
-
-/* Whether the segment sg meets the box b (Liang and Barsky's clipping:
- * the part of the segment inside each slab, intersected). */
-static int
-segment_meets(const double *sg, const struct box *b)
-{
-	double t0 = 0, t1 = 1;
-
-	for (int k = 0; k < 2; k++) {
-		double a = sg[k], d = sg[2 + k] - a, lo, hi;
-
-		if (d == 0) {
-			if (a < b->lo[k] || a > b->hi[k])
-				return 0;
-			continue;
-		}
-		lo = (b->lo[k] - a) / d;
-		hi = (b->hi[k] - a) / d;
-		if (lo > hi) {
-			double t = lo;
-
-			lo = hi;
-			hi = t;
-		}
-		t0 = fmax(t0, lo);
-		t1 = fmin(t1, hi);
-		if (t0 > t1)
-			return 0;
-	}
-	return 1;
-}
-
-/* Whether a drawn segment of record rec (own) or of another record
- * (!own) meets b; any segment: rec = ANYREC, own = 0. */
-#define ANYREC (-2)
-static int
-grid_hits(const struct obstacles *o, const struct box *b, int rec, int own)
-{
-	long x0, x1, y0, y1;
-
-	cells(&o->g, b, 0, &x0, &x1);
-	cells(&o->g, b, 1, &y0, &y1);
-	for (long cx = x0; cx <= x1; cx++)
-		for (long cy = y0; cy <= y1; cy++)
-			for (size_t k = o->g.head[bucket(&o->g, cx, cy)];
-			    k != (size_t)-1; k = o->g.e[k].next)
-				if (o->g.e[k].cx == cx && o->g.e[k].cy == cy &&
-				    (o->rec[o->g.e[k].lb] == rec) == own &&
-				    segment_meets(o->seg[o->g.e[k].lb], b))
-					return 1;
-	return 0;
-}
-
-/* Where a label may move from a point of its curve, in half font
- * heights across and up, nearest first: NEAR_REACH of them each way (a
- * line and a half), near enough to read as that curve's label. */
-#define NEAR_REACH 3
-#define NSPOT ((2 * NEAR_REACH + 1) * (2 * NEAR_REACH + 1))
-/* A label tied by a leader line goes out to the right of its rightmost
- * point, up to LEADER_REACH half heights (24 lines: past a graded set's
- * other outlines) and LEADER_RISE up or down. */
-#define LEADER_REACH 48
-#define LEADER_RISE 6
-#define NLEADSPOT ((LEADER_REACH + 1) * (2 * LEADER_RISE + 1))
-
-static int
-nearer(const void *pa, const void *pb)
-{
-	const int *a = pa, *b = pb;
-	int da = a[0] * a[0] + a[1] * a[1], db = b[0] * b[0] + b[1] * b[1];
-
-	if (da != db)
-		return da < db ? -1 : 1;
-	if (a[1] != b[1])       /* below before above */
-		return a[1] < b[1] ? -1 : 1;
-	return a[0] > b[0] ? -1 : a[0] < b[0];  /* right before left */
-}
-
-static int
-grid_init(struct grid *g, double cw, double ch, const struct box *frame,
-    size_t n)
-{
-	g->cw = cw;
-	g->ch = ch;
-	g->x0 = frame->lo[0];
-	g->y0 = frame->lo[1];
-	for (g->nbucket = 64; g->nbucket < 2 * n; g->nbucket *= 2)
-		;
-	if ((g->head = malloc(g->nbucket * sizeof *g->head)) == NULL)
-		return -1;
-	for (size_t h = 0; h < g->nbucket; h++)
-		g->head[h] = (size_t)-1;
-	return 0;
-}
-
-/* The leader of label l, in box b: from its point to the nearest point
- * of b. */
-static void
-leader(const struct label *l, const struct box *b, double *sg)
-{
-	for (int k = 0; k < 2; k++) {
-		sg[k] = l->anchor[k];
-		sg[2 + k] = fmin(fmax(l->anchor[k], b->lo[k]), b->hi[k]);
-	}
-}
-
-/* Whether the segment sg crosses a placed label's box, looked for in
- * the cells it passes through. */
-static int
-crosses_label(const struct grid *g, const double *sg, const struct box *placed)
-{
-	size_t n = cell_pieces(g, sg);
-	long x0, x1, y0, y1;
-	struct box b;
-
-	for (size_t i = 0; i < n; i++) {
-		piece_box(sg, i, n, &b);
-		cells(g, &b, 0, &x0, &x1);
-		cells(g, &b, 1, &y0, &y1);
-		for (long cx = x0; cx <= x1; cx++)
-			for (long cy = y0; cy <= y1; cy++)
-				for (size_t k = g->head[bucket(g, cx, cy)];
-				    k != (size_t)-1; k = g->e[k].next)
-					if (g->e[k].cx == cx && g->e[k].cy == cy &&
-					    segment_meets(sg, &placed[g->e[k].lb]))
-						return 1;
-	}
-	return 0;
-}
-
-/* The sign of the turn a -> b -> c: 1 left, -1 right, 0 in line. */
-static int
-turn(const double *a, const double *b, const double *c)
-{
-	double t = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-
-	return (t > 0) - (t < 0);
-}
-
-/* Whether the segments s and t cross: each one's ends lie on either
- * side of the other's line (touching or in line is not crossing). */
-static int
-segments_cross(const double *s, const double *t)
-{
-	return turn(s, s + 2, t) * turn(s, s + 2, t + 2) < 0 &&
-	    turn(t, t + 2, s) * turn(t, t + 2, s + 2) < 0;
-}
-
-/* Whether the segment sg crosses a leader placed before, looked for in
- * the cells of the lines' grid it passes through: crossed leaders
- * tangle a row of labels out of the order of their curves. */
-static int
-crosses_leader(const struct obstacles *o, const double *sg)
-{
-	size_t n = cell_pieces(&o->g, sg);
-	long x0, x1, y0, y1;
-	struct box b;
-
-	for (size_t i = 0; i < n; i++) {
-		piece_box(sg, i, n, &b);
-		cells(&o->g, &b, 0, &x0, &x1);
-		cells(&o->g, &b, 1, &y0, &y1);
-		for (long cx = x0; cx <= x1; cx++)
-			for (long cy = y0; cy <= y1; cy++)
-				for (size_t k = o->g.head[bucket(&o->g, cx, cy)];
-				    k != (size_t)-1; k = o->g.e[k].next)
-					if (o->g.e[k].cx == cx &&
-					    o->g.e[k].cy == cy &&
-					    o->g.e[k].lb >= o->nlines &&
-					    segments_cross(sg, o->seg[o->g.e[k].lb]))
-						return 1;
-	}
-	return 0;
-}
-
-static void
-widen(struct box *b, const struct box *a, double by)
-{
-	*b = *a;
-	b->lo[0] -= by;
-	b->lo[1] -= by;
-	b->hi[0] += by;
-	b->hi[1] += by;
-}
-
-/*
- * Try to put label l by one of its first nanc anchors, at a spot of
- * spot[0..nspot) (nearest first): its box, widened by gap, must meet no
- * drawn line and no label placed before it; with strict 1, its own
- * record's line must come within near of it and no other record's
- * within far (twice as far), so that it reads as its own record's even
- * where the curves converge (a graded set at its heel); with strict 2,
- * no line at all within far, for a label in the open, tied to its
- * curve by a leader.  1: placed (box in *b).
- */
-static int
-try_spots(struct label *l, int nanc,
-    int (*spot)[2], int nspot, double font, int strict,
-    const struct grid *g, const struct box *placed,
-    const struct obstacles *o, struct box *b)
-{
-	/* a gap of 2 pixels; the own line within a line, others not
-	 * within two */
-	double gap = 0.15 * font, near = font, far = 2 * near, sg[4];
-	struct box w;
-
-	for (int a = 0; a < nanc; a++)
-		for (int k = 0; k < nspot; k++) {
-			l->at[0] = l->anc[a][0] + spot[k][0] * font / 2;
-			l->at[1] = l->anc[a][1] + spot[k][1] * font / 2;
-			label_box(l, font, b);
-			if (grid_first(g, b, placed) != (size_t)-1)
-				continue;
-			widen(&w, b, gap);
-			if (grid_hits(o, &w, ANYREC, 0))
-				continue;
-			if (strict == 0)
-				return 1;
-			widen(&w, b, far);
-			if (grid_hits(o, &w, strict == 1 ? l->rec : ANYREC, 0))
-				continue;
-			/* a leader must not cross an earlier label or
-			 * leader */
-			if (strict == 2 && (leader(l, b, sg),
-			    crosses_label(g, sg, placed) ||
-			    crosses_leader(o, sg)))
-				continue;
-			widen(&w, b, near);
-			if (strict == 1 && !grid_hits(o, &w, l->rec, 1))
-				continue;
-			return 1;
-		}
 	return 0;
 }
 
 /*
- * Try to put label l on its own curve, centred on one of its first nanc
- * anchors, as a contour line's height sits in a gap of its line: its
- * box, widened by a gap, must meet no other record's line and no label
- * placed before it.  Its ground hides its own line under it.  1: placed
- * (box in *b).
- */
-static int
-try_on_curve(struct label *l, int nanc, double font, const struct grid *g,
-    const struct box *placed, const struct obstacles *o, struct box *b)
-{
-	struct box w;
-
-	l->oncurve = 1;
-	for (int a = 0; a < nanc; a++) {
-		l->at[0] = l->anc[a][0];
-		l->at[1] = l->anc[a][1];
-		label_box(l, font, b);
-		widen(&w, b, 0.15 * font);
-		if (grid_first(g, b, placed) == (size_t)-1 &&
-		    !grid_hits(o, &w, l->rec, 0))
-			return 1;
-	}
-	l->oncurve = 0;
-	return 0;
-}
-
-/*
- * Place the labels, each clear of every drawn line and of the labels
- * placed before it, trying in turn: (1) spots within NEAR_REACH half
- * lines of points along its record's curve (the rightmost first) that
- * are within a line of that curve and two of no other record's; (2) on
- * its own curve, at one of those points, clear of the others' lines
- * (try_on_curve); (3) spots out to the right of its rightmost point two
- * lines clear of every line, tied to it by a leader line that crosses
- * no earlier label or leader (and that later labels keep clear of); (4)
- * the spots of (1) without their condition; (5) where all are taken,
- * its rightmost point, moved down a
- * line at a time while it overlaps a label placed before it, below the
- * first (in input order) it overlaps.  A patch's label stays at the
- * patch's middle (over its own lines), moved as in (5) only.  Each look
- * is at a few cells of two grids, the labels' and the lines', so the
- * time grows with the number of labels and segments, not with their
- * product.  Adds the labels' boxes to frame.
+ * Place the labels (loft_place_labels, labels.c) of height font, clear
+ * of the lines drawn, the comb's teeth scale times the curvature long.
+ * Adds the labels' boxes to frame.  0, or -1: out of memory.
  */
 static int
 place_labels(struct pic *pc, double font, double scale, struct box *frame)
 {
-	struct box *placed = malloc(pc->nlb * sizeof *placed);
-	struct grid g = { 0 };
 	struct obstacles o = { 0 };
-	double width = 0, cw;
-	static int spot[NSPOT][2], lead[NLEADSPOT][2];
-	int nspot = 0, nlead = 0;
-	size_t n = 0;
+	struct loft_label *p = malloc(pc->nlb * sizeof *p);
 	int rc = -1;
 
-	for (size_t i = 0; i < pc->nlb; i++) {
-		struct label *l = &pc->lb[i];
-
-		l->at[0] = l->anchor[0];
-		l->at[1] = l->anchor[1];
-		l->leader = 0;
-		l->oncurve = 0;
-		width += CHAR_EM * font * (double)strlen(l->text);
-		n++;
+	if (p != NULL && collect_segments(pc, scale, &o) == 0) {
+		for (size_t i = 0; i < pc->nlb; i++) {
+			p[i] = pc->lb[i].p;
+			p[i].width = CHAR_EM * font *
+			    (double)strlen(pc->lb[i].text);
+		}
+		rc = loft_place_labels(p, pc->nlb, o.n ? o.seg[0] : NULL,
+		    o.rec, o.n, font, frame->lo, frame->hi) != 0 ? -1 : 0;
+		for (size_t i = 0; rc == 0 && i < pc->nlb; i++)
+			pc->lb[i].p = p[i];
 	}
-	cw = fmax(font, width / (double)(n > 0 ? n : 1));
-	if (!(cw > 0 && font > 0) || !isfinite(cw)) {
-		rc = 0;
-		goto done;
-	}
-	if (placed == NULL || grid_init(&g, cw, font, frame, n) != 0 ||
-	    collect_segments(pc, scale, &o) != 0 ||
-	    grid_init(&o.g, font, font, frame, o.n) != 0)
-		goto done;
-	for (size_t k = 0; k < o.n; k++)
-		if (grid_add_segment(&o.g, o.seg[k], k) != 0)
-			goto done;
-	for (int i = -NEAR_REACH; i <= NEAR_REACH; i++)
-		for (int j = -NEAR_REACH; j <= NEAR_REACH; j++) {
-			spot[nspot][0] = i;
-			spot[nspot++][1] = j;
-		}
-	qsort(spot, NSPOT, sizeof spot[0], nearer);
-	for (int i = 0; i <= LEADER_REACH; i++)
-		for (int j = -LEADER_RISE; j <= LEADER_RISE; j++) {
-			lead[nlead][0] = i;
-			lead[nlead++][1] = j;
-		}
-	qsort(lead, NLEADSPOT, sizeof lead[0], nearer);
-	rc = 0;
-	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
-		struct label *l = &pc->lb[i];
-		size_t j;
-
-		if (l->centred || !(try_spots(l, l->rec_anchors, spot, NSPOT,
-		    font, 1, &g, placed, &o, &placed[i]) ||
-		    try_on_curve(l, l->rec_anchors, font, &g, placed, &o,
-		    &placed[i]) ||
-		    (l->leader = try_spots(l, 1, lead, NLEADSPOT, font, 2, &g,
-		    placed, &o, &placed[i])) ||
-		    try_spots(l, l->rec_anchors, spot, NSPOT, font, 0, &g,
-		    placed, &o, &placed[i]))) {
-			l->at[0] = l->anchor[0];
-			l->at[1] = l->anchor[1];
-			label_box(l, font, &placed[i]);
-			while ((j = grid_first(&g, &placed[i], placed)) !=
-			    (size_t)-1) {
-				l->at[1] = placed[j].lo[1] - 0.6 * font;
-				label_box(l, font, &placed[i]);
-			}
-		}
-		box_join(frame, &placed[i]);
-		rc = grid_add(&g, &placed[i], i);
-		/* later labels keep clear of its leader too */
-		if (rc == 0 && l->leader) {
-			double sg[4];
-
-			leader(l, &placed[i], sg);
-			rc = add_segment(&o, sg, sg + 2, l->rec);
-			if (rc == 0)
-				rc = grid_add_segment(&o.g, o.seg[o.n - 1],
-				    o.n - 1);
-		}
-	}
-done:
-	free(g.head);
-	free(g.e);
-	free(o.g.head);
-	free(o.g.e);
 	free(o.seg);
 	free(o.rec);
-	free(placed);
+	free(p);
 	return rc;
 }
 
-/*
- * Write the whole picture into d (loftplot's SVG picture, svgplot.c),
- * made anew: the picture in d->out.  0, or LOFT_EGEOM (it cannot be
- * framed) or LOFT_ENOMEM with err filled.  d is the caller's, zeroed or
- * made by write_svg before, to be freed with loft_cad_free.
- */
-static int
-write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
+/* The comb's scale, from the extent b of the curves (-C's, or teeth
+ * COMB_LENGTH of it at the largest curvature), and its teeth's tips
+ * added to b. */
+static double
+comb_scale(struct pic *pc, struct box *b)
 {
-	const struct loft_cad_opts o = { .picture_px = PICTURE_PX,
-	    .background = pc->background };
-	struct loft_cad_item it;
-	struct box b = pc->box;
-	double *vb, w, h, big, margin, scale = pc->comb_scale, font = 0, tip[2],
-	    kmax = pc->kmax;
-	int rc;
+	double big = fmax(b->hi[0] - b->lo[0], b->hi[1] - b->lo[1]), tip[2],
+	    scale = pc->comb_scale;
 
-	/* the comb's scale, from the curves' extent, and its teeth's tips */
-	big = fmax(b.hi[0] - b.lo[0], b.hi[1] - b.lo[1]);
-	if (scale == 0 && kmax > 0)
-		scale = COMB_LENGTH * big / kmax;
+	pc->comb_div = 1;
+	if (scale == 0 && pc->kmax > 0) {
+		scale = COMB_LENGTH * big;
+		pc->comb_div = pc->kmax;
+	}
 	pc->comb_cap = COMB_CAP * big;
 	for (size_t i = 0; i < pc->nst; i++)
 		for (size_t j = 0; pc->st[i].kind == K_COMB &&
 		    j < pc->st[i].n / 2; j++) {
 			tooth_tip(pc, &pc->st[i], j, scale, tip);
-			box_add(&b, tip);
+			box_add(b, tip);
 		}
-	/* the frame: the drawing, a margin, and room for the labels */
-	w = b.hi[0] - b.lo[0];
-	h = b.hi[1] - b.lo[1];
-	if (!isfinite(w) || !isfinite(h))
-		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
-		    "to frame");
-	big = fmax(w, h);
-	if (big == 0)   /* one point: a frame of unit size around it */
-		big = fmax(1, fmax(fabs(b.lo[0]), fabs(b.lo[1])));
-	margin = MARGIN * big;
-	if (pc->nlb > 0) {
-		font = LOFT_PLOT_FONT_PX * (big + 2 * margin) / PICTURE_PX;
-		if (place_labels(pc, font, scale, &b) != 0)
-			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	}
-	loft_cad_free(d);
-	loft_cad_init(d, &loft_cad_svgplot, &o);
-	vb = d->o.frame;
-	vb[0] = b.lo[0] - margin;
-	vb[1] = -(b.hi[1] + margin);
-	vb[2] = b.hi[0] - b.lo[0] + 2 * margin;
-	vb[3] = b.hi[1] - b.lo[1] + 2 * margin;
-	big = fmax(vb[2], vb[3]);
-	/* the corner too: a drawing near the largest double has its margin
-	 * beyond it */
-	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
-	    !isfinite(vb[1]))
-		return loft_fail(err, LOFT_EGEOM, -1, "the drawing is too large "
-		    "to frame");
-	if ((rc = d->f->begin(d)) != 0)
-		goto done;
-	/* curves and polylines in one pass, in the order of their records,
-	 * so that a later record lies on an earlier one, drawn thinner */
+	return scale;
+}
+
+/* Curves and polylines in one pass, in the order of their records, so
+ * that a later record lies on an earlier one, drawn thinner. */
+static int
+draw_strokes(struct loft_cad_doc *d, const struct pic *pc, double scale)
+{
+	int rc = 0;
+
 	for (int kind = 0; kind < NKIND && rc == 0; kind++)
 		for (size_t i = 0; i < pc->nst && rc == 0; i++) {
 			const struct stroke *s = &pc->st[i];
@@ -1709,34 +1226,41 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 			default: rc = draw_marks(d, pc, s); break;
 			}
 		}
+	return rc;
+}
+
+/* The labels placed, of height font: leaders, the grounds of those on
+ * their curves (of the background's colour, hiding the line under
+ * them), then the texts. */
+static int
+draw_labels(struct loft_cad_doc *d, const struct pic *pc, double font)
+{
+	struct loft_cad_item it;
+	int rc = 0;
+
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
-		const struct label *l = &pc->lb[i];
-		struct box lb;
+		const struct loft_label *l = &pc->lb[i].p;
 		double sg[4];
 
 		if (!l->leader)
 			continue;
-		label_box(l, font, &lb);
-		leader(l, &lb, sg);
+		loft_label_leader(l, sg);
 		if ((rc = begin(d, &it, "leader", colour(l->rec), THIN_PX)) ==
 		    0 && (rc = d->f->polyline(d, sg, 2, 2, 0)) == 0)
 			rc = d->f->end_record(d);
 	}
-	/* a label on its curve: a ground of the background's colour, its
-	 * box, hides its line under it */
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
-		struct box lb;
+		const struct loft_label *l = &pc->lb[i].p;
 
-		if (!pc->lb[i].oncurve)
+		if (!l->oncurve)
 			continue;
-		label_box(&pc->lb[i], font, &lb);
 		if ((rc = begin(d, &it, "label-ground", pc->background ?
 		    pc->background : "#fff", 0)) == 0 &&
-		    (rc = d->f->box(d, lb.lo, lb.hi)) == 0)
+		    (rc = d->f->box(d, l->lo, l->hi)) == 0)
 			rc = d->f->end_record(d);
 	}
 	for (size_t i = 0; i < pc->nlb && rc == 0; i++) {
-		const struct label *l = &pc->lb[i];
+		const struct loft_label *l = &pc->lb[i].p;
 		double q[2] = { l->at[0] + font / 2, l->at[1] - 0.35 * font };
 		int middle = l->centred || l->oncurve;
 
@@ -1748,12 +1272,71 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 		}
 		if ((rc = begin(d, &it, l->oncurve ? "label on-curve" :
 		    "label", colour(l->rec), 0)) == 0 &&
-		    (rc = d->f->label(d, q, font, middle, l->text)) == 0)
+		    (rc = d->f->label(d, q, font, middle, pc->lb[i].text)) == 0)
 			rc = d->f->end_record(d);
 	}
-	if (rc == 0)
+	return rc;
+}
+
+/*
+ * The picture's frame (the viewBox of d), from the drawing's extent b:
+ * a margin, and room for the labels, placed here; their height in
+ * *font.  0, or LOFT_EGEOM (too large to frame) or LOFT_ENOMEM.
+ */
+static int
+frame(struct loft_cad_doc *d, struct pic *pc, struct box *b, double scale,
+    double *font)
+{
+	const struct loft_cad_opts o = { .picture_px = PICTURE_PX,
+	    .background = pc->background };
+	double w = b->hi[0] - b->lo[0], h = b->hi[1] - b->lo[1], big, margin,
+	    *vb;
+
+	if (!isfinite(w) || !isfinite(h))
+		return LOFT_EGEOM;
+	big = fmax(w, h);
+	if (big == 0)   /* one point: a frame of unit size around it */
+		big = fmax(1, fmax(fabs(b->lo[0]), fabs(b->lo[1])));
+	margin = MARGIN * big;
+	*font = 0;
+	if (pc->nlb > 0) {
+		*font = LOFT_PLOT_FONT_PX * (big + 2 * margin) / PICTURE_PX;
+		if (place_labels(pc, *font, scale, b) != 0)
+			return LOFT_ENOMEM;
+	}
+	loft_cad_free(d);
+	loft_cad_init(d, &loft_cad_svgplot, &o);
+	vb = d->o.frame;
+	vb[0] = b->lo[0] - margin;
+	vb[1] = -(b->hi[1] + margin);
+	vb[2] = b->hi[0] - b->lo[0] + 2 * margin;
+	vb[3] = b->hi[1] - b->lo[1] + 2 * margin;
+	big = fmax(vb[2], vb[3]);
+	/* the corner too: a drawing near the largest double has its margin
+	 * beyond it */
+	if (!isfinite(big) || !(big > 0) || !isfinite(vb[0]) ||
+	    !isfinite(vb[1]))
+		return LOFT_EGEOM;
+	return 0;
+}
+
+/*
+ * Write the whole picture into d (loftplot's SVG picture, svgplot.c),
+ * made anew: the picture in d->out.  0, or LOFT_EGEOM (it cannot be
+ * framed) or LOFT_ENOMEM with err filled.  d is the caller's, zeroed or
+ * made by write_svg before, to be freed with loft_cad_free.
+ */
+static int
+write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
+{
+	struct box b = pc->box;
+	double scale = comb_scale(pc, &b), font;
+	int rc = frame(d, pc, &b, scale, &font);
+
+	if (rc == 0 && (rc = d->f->begin(d)) == 0 &&
+	    (rc = draw_strokes(d, pc, scale)) == 0 &&
+	    (rc = draw_labels(d, pc, font)) == 0)
 		rc = d->f->end(d);
-done:
 	if (rc == LOFT_ENOMEM || d->out.bad == LOFT_ENOMEM)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc != 0 || d->out.bad != 0)
@@ -1811,13 +1394,13 @@ take_out_farthest(struct pic *pc)
 	for (size_t i = 0; i < pc->nlb; i++) {
 		struct label *l = &pc->lb[i];
 
-		if (l->rec == far) {
+		if (l->p.rec == far) {
 			free(l->text);
 			continue;
 		}
-		if (l->rec > far && l->numbered)        /* fewer digits */
-			snprintf(l->text, strlen(l->text) + 1, "%d", l->rec);
-		l->rec -= l->rec > far;
+		if (l->p.rec > far && l->numbered)      /* fewer digits */
+			snprintf(l->text, strlen(l->text) + 1, "%d", l->p.rec);
+		l->p.rec -= l->p.rec > far;
 		pc->lb[k++] = *l;
 	}
 	pc->nlb = k;
@@ -1847,6 +1430,54 @@ colour_ok(const char *s)
 }
 
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
+/* -i: option c (with arg, when it takes one) for the page's picture
+ * too, but for those the page sets itself (-v, -c) or has no use for
+ * (-i, -K). */
+static void
+page_option(struct loft_page *pg, int c, const char *arg)
+{
+	static const char *const opts[] = { "-b", "-m", "-t", "-B", "-C",
+	    "-g", "-l", "-n" };
+	static const char letters[] = "bmtBCgln";
+	const char *f = strchr(letters, c);
+
+	if (c == 0 || f == NULL || pg->nargs + 2 >= (int)(sizeof pg->args /
+	    sizeof pg->args[0]))
+		return;
+	pg->args[pg->nargs++] = opts[f - letters];
+	if (f - letters >= 3)           /* -B -C -g -l -n take an argument */
+		pg->args[pg->nargs++] = arg;
+}
+
+/* -i: the page of the records kept (lib/wasm/pageout.c); exit status 1
+ * when a record was bad or no module was built, as the page says. */
+static int
+write_page(struct loft_run *run, struct pic *pc, const char *view)
+{
+	struct loft_page *pg = pc->page;
+	int status = run->status;
+
+	pg->view = view;
+	pg->comb = pc->comb;
+	if (pc->nst == 0) {
+		fputs("loftplot: nothing to draw\n", stderr);
+		status = 1;
+	} else if (loft_page_wasm_bytes == 0) {
+		fputs("loftplot: -i: the page's WebAssembly module was not "
+		    "built: install clang, lld, wasi-libc and "
+		    "libclang-rt-14-dev-wasm32, then make again\n", stderr);
+		status = 1;
+	} else if (loft_page_write(stdout, pg) != 0) {
+		fputs("loftplot: cannot write the page\n", stderr);
+		status = 1;
+	}
+	loft_writer_free(&pg->knots);
+	loft_writer_free(&pg->curves);
+	loft_writer_free(&pg->points);
+	loft_writer_free(&pg->design);
+	return status;
+}
+
 int
 main(int argc, char *argv[])
 {
@@ -1855,12 +1486,13 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "loftplot", .out = stdout, .msg = stderr,
 	    .handle = keep_record, .ctx = &pc };
 	struct loft_cad_doc d = { 0 };
+	struct loft_page page = { 0 };
 	struct loft_error err;
 	char *knots = NULL;
 	int c, rc = 0, word, status;
 
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "bcmtB:C:g:K:l:n:v:h")) != -1) {
+	while ((c = getopt(argc, argv, "bcimtB:C:g:K:l:n:v:h")) != -1) {
 		switch (c) {
 		case 'b': pc.control = 1; break;
 		case 'B': pc.background = optarg;
@@ -1870,6 +1502,7 @@ main(int argc, char *argv[])
 				optarg);
 		    break;
 		case 'c': pc.comb = 1; break;
+		case 'i': pc.page = &page; break;
 		case 'm': pc.marks = 1; break;
 		case 't': pc.handles = 1; break;
 		case 'C': rc = loft_parse_real(optarg, 1e-300, 1e300,
@@ -1887,6 +1520,7 @@ main(int argc, char *argv[])
 		}
 		if (rc != 0)
 			loft_usage_error(usage_text, c, err.msg);
+		page_option(&page, c, optarg);
 	}
 	box_empty(&pc.box);
 	box_empty(&pc.kbox);
@@ -1896,7 +1530,9 @@ main(int argc, char *argv[])
 		run.handle = keep_record;
 	}
 	loft_run_files(&run, argc - optind, argv + optind);
-	if (pc.nst == 0) {
+	if (pc.page != NULL)
+		status = write_page(&run, &pc, views[pc.view]);
+	else if (pc.nst == 0) {
 		fputs("loftplot: nothing to draw\n", stderr);
 		status = 1;
 	} else if ((rc = write_svg(&d, &pc, &err)) != 0) {

@@ -1397,4 +1397,105 @@ int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
 
 void loft_cut_free(struct loft_cut *c);
 
+/* ------------------------------------------------------------------ */
+/* A grid of the plane, for what lies near a box or a segment (grid.c) */
+/* ------------------------------------------------------------------ */
+
+/*
+ * Items (boxes, or segments by the cells they pass through), each filed
+ * under every cell of a uniform grid it covers; a query looks at the
+ * cells of its box, so its time grows with what is near, not with all.
+ * Segments are x0 y0 x1 y1; boxes lo[2], hi[2].  Start with
+ * loft_grid_init, end with loft_grid_free.
+ */
+struct loft_grid {
+	double cw, ch, x0, y0;  /* a cell's size, and the origin of cells */
+	size_t *head;           /* nbucket chains, (size_t)-1 at their end */
+	size_t nbucket;
+	struct loft_grid_entry {
+		long cx, cy;    /* the cell */
+		size_t id;      /* the item's, given when it was added */
+		size_t next;
+	} *e;
+	size_t ne, ecap;
+};
+
+/* An empty grid of cells cw by ch (> 0) from origin[0..1], sized for
+ * about n entries.  Returns 0, or LOFT_ENOMEM. */
+int loft_grid_init(struct loft_grid *g, double cw, double ch,
+    const double *origin, size_t n);
+void loft_grid_free(struct loft_grid *g);
+
+/* File item id by the box lo..hi, or by the segment sg.  Returns 0, or
+ * LOFT_ENOMEM (the grid holds part of the item). */
+int loft_grid_add(struct loft_grid *g, const double *lo, const double *hi,
+    size_t id);
+int loft_grid_add_segment(struct loft_grid *g, const double *sg, size_t id);
+
+/* Call visit(ctx, id) for each entry in the cells of the box lo..hi (an
+ * item covering several of them comes once for each), or in the cells
+ * the segment sg passes through, until visit returns nonzero; returns
+ * that, or 0. */
+int loft_grid_each(const struct loft_grid *g, const double *lo,
+    const double *hi, int (*visit)(void *ctx, size_t id), void *ctx);
+int loft_grid_each_along(const struct loft_grid *g, const double *sg,
+    int (*visit)(void *ctx, size_t id), void *ctx);
+
+/* Whether the segments s and t cross: each one's ends lie strictly on
+ * either side of the other's line (touching or in line is not). */
+int loft_segments_cross(const double *s, const double *t);
+
+/* Whether the segment sg meets the closed box lo..hi. */
+int loft_segment_meets_box(const double *sg, const double *lo,
+    const double *hi);
+
+/* ------------------------------------------------------------------ */
+/* Labels of a picture, clear of its lines and each other (labels.c)  */
+/* ------------------------------------------------------------------ */
+
+/* A label tries these many points of its record's curve. */
+#define LOFT_LABEL_ANCHORS 13
+
+struct loft_label {
+	/* the caller's */
+	int rec;                /* the record it names, as its lines' */
+	double width;           /* its text's, in the drawing's units */
+	double anchor[2];       /* its record's rightmost point */
+	double anc[LOFT_LABEL_ANCHORS][2];      /* points of its curve, the
+	                                         * rightmost first */
+	int nanc;               /* how many of anc are set, 1 at least */
+	int centred;            /* a patch's: centred on anchor */
+	/* loft_place_labels' */
+	double at[2];           /* where its text begins; its centre when
+	                         * centred or oncurve */
+	int oncurve;            /* centred on a point of its own curve */
+	int leader;             /* placed far: a line ties it to anchor */
+	double lo[2], hi[2];    /* its box */
+};
+
+/*
+ * Place the n labels lb, each clear of every line and of the labels
+ * placed before it, a font high, trying in turn: (1) spots within a
+ * line and a half of points along its record's curve that are within a
+ * line of that curve and two of no other record's; (2) on its own
+ * curve, clear of the others' lines; (3) spots out to the right of its
+ * rightmost point two lines clear of every line, tied to it by a leader
+ * that crosses no earlier label or leader (and that later labels keep
+ * clear of); (4) the spots of (1) without their condition; (5) its
+ * rightmost point, moved down a line at a time below the first label
+ * placed before it that it overlaps.  A centred label (a patch's)
+ * stays at its anchor, moved as in (5) only.  The lines are the nseg
+ * segments seg (4 numbers each), segrec[k] the record of segment k.
+ * The labels' boxes are added to the box lo..hi, whose lo is the
+ * origin of the grids.  Returns 0, or LOFT_ENOMEM.
+ */
+int loft_place_labels(struct loft_label *lb, size_t n, const double *seg,
+    const int *segrec, size_t nseg, double font, double *lo, double *hi);
+
+/* The box of label l of height font; the leader of a placed label, from
+ * its anchor to the nearest point of its box, into sg (4 numbers). */
+void loft_label_box(const struct loft_label *l, double font, double *lo,
+    double *hi);
+void loft_label_leader(const struct loft_label *l, double *sg);
+
 #endif

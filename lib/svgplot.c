@@ -11,6 +11,7 @@
  * Program layer (loftcad.h, on loftprog.h): a format.
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,6 +62,63 @@ struct plot {
 	int open;               /* its path element is begun */
 };
 
+/* Powers of ten exact in a double, for fixed_fast. */
+#define EXACT_POW10 22
+
+/*
+ * What put_fixed writes of x, into buf (at least 40 bytes), as printf's
+ * "%.*f" would write it and then cut: the whole number nearest x times
+ * 10^decimals, with the point put back, when that product is below
+ * 2^52 and not within its own rounding error of a tie (then the nearest
+ * whole number is printf's too).  Returns the length, or 0 where printf
+ * must decide.  A picture's coordinates take millions of conversions,
+ * and printf's exact one is slow (in WebAssembly, through a software
+ * long double, it was most of the time of a drag with the comb).
+ */
+static int
+fixed_fast(char *buf, double x, int decimals)
+{
+	static const double p10[EXACT_POW10 + 1] = { 1e0, 1e1, 1e2, 1e3, 1e4,
+	    1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+	    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22 };
+	double y, r, f;
+	char dig[24];
+	int n = 0, k = 0;
+	uint64_t v;
+
+	if (decimals < 0 || decimals > EXACT_POW10)
+		return 0;
+	y = fabs(x) * p10[decimals];
+	if (!(y < 0x1p52))
+		return 0;
+	r = floor(y);
+	f = y - r;
+	/* y's error is at most half an ulp of y, and |f - 1/2| must exceed
+	 * it with room: 2^-50 of y */
+	if (fabs(f - 0.5) <= 0x1p-50 * y + 0x1p-60)
+		return 0;
+	v = (uint64_t)r + (f > 0.5);
+	if (x < 0 && v > 0)
+		buf[n++] = '-';
+	do
+		dig[k++] = (char)('0' + v % 10);
+	while ((v /= 10) > 0);
+	while (k <= decimals)                   /* a leading 0 */
+		dig[k++] = '0';
+	/* dig[] holds the digits backwards: cut trailing zeros first */
+	int lo = 0;
+	while (lo < decimals && dig[lo] == '0')
+		lo++;
+	for (int i = k - 1; i >= decimals; i--)
+		buf[n++] = dig[i];
+	if (lo < decimals) {
+		buf[n++] = '.';
+		for (int i = decimals - 1; i >= lo; i--)
+			buf[n++] = dig[i];
+	}
+	return n;
+}
+
 /* x to p->decimals places, without trailing zeros or "-0". */
 static void
 put_fixed(struct loft_cad_doc *d, double x)
@@ -71,6 +129,10 @@ put_fixed(struct loft_cad_doc *d, double x)
 
 	if (!isfinite(x)) {
 		d->out.bad = LOFT_EGEOM;
+		return;
+	}
+	if ((n = fixed_fast(buf, x, p->decimals)) > 0) {
+		loft_cad_put(d, buf, (size_t)n);
 		return;
 	}
 	n = snprintf(buf, sizeof buf, "%.*f", p->decimals, x);

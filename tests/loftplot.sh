@@ -892,5 +892,82 @@ awk -f tests/svgcmp.awk "$f" "$T/digit.svg" >/dev/null && ok ||
 [ "$n" -ge 42 ] && [ "$(ls "$T/figures/"*.svg | wc -l)" -eq "$n" ] && ok ||
     no "$n figures committed, $(ls "$T/figures/"*.svg | wc -l) made"
 
+# ---- issue 28: the comb of a curve in any units ---------------------------
+# The insole drawn with -c at 1e160 and 1e-160 is the picture at unit
+# scale with every number times the scale: the comb's points divided by
+# it agree with the unit picture's within 0.05 mm, a tenth of a pixel of
+# its 640 (the digits written of a number of 1e160 are fewer; a comb scaled
+# through squares of 1e-320 or 1e320 was refused, or lost).
+combs() {
+	awk -v s="$1" '/^[0-9-]/ { print $1 * s, $2 * s; next } { print }' \
+	    man/figures/insole.knots | "$B/splinefit" | "$B/loftplot" -c |
+	    awk -v s="$1" '/class="comb"/ { sub(/.* d="/, ""); sub(/".*/, "")
+		gsub(/[ML]/, " "); n = split($0, v, " ")
+		for (i = 1; i <= n; i++) printf "%.4f\n", v[i] / s }'
+}
+combs 1 >"$T/comb1"
+for sc in 1e160 1e-160; do
+	combs "$sc" >"$T/comb$sc"
+	[ "$(wc -l <"$T/comb1")" -gt 100 ] &&
+	    awk 'NR == FNR { a[FNR] = $1; next }
+		{ d = $1 - a[FNR]; if (d < 0) d = -d; if (d > 0.05) bad = 1 }
+		END { exit bad || NR != 2 * FNR }' "$T/comb1" "$T/comb$sc" &&
+	    ok || no "loftplot -c at scale $sc is not the unit comb scaled"
+done
+
+# ---- issue 24: a point record's closed=1 closes its polyline --------------
+d=$(printf 'points closed=1\n0 0\n1 0\n1 1\n' | "$B/loftplot" |
+    sed -n 's/.*class="curve".* d="\([^"]*\)".*/\1/p')
+[ "$d" = "M0 0 L1 0 L1 -1 L0 0 Z" ] && ok ||
+    no "points closed=1: path '$d', want back to the first point and Z"
+d=$(printf 'points closed=0\n0 0\n1 0\n1 1\n' | "$B/loftplot" |
+    sed -n 's/.*class="curve".* d="\([^"]*\)".*/\1/p')
+[ "$d" = "M0 0 L1 0 L1 -1" ] && ok || no "points closed=0: path '$d'"
+
+# ---- issue 28: labels in linear time ----------------------------------------
+# 5,000 labelled records drawn over each other: the labels of the pile
+# each stand apart (no two texts at one point) and the run ends, where
+# looking at every label before each took minutes (a timeout a hundred
+# times above its time here, not a timed test: a load cannot reach it).
+awk 'BEGIN { for (r = 1; r <= 5000; r++)
+	printf "points id=%d\n0 0\n5 0\n5 5\n\n", r }' >"$T/pile"
+TO=
+command -v timeout >/dev/null 2>&1 && TO="timeout 100"
+if $TO "$B/loftplot" -l id "$T/pile" >"$T/pile.svg" 2>"$T/err"; then
+	n=$(grep -c 'class="label' "$T/pile.svg")
+	d=$(sed -n 's/.*class="label.*translate(\([^)]*\)).*/\1/p' \
+	    "$T/pile.svg" | sort -u | wc -l)
+	[ "$n" -eq 5000 ] && [ "$d" -eq 5000 ] && ok ||
+	    no "a pile of 5000 labelled records: $n labels at $d places"
+else
+	no "a pile of 5000 labelled records: exit $?: $(head -2 "$T/err")"
+fi
+
+# ---- issue 27: loftplot -i writes the page (the browser drives it in
+# tests/browser); here, what the file holds, without a browser
+if [ -s bin/wasm/loft.wasm ]; then
+	printf 'points name=</script><b>x\n0 0\n1 0\n1 1\n0 1\n' >"$T/k"
+	printf 'points\n0 0\nfoo\n\ncubic\n1 2 3\n' >"$T/bad"
+	"$B/splinefit" "$T/k" | "$B/loftplot" -i -K "$T/k" - "$T/bad" \
+	    >"$T/page.html" 2>"$T/err"
+	rc=$?
+	[ "$rc" -eq 1 ] && grep -q 'bad:' "$T/err" && ok ||
+	    no "loftplot -i with bad records: exit $rc, want 1; $(cat "$T/err")"
+	n=$(grep -c '</script>' "$T/page.html")
+	[ "$n" -eq 2 ] && grep -q '^<!DOCTYPE html>' "$T/page.html" &&
+	    [ "$(tail -n 1 "$T/page.html")" = '</html>' ] && ok ||
+	    no "loftplot -i: $n </script> in the page, want 2 (data, code)"
+	grep -q 'name=\\u003c/script>\\u003cb>x' "$T/page.html" && ok ||
+	    no "loftplot -i: the record's < not escaped in the page's data"
+	# the module is all there: its base64 decodes to the file's bytes
+	sed -n 's/^"module": "\([^"]*\)"}$/\1/p' "$T/page.html" >"$T/b64"
+	if command -v base64 >/dev/null 2>&1; then
+		base64 -d "$T/b64" | cmp -s - bin/wasm/loft.wasm && ok ||
+		    no "loftplot -i: the page's module is not bin/wasm/loft.wasm"
+	fi
+else
+	echo "skip: loftplot -i's page (no WebAssembly module)"
+fi
+
 echo "loftplot: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

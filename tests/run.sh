@@ -41,6 +41,7 @@ suite sh tests/bezapprox.sh
 slow bin/test/numtest
 suite bin/test/pow10gen -c lib/pow10.h
 slow sh tests/loftplot.sh
+slow sh tests/browser/run.sh
 suite sh tests/grade.sh
 slow sh tests/offset.sh
 suite bin/test/cad
@@ -52,6 +53,7 @@ slow sh tests/bad.sh
 suite bin/test/hostile
 slow sh tests/oom.sh
 suite bin/test/arclen
+suite bin/test/grid
 slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh
