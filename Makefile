@@ -26,6 +26,7 @@ LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/dxfread.o bin/obj/svgread.o bin/obj/csvread.o
 LIBOBJ += bin/obj/error.o bin/obj/grow.o bin/obj/record.o \
           bin/obj/knots.o bin/obj/design.o bin/obj/types.o
+LIBOBJ += bin/obj/bspline.o
 LIBOBJ += $(CADOBJ)
 # the program layer (loftprog.h; the CAD writers in CADOBJ are on it
 # too); every other module is the core and includes only loft.h
@@ -43,7 +44,7 @@ BINS    = $(PROGS:%=bin/%)
 TESTS   = bin/test/unit bin/test/paper bin/test/patch bin/test/bezier \
           bin/test/numtest bin/test/pow10gen bin/test/offsetref \
           bin/test/hostile bin/test/oom.so bin/test/arclen \
-          bin/test/cad
+          bin/test/cad bin/test/bspline
 BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
           bin/bench/numbers
 BENCH  += bin/test/noisy
