@@ -34,6 +34,8 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
           bin/obj/design.o $(CADINOBJ) $(CADOBJ)
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
+CADINOBJ += bin/obj/bsplineread.o bin/obj/stepread.o bin/obj/igesread.o
+LIBOBJ  += bin/obj/bsplineread.o bin/obj/stepread.o bin/obj/igesread.o
 LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \

@@ -12,7 +12,8 @@
 
 #include "cadread.h"
 
-const char *const loft_cadin_format_name[] = { "dxf", "svg", "csv", NULL };
+const char *const loft_cadin_format_name[] = { "dxf", "svg", "csv", "step",
+    "iges", NULL };
 
 int
 loft__word_is(const char *s, size_t n, const char *word)
@@ -75,6 +76,10 @@ loft_cadin_sniff(const char *buf, size_t len)
 		i++;
 	if (i == len)
 		return -1;
+	if (len - i >= 12 && memcmp(buf + i, "ISO-10303-21", 12) == 0)
+		return LOFT_CADIN_STEP;
+	if (loft__iges_sniff(buf, len))
+		return LOFT_CADIN_IGES;
 	if (buf[i] == '<')
 		return LOFT_CADIN_SVG;
 	/* DXF: a group code (a whole number) on its own line, then a value */
@@ -114,6 +119,8 @@ loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *c)
 	case LOFT_CADIN_DXF: return loft_dxf_read(buf, len, c);
 	case LOFT_CADIN_SVG: return loft_svg_read(buf, len, c);
 	case LOFT_CADIN_CSV: return loft_csv_read(buf, len, c);
+	case LOFT_CADIN_STEP: return loft_step_read(buf, len, c);
+	case LOFT_CADIN_IGES: return loft_iges_read(buf, len, c);
 	}
 	loft__cadin_say(c, 0, "unknown format");
 	return LOFT_EINPUT;

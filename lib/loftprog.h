@@ -254,7 +254,8 @@ void loft_outfiles_free(struct loft_outfiles *s);
 /* svgread.c, csvread.c)                                               */
 
 /* The formats, by the names of fromcad -f. */
-enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV };
+enum loft_cadin_format { LOFT_CADIN_DXF, LOFT_CADIN_SVG, LOFT_CADIN_CSV,
+	LOFT_CADIN_STEP, LOFT_CADIN_IGES };
 extern const char *const loft_cadin_format_name[];       /* NULL-ended */
 
 /*
@@ -304,5 +305,7 @@ int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *
 int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_step_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_iges_read(const char *buf, size_t len, struct loft_cadin *c);
 
 #endif

@@ -1,0 +1,183 @@
+#!/bin/sh
+# stepiges.sh: fromcad's STEP and IGES readers, and tocad's STEP as a
+# sewn shell.  References: the records tocad was given (a round trip
+# comes back to rounding, by sampling both at the same parameters);
+# closed forms for conics written by hand; OpenCASCADE (python3-gmsh)
+# for files it writes, its own evaluation of its surfaces, and its
+# reading of tocad's shells (edges, faces, volumes).  What needs gmsh
+# skips with one line when it is missing.
+# The last line is "stepiges: N passed, M failed".
+
+T=bin/test/stepiges
+. tests/lib.sh
+
+# a python that has module $1, or nothing
+python_with() {
+	for p in /usr/bin/python3 python3; do
+		if command -v "$p" >/dev/null 2>&1 && "$p" -c "import $1" \
+		    2>/dev/null; then
+			echo "$p"
+			return
+		fi
+	done
+}
+OCCPY=$(python_with gmsh)
+
+# within WHAT LIMIT: $T/val holds the worst error; at most LIMIT
+within() {
+	read -r e <"$T/val"
+	awk -v e="$e" -v l="$2" 'BEGIN { exit !(e ~ /^[0-9.]+([eE][-+]?[0-9]+)?$/ &&
+	    e + 0 <= l + 0) }' &&
+	    ok || no "$1: error '$e', want at most $2"
+}
+
+# same A B: the largest difference between the rows of numbers of A and
+# B (sample's output), a row equal to the one before dropped (where a
+# curve of one record comes back as pieces, their joints are twice),
+# over the largest coordinate; "count" when the rows do not pair up
+same() {
+	awk '
+	function keep(f, i,    s, k, n) { s = $0; n = NF
+		if (n == 0) return
+		if (s == last[f]) return
+		last[f] = s; R[f, ++N[f]] = s; W[f, N[f]] = n }
+	FNR == 1 { f++ }
+	{ keep(f) }
+	END { if (N[1] != N[2] || N[1] == 0) { print "count " N[1] " " N[2]; exit }
+		for (i = 1; i <= N[1]; i++) {
+			n = split(R[1, i], a, " "); split(R[2, i], b, " ")
+			for (k = 1; k <= n; k++) { d = a[k] - b[k]; if (d < 0) d = -d
+				if (d > w) w = d; m = a[k] < 0 ? -a[k] : a[k]; if (m > big) big = m } }
+		print (big > 0 ? w / big : w) }' "$1" "$2"
+}
+
+# ---- the inputs -----------------------------------------------------------
+
+$B/splinefit man/figures/insole.knots >"$T/ins.cubic"
+printf '0 0 0\n10 5 2\n20 0 4\n30 -5 3\n' | $B/splinefit -o >"$T/space.cubic"
+printf 'quartic id=7\n0 0 10 0 0 12 0 -12 5 4\n10 0 20 4 0 -12 3 2 1 1\n' \
+    >"$T/q.quartic"
+printf 'bezier\n0 0 1\n2 6 0\n5 -4 2\n7 8 1\n9 -3 0\n12 1 3\n' >"$T/b5.bezier"
+$B/patchnew -c 0,0,0 -c 10,0,0 -c 0,10,0 -c 10,10,5 | $B/patchsplit -u 0.5 |
+    $B/patchdrag -i 2 -u 0.5 -v 0.5 -b 0,0,3 >"$T/hull.patch"
+printf 'bezier-surface m=2 n=1\n0 0 0\n0 4 1\n2 0 3\n2 4 -1\n5 1 0\n5 5 2\n' \
+    >"$T/bs.surf"
+
+# ---- round trips: tocad's STEP and IGES come back to rounding -------------
+
+for fmt in step iges; do
+	for r in ins.cubic space.cubic q.quartic b5.bezier hull.patch bs.surf; do
+		run "$B/tocad -f $fmt $T/$r | $B/fromcad"
+		status 0
+		$B/sample -n 7 "$T/$r" >"$T/a"
+		$B/sample -n 7 "$T/out" >"$T/b" 2>"$T/err" && ok ||
+		    no "$fmt $r: fromcad's records not sampled: $(head -2 "$T/err")"
+		same "$T/a" "$T/b" >"$T/val"
+		within "$fmt round trip of $r (relative)" 1e-12
+	done
+	# a file named on the line, told from its content
+	$B/tocad -f $fmt "$T/bs.surf" >"$T/x.$fmt"
+	run "$B/fromcad $T/x.$fmt"
+	status 0
+	grep -q '^bezier-surface .*m=2 n=1' "$T/out" && ok ||
+	    no "$fmt: not told from its content: $(head -1 "$T/out")"
+done
+
+# ---- STEP written by hand: conics, rational forms, trims ------------------
+
+step_doc() {
+	printf 'ISO-10303-21;\nHEADER;\nFILE_SCHEMA((%s));\nENDSEC;\nDATA;\n' \
+	    "'AUTOMOTIVE_DESIGN'"
+	cat
+	printf 'ENDSEC;\nEND-ISO-10303-21;\n'
+}
+# a circle of radius 5 about (1,2,3) in a tilted plane; a quarter arc of
+# it trimmed by parameter; a rational B-spline quarter circle of radius
+# 2 in the complex-entity form; a line trimmed by points; an ellipse
+step_doc >"$T/conic.step" <<'EOF'
+#1=CARTESIAN_POINT('',(1.,2.,3.));
+#2=DIRECTION('',(0.,0.6,0.8));
+#3=DIRECTION('',(1.,0.,0.));
+#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);
+#5=CIRCLE('c',#4,5.);
+#6=TRIMMED_CURVE('t',#5,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.5707963267948966)),.T.,.PARAMETER.);
+#10=CARTESIAN_POINT('',(2.,0.,0.));
+#11=CARTESIAN_POINT('',(2.,2.,0.));
+#12=CARTESIAN_POINT('',(0.,2.,0.));
+#13=(BOUNDED_CURVE()B_SPLINE_CURVE(2,(#10,#11,#12),.CIRCULAR_ARC.,.F.,.F.)B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.,1.),.UNSPECIFIED.)CURVE()GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE((1.,0.7071067811865476,1.))REPRESENTATION_ITEM(''));
+#20=CARTESIAN_POINT('',(0.,0.,0.));
+#21=DIRECTION('',(1.,1.,0.));
+#22=VECTOR('',#21,1.);
+#23=LINE('',#20,#22);
+#24=CARTESIAN_POINT('',(1.,1.,0.));
+#25=CARTESIAN_POINT('',(3.,3.,0.));
+#26=TRIMMED_CURVE('',#23,(#24),(#25),.T.,.CARTESIAN.);
+#30=ELLIPSE('e',#4,4.,2.);
+#40=GEOMETRIC_SET('',(#5,#6,#13,#26,#30));
+EOF
+run "$B/fromcad -t 1e-9 $T/conic.step"
+status 0
+[ "$(grep -c '^cubic' "$T/out")" -eq 5 ] && ok || no "conics: $(grep -c '^cubic' "$T/out") curves, want 5"
+$B/sample -n 50 "$T/out" >"$T/pts"
+# each curve's points against its closed form, in the record's order
+awk -v c="1 2 3" '
+	BEGIN { cx = 1; cy = 2; cz = 3; nx = 0; ny = 0.6; nz = 0.8 }
+	NF == 0 { if (!gap) rec++; gap = 1; next }
+	{ gap = 0; r = rec + 1; x = $1 - cx; y = $2 - cy; z = $3 - cz
+	  if (r <= 2) { d = sqrt(x*x + y*y + z*z) - 5; e = x*nx + y*ny + z*nz }
+	  else if (r == 3) { d = sqrt($1*$1 + $2*$2) - 2; e = $3 }
+	  else if (r == 4) { d = $1 - $2; e = ($1 < 1 - 1e-12 || $1 > 3 + 1e-12) ? 1 : $3 }
+	  else { u = x; v = y * 0.8 - z * 0.6; d = sqrt((u/4)^2 + (v/2)^2) - 1; e = x*nx + y*ny + z*nz }
+	  if (d < 0) d = -d; if (e < 0) e = -e; if (d > w) w = d; if (e > w) w = e
+	  if (r == 2 && (x < -1e-9 || $2 - cy < -1e-9)) w = 9 }
+	END { print w + 0 }' "$T/pts" >"$T/val"
+within "conics against their closed forms (-t 1e-9)" 1e-9
+# the quarter arc (the second record) runs from parameter 0, (6,2,3), to
+# a quarter turn on, (1,6,0): o + 5 y with y = z x x = (0,0.8,-0.6)
+awk 'NF == 0 { if (!gap) rec++; gap = 1; next } { gap = 0 }
+    rec == 1 { if (!n++) a = $0; b = $0 }
+    END { split(a, p, " "); split(b, q, " ")
+	print sqrt((p[1]-6)^2 + (p[2]-2)^2 + (p[3]-3)^2) + sqrt((q[1]-1)^2 + (q[2]-6)^2 + q[3]^2) }' \
+    "$T/pts" >"$T/val"
+within "the trimmed arc's ends" 1e-12
+
+# a rational B-spline surface (a quarter cylinder of radius 3, height 2)
+step_doc >"$T/cyl.step" <<'EOF'
+#1=CARTESIAN_POINT('',(3.,0.,0.));
+#2=CARTESIAN_POINT('',(3.,0.,2.));
+#3=CARTESIAN_POINT('',(3.,3.,0.));
+#4=CARTESIAN_POINT('',(3.,3.,2.));
+#5=CARTESIAN_POINT('',(0.,3.,0.));
+#6=CARTESIAN_POINT('',(0.,3.,2.));
+#7=(BOUNDED_SURFACE()B_SPLINE_SURFACE(2,1,((#1,#2),(#3,#4),(#5,#6)),.UNSPECIFIED.,.F.,.F.,.F.)B_SPLINE_SURFACE_WITH_KNOTS((3,3),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.)GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_SURFACE(((1.,1.),(0.7071067811865476,0.7071067811865476),(1.,1.)))REPRESENTATION_ITEM('')SURFACE());
+#8=GEOMETRIC_SET('',(#7));
+EOF
+run "$B/fromcad -t 1e-6 $T/cyl.step"
+status 0
+$B/sample -n 6 "$T/out" | awk 'NF { d = sqrt($1*$1 + $2*$2) - 3; if (d < 0) d = -d
+    if ($3 < -1e-12 || $3 > 2 + 1e-12) d = 1; if (d > w) w = d } END { print w + 0 }' >"$T/val"
+within "rational surface within -t 1e-6 of the cylinder" 1e-6
+
+# bad STEP: each says what and where, and exits 1
+step_doc >"$T/bad.step" <<'EOF'
+#1=CARTESIAN_POINT('',(0.,0.,0.));
+#2=CARTESIAN_POINT('',(1.,0.,0.));
+#3=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(1.,0.),.UNSPECIFIED.);
+#4=B_SPLINE_CURVE_WITH_KNOTS('',70,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#5=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#9),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#6=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,3),(0.,1.),.UNSPECIFIED.);
+#7=B_SPLINE_CURVE_WITH_KNOTS('good',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#8=GEOMETRIC_SET('',(#3,#4,#5,#6,#7));
+EOF
+run "$B/fromcad $T/bad.step"
+status 1
+says "bad.step:8: knot 3 decreases"
+says "#4: its degree (1 to 63) or control points cannot be read"
+says "#5: its degree"
+says "#6: its knots and multiplicities do not make 4 knots"
+grep -q '^cubic name=good' "$T/out" && ok || no "bad step: the good curve not read: $(head -2 "$T/out")"
+run "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
+fails 1 "no entity instances" "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
+fails 1 "not a DXF, SVG, CSV, STEP or IGES document" "echo hello | $B/fromcad"
+
+finish stepiges
