@@ -180,4 +180,133 @@ run "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
 fails 1 "no entity instances" "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
 fails 1 "not a DXF, SVG, CSV, STEP or IGES document" "echo hello | $B/fromcad"
 
+# ---- files OpenCASCADE writes (through gmsh), checked by its own evaluation
+
+if [ -n "$OCCPY" ]; then
+	cat >"$T/occgen.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+occ = gmsh.model.occ
+def save(name):
+    occ.synchronize()
+    gmsh.write(sys.argv[1] + "/" + name + ".step")
+    gmsh.model.remove()
+gmsh.model.add("box"); occ.addBox(1, 2, 3, 4, 5, 6); save("box")
+gmsh.model.add("cyl"); occ.addCylinder(0, 0, 0, 0, 0, 3, 1.5); save("cyl")
+gmsh.model.add("sph"); occ.addSphere(0, 0, 0, 2); save("sph")
+gmsh.model.add("fil"); occ.addBox(0, 0, 0, 2, 2, 2); occ.synchronize()
+occ.fillet([1], [1, 2], [0.3]); save("fil")
+# 6 x 5 points of degree 3: 3 x 2 spans, knots 0..3 and 0..2
+gmsh.model.add("bs")
+p = [occ.addPoint(i, j, 0.2 * ((i - 2.5) ** 2 - (j - 2) ** 2 + i * j / 3.0))
+     for j in range(5) for i in range(6)]
+occ.addBSplineSurface(p, 6, degreeU=3, degreeV=3); save("bs")
+gmsh.model.add("rat")
+p = [occ.addPoint(i, j, 0.5 * ((i + j) % 2)) for j in range(3) for i in range(4)]
+w = [1 + 0.5 * ((3 * k) % 4) for k in range(12)]
+occ.addBSplineSurface(p, 4, degreeU=2, degreeV=2, weights=w); save("rat")
+gmsh.finalize()
+PY
+	# occcheck.py FILE PTS: "faces points worst": the largest distance
+	# from PTS's points to the surfaces of FILE as OpenCASCADE evaluates
+	# them (getValue at the parameters of the nearest point), over the
+	# model's size
+	cat >"$T/occcheck.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+faces = [t for d, t in gmsh.model.getEntities(2)]
+pts = [[float(x) for x in l.split()[:3]] for l in open(sys.argv[2]) if l.strip()]
+worst = 0.0
+for p in pts:
+    best = 1e300
+    for t in faces:
+        q = gmsh.model.getClosestPoint(2, t, p)[0]
+        try:
+            q = gmsh.model.getValue(2, t, gmsh.model.getParametrization(2, t, q))
+        except Exception:
+            pass
+        best = min(best, sum((q[k] - p[k]) ** 2 for k in range(3)) ** 0.5)
+    worst = max(worst, best)
+b = gmsh.model.getBoundingBox(-1, -1)
+size = sum((b[k + 3] - b[k]) ** 2 for k in range(3)) ** 0.5
+print(len(faces), len(pts), worst / size)
+gmsh.finalize()
+PY
+	# occspan.py FILE RECORDS SU SV: the Bezier patches of RECORDS, span
+	# (a, b) u-major, evaluated here (Bernstein sums) at a 7 x 7 grid
+	# against OpenCASCADE's getValue at (a + s, b + r); the worst distance
+	cat >"$T/occspan.py" <<'PY'
+import sys, gmsh
+from math import comb
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+recs, cur = [], None
+for l in open(sys.argv[2]):
+    w = l.split()
+    if not w:
+        cur = None
+    elif w[0] == "bezier-surface":
+        a = dict(x.split("=") for x in w[1:])
+        cur = [int(a["m"]), int(a["n"]), []]
+        recs.append(cur)
+    else:
+        cur[2].append([float(x) for x in w])
+su, sv = int(sys.argv[3]), int(sys.argv[4])
+t = gmsh.model.getEntities(2)[0][1]
+worst = 0.0 if len(recs) == su * sv else 1e300
+for k, (m, n, P) in enumerate(recs[:su * sv]):
+    a, b = k // sv, k % sv
+    for i in range(7):
+        for j in range(7):
+            s, r = i / 6.0, j / 6.0
+            x = [sum(comb(m, p) * s ** p * (1 - s) ** (m - p) *
+                     comb(n, q) * r ** q * (1 - r) ** (n - q) *
+                     P[p * (n + 1) + q][c] for p in range(m + 1)
+                     for q in range(n + 1)) for c in range(3)]
+            y = gmsh.model.getValue(2, t, [a + s, b + r])
+            worst = max(worst, sum((x[c] - y[c]) ** 2 for c in range(3)) ** 0.5)
+print(len(recs), worst)
+gmsh.finalize()
+PY
+	mkdir -p "$T/occ"
+	"$OCCPY" "$T/occgen.py" "$T/occ" >/dev/null 2>&1
+	# file, -t, the records wanted, the largest deviation over the size,
+	# sample's steps (rat's -t 1e-3 is 2.7e-4 of its size, 3.6)
+	for c in box:0:6:1e-14:5 bs:0:6:1e-14:5 cyl:0:2:1e-14:5 \
+	    fil:0:6:1e-14:5 rat:1e-3:0:2.7e-4:2; do
+		set -- $(echo "$c" | tr : ' ')
+		topt=; [ "$2" = 0 ] || topt="-t $2"
+		$B/fromcad $topt "$T/occ/$1.step" >"$T/occ/$1.loft" 2>"$T/err"
+		n=$(grep -c '^bezier-surface' "$T/occ/$1.loft")
+		[ "$3" = 0 ] || [ "$n" = "$3" ] && ok ||
+		    no "OpenCASCADE's $1.step: $n surfaces, want $3"
+		$B/sample -n "$5" "$T/occ/$1.loft" >"$T/occ/$1.pts"
+		set -- $("$OCCPY" "$T/occcheck.py" "$T/occ/$1.step" \
+		    "$T/occ/$1.pts" 2>/dev/null | tail -n 1) "$4" "$1"
+		echo "$3" >"$T/val"
+		within "OpenCASCADE's $5.step: $2 points off its faces" "$4"
+	done
+	# what is passed over is said, with exit 1
+	run "$B/fromcad $T/occ/cyl.step"
+	status 1
+	says "1 CYLINDRICAL_SURFACE item passed over"
+	run "$B/fromcad $T/occ/sph.step"
+	status 1
+	says "1 SPHERICAL_SURFACE item passed over"
+	# the B-spline's spans, patch by patch, at OpenCASCADE's parameters
+	set -- $("$OCCPY" "$T/occspan.py" "$T/occ/bs.step" "$T/occ/bs.loft" 3 2 \
+	    2>/dev/null | tail -n 1)
+	[ "$1" = 6 ] && ok || no "OpenCASCADE's bs.step: $1 patches, want 6"
+	echo "$2" >"$T/val"
+	within "OpenCASCADE's bs.step: patches against getValue by span" 1e-14
+else
+	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE)"
+fi
+
 finish stepiges
