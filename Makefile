@@ -40,6 +40,7 @@ LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
           bin/obj/svgplot.o
+CADOBJ  += bin/obj/cadlimit.o
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 BINS    = $(PROGS:%=bin/%)

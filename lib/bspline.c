@@ -409,33 +409,114 @@ cell_error(const double *hw, int m, int n, double u0, double h, double v0,
 	return worst;
 }
 
+/*
+ * The bicubic cells of an cu by cv grid of hw into out (cell (a, b) at
+ * 48 (a cv + b)) and their largest error, stopping once it is above
+ * stop; -1 where a weight is not positive.
+ */
+static double
+grid(const double *hw, int m, int n, size_t cu, size_t cv, double *out,
+    double stop)
+{
+	double worst = 0, h = 1.0 / (double)cu, g = 1.0 / (double)cv;
+
+	for (size_t i = 0; i < cu * cv && worst <= stop; i++) {
+		double *net = out + 48 * i, u0 = (double)(i / cv) * h;
+		double v0 = (double)(i % cv) * g;
+
+		if (bicubic_cell(hw, m, n, u0, h, v0, g, net) != 0)
+			return -1;
+		worst = fmax(worst, cell_error(hw, m, n, u0, h, v0, g, net));
+	}
+	return worst;
+}
+
+/*
+ * Halve the cells in u or in v, whichever brings the error down more,
+ * until it is within the tolerance: a surface of high degree in one
+ * direction only is cut in that direction only.
+ */
 int
 loft_rational_bicubics(const double *hw, int m, int n, double tol,
-    size_t max, double *out, size_t *k, struct loft_error *err)
+    size_t max, double *out, size_t *ku, size_t *kv, struct loft_error *err)
 {
+	size_t cu = 1, cv = 1;
+
 	if (m < 1 || n < 1 || m > LOFT_BSPLINE_MAXDEG ||
 	    n > LOFT_BSPLINE_MAXDEG || !(tol > 0) || max < 1)
 		return loft_fail(err, LOFT_EINPUT, -1, "bad degrees, tolerance "
 		    "or count");
-	for (size_t c = 1; c <= max; c *= 2) {
-		double worst = 0, h = 1.0 / (double)c;
+	for (;;) {
+		double e = grid(hw, m, n, cu, cv, out, CHECK_MARGIN * tol);
+		double eu = INFINITY, ev = INFINITY;
 
-		for (size_t i = 0; i < c * c && worst <= CHECK_MARGIN * tol;
-		    i++) {
-			double *net = out + 48 * i, u0 = (double)(i / c) * h;
-			double v0 = (double)(i % c) * h;
-
-			if (bicubic_cell(hw, m, n, u0, h, v0, h, net) != 0)
-				return loft_fail(err, LOFT_EGEOM, -1, "a weight "
-				    "is not positive");
-			worst = fmax(worst, cell_error(hw, m, n, u0, h, v0, h,
-			    net));
-		}
-		if (worst <= CHECK_MARGIN * tol) {
-			*k = c;
+		if (e >= 0 && e <= CHECK_MARGIN * tol) {
+			*ku = cu;
+			*kv = cv;
 			return 0;
 		}
+		if (e >= 0 && 2 * cu * cv <= max * max)
+			eu = grid(hw, m, n, 2 * cu, cv, out, INFINITY);
+		if (e >= 0 && eu >= 0 && 2 * cu * cv <= max * max)
+			ev = grid(hw, m, n, cu, 2 * cv, out, INFINITY);
+		if (e < 0 || eu < 0 || ev < 0)
+			return loft_fail(err, LOFT_EGEOM, -1, "a weight is not "
+			    "positive");
+		if (2 * cu * cv > max * max)
+			return loft_fail(err, LOFT_ENOCONV, -1, "more than %zu "
+			    "bicubic patches would be needed for the "
+			    "tolerance", max * max);
+		if (eu <= ev)
+			cu *= 2;
+		else
+			cv *= 2;
 	}
-	return loft_fail(err, LOFT_ENOCONV, -1, "more than %zu by %zu bicubic "
-	    "patches would be needed for the tolerance", max, max);
+}
+
+/* The polynomial Bezier ctl (dim each, dim 1 to 3) with weights 1. */
+static double *
+homogeneous(const double *ctl, size_t npts, int dim)
+{
+	double *h = malloc(npts * (size_t)(dim + 1) * sizeof *h);
+
+	for (size_t i = 0; h != NULL && i < npts; i++) {
+		memcpy(h + i * (dim + 1), ctl + i * dim, (size_t)dim * sizeof *h);
+		h[i * (dim + 1) + dim] = 1;
+	}
+	return h;
+}
+
+int
+loft_bezier_cubics(const double *ctl, int deg, int dim, double tol,
+    size_t max, double *out, size_t *n, struct loft_error *err)
+{
+	double *h;
+	int rc;
+
+	if (deg < 1 || deg > LOFT_BSPLINE_MAXDEG || dim < 1 || dim > 3)
+		return loft_fail(err, LOFT_EINPUT, -1, "bad degree or "
+		    "dimension");
+	if ((h = homogeneous(ctl, (size_t)deg + 1, dim)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	rc = loft_rational_cubics(h, deg, dim, tol, max, out, n, err);
+	free(h);
+	return rc;
+}
+
+int
+loft_bezier_bicubics(const double *ctl, int m, int n, double tol,
+    size_t max, double *out, size_t *ku, size_t *kv, struct loft_error *err)
+{
+	double *h;
+	int rc;
+
+	if (m < 1 || n < 1 || m > LOFT_BSPLINE_MAXDEG ||
+	    n > LOFT_BSPLINE_MAXDEG)
+		return loft_fail(err, LOFT_EINPUT, -1, "bad degrees");
+	if ((h = homogeneous(ctl, (size_t)(m + 1) * (size_t)(n + 1), 3)) ==
+	    NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	rc = loft_rational_bicubics(h, m, n, tol, max, out, ku, kv, err);
+	free(h);
+	return rc;
 }

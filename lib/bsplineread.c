@@ -228,7 +228,7 @@ rational_patches(struct loft_cadin *c, const double *hw, size_t np, int p,
 {
 	double *cub = malloc(48 * RATIONAL_SIDE * RATIONAL_SIDE * sizeof *cub);
 	struct loft_error err;
-	size_t k;
+	size_t ku, kv;
 
 	if (cub == NULL) {
 		loft__cadin_say(c, line, "out of memory");
@@ -236,13 +236,13 @@ rational_patches(struct loft_cadin *c, const double *hw, size_t np, int p,
 	}
 	for (size_t i = 0; i < np; i++) {
 		if (loft_rational_bicubics(hw + i * (size_t)(p + 1) * (q + 1) *
-		    4, p, q, tol, RATIONAL_SIDE, cub, &k, &err) != 0) {
+		    4, p, q, tol, RATIONAL_SIDE, cub, &ku, &kv, &err) != 0) {
 			loft__cadin_say(c, line, "a rational surface: %s (-t "
 			    "sets the tolerance)", err.msg);
 			free(cub);
 			return -1;
 		}
-		for (size_t j = 0; j < k * k; j++)
+		for (size_t j = 0; j < ku * kv; j++)
 			put_patch(c->w, cub + 48 * j, 3, 3, nm);
 	}
 	free(cub);

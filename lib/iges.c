@@ -23,6 +23,7 @@ struct iges {
 	char line[DATA_COLS + 1];       /* the parameter line being filled */
 	int len;
 	long first;                     /* the entity's first parameter line */
+	double tol;                     /* the record's tolerance */
 };
 
 /* Close the parameter line being filled. */
@@ -112,7 +113,7 @@ iges_begin(struct loft_cad_doc *d)
 /* 126: K, M, planar, closed, polynomial, periodic, knots, weights,
  * control points, the parameter range, the plane's normal. */
 static int
-iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
+write_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 {
 	size_t np = c->npieces * (size_t)c->deg + 1;
 
@@ -145,7 +146,7 @@ iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 /* 128: K1, K2, M1, M2, closed and periodic flags, knots in u and v,
  * weights, control points with the u index running fastest, the range. */
 static int
-iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
+write_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
 {
 	param_int(d, 128);
 	param_int(d, s->m);
@@ -170,6 +171,56 @@ iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
 	param_real(d, 1);
 	param_real(d, 0);
 	return end_entity(d, 128, 1);
+}
+
+static int
+iges_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
+{
+	((struct iges *)d->state)->tol = it->tol;
+	return 0;
+}
+
+/* A curve, as cubic pieces within the tolerance where its degree is
+ * above what readers take (LOFT_CAD_MAXDEG). */
+static int
+iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
+{
+	struct loft_bcurve low;
+	double *buf = NULL;
+	int rc;
+
+	if (c->deg <= LOFT_CAD_MAXDEG)
+		return write_curve(d, c);
+	if ((rc = loft_cad_lower_curve(c, ((struct iges *)d->state)->tol,
+	    &low, &buf)) == 0)
+		rc = write_curve(d, &low);
+	else if (rc != LOFT_ENOMEM)
+		d->out.bad = LOFT_EGEOM, rc = 0;
+	free(buf);
+	return rc;
+}
+
+/* A patch, as bicubic patches where a degree is above that. */
+static int
+iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
+{
+	double *nets = NULL;
+	size_t n = 0;
+	int rc;
+
+	if (s->m <= LOFT_CAD_MAXDEG && s->n <= LOFT_CAD_MAXDEG)
+		return write_surface(d, s);
+	if ((rc = loft_cad_lower_surface(s, ((struct iges *)d->state)->tol,
+	    &nets, &n)) == 0)
+		for (size_t i = 0; i < n && rc == 0; i++) {
+			struct loft_bsurf c = { nets + 48 * i, 3, 3 };
+
+			rc = write_surface(d, &c);
+		}
+	else if (rc != LOFT_ENOMEM)
+		d->out.bad = LOFT_EGEOM, rc = 0;
+	free(nets);
+	return rc;
 }
 
 /* "nH..." */
@@ -260,6 +311,7 @@ iges_free(struct loft_cad_doc *d)
 
 const struct loft_cad_format loft_cad_iges = {
 	.name = "iges", .title = "IGES",
-	.begin = iges_begin, .end = iges_end, .curve = iges_curve,
+	.begin = iges_begin, .end = iges_end, .begin_record = iges_begin_record,
+	.curve = iges_curve,
 	.surface = iges_surface, .free = iges_free,
 };

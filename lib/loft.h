@@ -1398,13 +1398,27 @@ int loft_rational_cubics(const double *hw, int deg, int dim, double tol,
 
 /*
  * The same for a rational tensor Bezier surface in space, degrees m and
- * n, points (w x, w y, w z, w) u-major: *k by *k bicubic patches (16
+ * n, points (w x, w y, w z, w) u-major: *ku by *kv bicubic patches (16
  * points of 3 numbers, u-major) into out (48 max max numbers), patch
- * (a, b) over [a/k, (a+1)/k] x [b/k, (b+1)/k] at out[48 (a k + b)],
+ * (a, b) over [a/ku, (a+1)/ku] x [b/kv, (b+1)/kv] at out[48 (a kv + b)],
  * each Hermite-interpolating the corners' points, derivatives and
- * twists.  Returns as loft_rational_cubics.
+ * twists; ku and kv powers of 2, ku kv at most max max, the direction
+ * that gains more halved first.  Returns as loft_rational_cubics.
  */
 int loft_rational_bicubics(const double *hw, int m, int n, double tol,
-    size_t max, double *out, size_t *k, struct loft_error *err);
+    size_t max, double *out, size_t *ku, size_t *kv,
+    struct loft_error *err);
+
+
+/*
+ * loft_rational_cubics and loft_rational_bicubics for polynomial Bezier
+ * curves (ctl, dim 1 to 3) and surfaces (in space, u-major), all weights
+ * 1: for a format that reads no degree as high.  Returns as they do.
+ */
+int loft_bezier_cubics(const double *ctl, int deg, int dim, double tol,
+    size_t max, double *out, size_t *n, struct loft_error *err);
+int loft_bezier_bicubics(const double *ctl, int m, int n, double tol,
+    size_t max, double *out, size_t *ku, size_t *kv,
+    struct loft_error *err);
 
 #endif

@@ -297,4 +297,32 @@ void loft_cad_knots(size_t npieces, int deg, double *knot, int *mult);
 /* Point k of the B-spline control points of c (k <= npieces * deg). */
 const double *loft_cad_ctl(const struct loft_bcurve *c, size_t k);
 
+
+/* ------------------------------------------------------------------ */
+/* Degrees a format cannot take (cadlimit.c)                           */
+
+/*
+ * The highest B-spline degree STEP and IGES readers take: OpenCASCADE
+ * reads a curve or surface of a higher one as nothing.
+ */
+#define LOFT_CAD_MAXDEG 25
+
+/*
+ * The curve c as cubic pieces, each within tol of c at the same
+ * parameter, into *out, whose points are in *buf (malloc'd, the
+ * caller's to free, even on failure).  Returns 0, LOFT_ENOMEM, or
+ * LOFT_ENOCONV when a piece would need more than 4096 cubics.
+ */
+int loft_cad_lower_curve(const struct loft_bcurve *c, double tol,
+    struct loft_bcurve *out, double **buf);
+
+/*
+ * The patch s as *count bicubic patches (48 numbers each, u-major nets,
+ * over a grid of equal parts of [0,1]^2, loft_bezier_bicubics's order)
+ * within tol, into *nets (malloc'd, the caller's).
+ * Returns as loft_cad_lower_curve (more than 4096: LOFT_ENOCONV).
+ */
+int loft_cad_lower_surface(const struct loft_bsurf *s, double tol,
+    double **nets, size_t *count);
+
 #endif

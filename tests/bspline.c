@@ -225,7 +225,7 @@ test_rational_surface(void)
 	/* circle arcs: meridian (x,z) quarter times equator (x,y) quarter */
 	double m[3][3] = { { 1, 0, 1 }, { r, r, r }, { 0, 1, 1 } };
 	double e[3][3] = { { 1, 0, 1 }, { r, r, r }, { 0, 1, 1 } };
-	size_t k = 0;
+	size_t k = 0, kv = 0;
 	struct loft_error err;
 
 	for (int i = 0; i < 3; i++)             /* u: the meridian */
@@ -237,9 +237,9 @@ test_rational_surface(void)
 			h[2] = m[i][1] * e[j][2];
 			h[3] = m[i][2] * e[j][2];
 		}
-	CHECK(loft_rational_bicubics(hw, 2, 2, 1e-7, 64, out, &k, &err) == 0,
+	CHECK(loft_rational_bicubics(hw, 2, 2, 1e-7, 64, out, &k, &kv, &err) == 0,
 	    "octant: %s", err.msg);
-	for (size_t c = 0; c < k * k; c++)
+	for (size_t c = 0; c < k * kv; c++)
 		for (int a = 0; a <= 8; a++)
 			for (int b = 0; b <= 8; b++) {
 				double x[3];
@@ -249,8 +249,8 @@ test_rational_surface(void)
 				worst = fmax(worst, fabs(sqrt(x[0] * x[0] + x[1] *
 				    x[1] + x[2] * x[2]) - 1));
 			}
-	CHECK(k > 1 && worst <= 1e-7, "octant: %zu^2 patches, off the sphere "
-	    "by %g", k, worst);
+	CHECK(k * kv > 1 && worst <= 1e-7, "octant: %zu by %zu patches, off "
+	    "the sphere by %g", k, kv, worst);
 	free(out);
 }
 

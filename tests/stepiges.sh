@@ -309,4 +309,167 @@ else
 	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE)"
 fi
 
+# ---- tocad's STEP as a sewn shell ------------------------------------------
+
+# a closed box of six bilinear patches, each normal outward
+cat >"$T/cube.surf" <<'EOF'
+bezier-surface m=1 n=1
+0 0 0
+0 1 0
+2 0 0
+2 1 0
+
+bezier-surface m=1 n=1
+0 0 3
+2 0 3
+0 1 3
+2 1 3
+
+bezier-surface m=1 n=1
+0 0 0
+2 0 0
+0 0 3
+2 0 3
+
+bezier-surface m=1 n=1
+0 1 0
+0 1 3
+2 1 0
+2 1 3
+
+bezier-surface m=1 n=1
+0 0 0
+0 0 3
+0 1 0
+0 1 3
+
+bezier-surface m=1 n=1
+2 0 0
+2 1 0
+2 0 3
+2 1 3
+EOF
+# hull.patch with patch 3's numbers moved by rounding (a part in 1e15):
+# its shared side is no longer the same points, but its link still says
+# it is shared; and without the links, two sides
+awk '/^patch id=3/ { p = 1 } /^$/ { p = 0 } !p || /^patch/ { print; next }
+    { for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * (1 + 1e-15)); print }' \
+    "$T/hull.patch" >"$T/nudged.patch"
+sed -E 's/ (u0|u1|v0|v1)=[0-9]+//g' "$T/nudged.patch" >"$T/unlinked.patch"
+# counted in the file: faces, edges, vertices, the shell
+for c in hull.patch:2:7:6:OPEN_SHELL nudged.patch:2:7:6:OPEN_SHELL \
+    unlinked.patch:2:8:8:OPEN_SHELL cube.surf:6:12:8:CLOSED_SHELL \
+    man/examples/hull.design:24:58:35:OPEN_SHELL; do
+	set -- $(echo "$c" | tr : ' ')
+	f=$1; [ -f "$f" ] || f=$T/$1
+	$B/tocad -f step "$f" >"$T/sewn.step"
+	got=$(awk '/ADVANCED_FACE/ { f++ } /EDGE_CURVE/ { e++ } /VERTEX_POINT/ { v++ }
+	    /CLOSED_SHELL/ { s = "CLOSED_SHELL" } /OPEN_SHELL/ { s = "OPEN_SHELL" }
+	    END { print f + 0, e + 0, v + 0, s }' "$T/sewn.step")
+	[ "$got" = "$2 $3 $4 $5" ] && ok ||
+	    no "step shell of $1: faces edges vertices '$got', want '$2 $3 $4 $5'"
+	run "$B/fromcad $T/sewn.step"
+	status 0
+	[ "$(grep -c '^bezier-surface' "$T/out")" = "$2" ] && ok ||
+	    no "step shell of $1: not $2 surfaces back"
+done
+if [ -n "$OCCPY" ]; then
+	# OpenCASCADE reads one connected shell: vertices, edges, faces,
+	# volumes, and the volume's size
+	cat >"$T/topo.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+n = [len(gmsh.model.getEntities(d)) for d in range(4)]
+v = sum(gmsh.model.occ.getMass(3, t) for d, t in gmsh.model.getEntities(3))
+print(*n, "%.12g" % v)
+gmsh.finalize()
+PY
+	for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
+	    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
+	    man/examples/hull.design:35:58:24:0:0; do
+		set -- $(echo "$c" | tr : ' ')
+		f=$1; [ -f "$f" ] || f=$T/$1
+		$B/tocad -f step "$f" >"$T/sewn.step"
+		got=$("$OCCPY" "$T/topo.py" "$T/sewn.step" 2>/dev/null | tail -n 1)
+		[ "$got" = "$2 $3 $4 $5 $6" ] && ok ||
+		    no "OpenCASCADE on the shell of $1: '$got', want '$2 $3 $4 $5 $6'"
+	done
+else
+	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE), shells"
+fi
+
+# ---- degrees above 25: cubic pieces within -t, which OpenCASCADE reads -----
+
+awk 'BEGIN { print "bezier"; for (i = 0; i < 64; i++) print i, i % 2 }' \
+    >"$T/b63.bezier"
+awk 'BEGIN { print "bezier-surface m=30 n=2"
+    for (i = 0; i <= 30; i++) for (j = 0; j <= 2; j++)
+	print i, j, (i % 3) * (j == 1) }' >"$T/s30.surf"
+for fmt in step iges; do
+	run "$B/tocad -f $fmt -t 1e-4 $T/b63.bezier"
+	status 0
+	cp "$T/out" "$T/b63.$fmt"
+	run "$B/fromcad $T/b63.$fmt"
+	status 0
+	grep -q '^cubic' "$T/out" && ok || no "$fmt: degree 63 not written as cubics"
+	# every point of the cubics is within -t of the curve at the same
+	# parameter: sampled at the same steps (the pieces cut the curve's
+	# parameter evenly, 256 of them here)
+	n=$(grep -c . "$T/out"); n=$((n - 1))
+	$B/sample -n "$n" "$T/b63.bezier" >"$T/a"
+	$B/sample -n 1 "$T/out" >"$T/b"
+	paste -d ' ' "$T/a" "$T/b" | awk 'NF == 4 { d = sqrt(($1-$3)^2 + ($2-$4)^2)
+	    if (d > w) w = d } END { print w + 0 }' >"$T/val"
+	within "$fmt: degree 63 as cubics, at the pieces' ends" 1e-12
+	$B/sample -n 8 "$T/out" >"$T/b"
+	$B/sample -n $((8 * n)) "$T/b63.bezier" >"$T/a"
+	paste -d ' ' "$T/a" "$T/b" | awk 'NF == 4 { d = sqrt(($1-$3)^2 + ($2-$4)^2)
+	    if (d > w) w = d } END { print w + 0 }' >"$T/val"
+	within "$fmt: degree 63 as cubics within -t 1e-4" 1e-4
+	run "$B/tocad -f $fmt -t 1e-4 $T/s30.surf"
+	status 0
+	cp "$T/out" "$T/s30.$fmt"
+done
+if [ -n "$OCCPY" ]; then
+	# OpenCASCADE finds the curve and the surface, and sample's points
+	# of the records given lie on them within -t
+	cat >"$T/occnear.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+dim = int(sys.argv[3])
+ents = [t for d, t in gmsh.model.getEntities(dim)]
+worst = 0.0 if ents else 1e300
+for l in open(sys.argv[2]):
+    p = [float(x) for x in l.split()]
+    if not p:
+        continue
+    p = (p + [0.0, 0.0])[:3]
+    best = min(sum((c - q) ** 2 for c, q in zip(
+        gmsh.model.getClosestPoint(dim, t, p)[0], p)) ** 0.5 for t in ents)
+    worst = max(worst, best)
+print(len(ents), worst)
+gmsh.finalize()
+PY
+	$B/sample -n 100 "$T/b63.bezier" >"$T/b63.pts"
+	$B/sample -n 6 "$T/s30.surf" >"$T/s30.pts"
+	for f in b63:1 s30:2; do
+		for fmt in step iges; do
+			set -- $("$OCCPY" "$T/occnear.py" "$T/${f%:*}.$fmt" \
+			    "$T/${f%:*}.pts" "${f#*:}" 2>/dev/null | tail -n 1)
+			[ "${1:-0}" -ge 1 ] && ok ||
+			    no "OpenCASCADE: ${f%:*}.$fmt read as nothing"
+			echo "$2" >"$T/val"
+			within "OpenCASCADE: ${f%:*}.$fmt within -t 1e-4" 1e-4
+		done
+	done
+else
+	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE), degree 63"
+fi
+
 finish stepiges
