@@ -1204,7 +1204,8 @@ loft_step_read(const char *buf, size_t len, struct loft_cadin *c)
 		loft__cadin_say(c, 0, "out of memory");
 		return LOFT_ENOMEM;
 	}
-	qsort(st.e, st.ne, sizeof *st.e, cmp_ent);
+	if (st.ne > 0)
+		qsort(st.e, st.ne, sizeof *st.e, cmp_ent);
 	if (st.ne == 0)
 		loft__cadin_say(c, 0, "no entity instances: no STEP data");
 	for (size_t i = 0; i < st.ne && !st.oom; i++) {
