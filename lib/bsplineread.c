@@ -221,6 +221,16 @@ put_patch(struct loft_writer *w, const double *net, int m, int n,
 	loft_end_record(w);
 }
 
+int
+loft__bs_patch(struct loft_cadin *c, const double *net, int m, int n,
+    const struct loft__bsname *nm, long line)
+{
+	size_t mark = c->w->len;
+
+	put_patch(c->w, net, m, n, nm);
+	return loft__cadin_done(c, mark, line);
+}
+
 /* The rational patches hw (4 numbers a point) as bicubic ones. */
 static int
 rational_patches(struct loft_cadin *c, const double *hw, size_t np, int p,

@@ -14,9 +14,10 @@
 #define LOWER_PIECES 4096
 #define LOWER_SIDE 64
 
-int
-loft_cad_lower_curve(const struct loft_bcurve *c, double tol,
-    struct loft_bcurve *out, double **buf)
+/* c as cubic pieces into *out, its points in *buf (the caller frees). */
+static int
+lower_curve(const struct loft_bcurve *c, double tol, struct loft_bcurve *out,
+    double **buf)
 {
 	size_t per = 4 * (size_t)c->dim, n = 0, k;
 	double *b = malloc(c->npieces * LOWER_PIECES * per * sizeof *b);
@@ -39,8 +40,9 @@ loft_cad_lower_curve(const struct loft_bcurve *c, double tol,
 	return rc;
 }
 
-int
-loft_cad_lower_surface(const struct loft_bsurf *s, double tol, double **nets,
+/* s as *count bicubic nets in *nets (the caller frees). */
+static int
+lower_surface(const struct loft_bsurf *s, double tol, double **nets,
     size_t *count)
 {
 	double *b = malloc(48 * LOWER_SIDE * LOWER_SIDE * sizeof *b);
@@ -55,5 +57,45 @@ loft_cad_lower_surface(const struct loft_bsurf *s, double tol, double **nets,
 	rc = loft_bezier_bicubics(s->ctl, s->m, s->n, tol, LOWER_SIDE, b, &ku,
 	    &kv, &err);
 	*count = ku * kv;
+	return rc;
+}
+
+int
+loft_cad_curve_limited(struct loft_cad_doc *d, const struct loft_bcurve *c,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bcurve *))
+{
+	struct loft_bcurve low;
+	double *buf = NULL;
+	int rc;
+
+	if (c->deg <= LOFT_CAD_MAXDEG)
+		return write(d, c);
+	if ((rc = lower_curve(c, tol, &low, &buf)) == 0)
+		rc = write(d, &low);
+	else if (rc != LOFT_ENOMEM)
+		d->out.bad = LOFT_EGEOM, rc = 0;
+	free(buf);
+	return rc;
+}
+
+int
+loft_cad_surface_limited(struct loft_cad_doc *d, const struct loft_bsurf *s,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bsurf *))
+{
+	double *nets = NULL;
+	size_t n = 0;
+	int rc;
+
+	if (s->m <= LOFT_CAD_MAXDEG && s->n <= LOFT_CAD_MAXDEG)
+		return write(d, s);
+	if ((rc = lower_surface(s, tol, &nets, &n)) == 0)
+		for (size_t i = 0; i < n && rc == 0; i++) {
+			struct loft_bsurf c = { nets + 48 * i, 3, 3 };
+
+			rc = write(d, &c);
+		}
+	else if (rc != LOFT_ENOMEM)
+		d->out.bad = LOFT_EGEOM, rc = 0;
+	free(nets);
 	return rc;
 }

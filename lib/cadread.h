@@ -113,6 +113,10 @@ int loft__bs_curve(struct loft_cadin *c, const struct loft__bs *b,
 /* The same for the surface s. */
 int loft__bs_surface(struct loft_cadin *c, const struct loft__bsurf *s,
     const struct loft__bsname *nm, long line);
+/* One bezier-surface record of degrees m, n and control points net
+ * (u-major); 0, or -1 after complaining at line. */
+int loft__bs_patch(struct loft_cadin *c, const double *net, int m, int n,
+    const struct loft__bsname *nm, long line);
 /* The knot vector t of want knots from distinct values val and their
  * multiplicities mult (nval each); 0, or -1 when they do not add up. */
 int loft__bs_knots(const double *val, const long *mult, size_t nval,

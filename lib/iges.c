@@ -180,47 +180,20 @@ iges_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
 	return 0;
 }
 
-/* A curve, as cubic pieces within the tolerance where its degree is
- * above what readers take (LOFT_CAD_MAXDEG). */
+/* A curve or a patch, as cubics where its degree is above what readers
+ * take (LOFT_CAD_MAXDEG). */
 static int
 iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 {
-	struct loft_bcurve low;
-	double *buf = NULL;
-	int rc;
-
-	if (c->deg <= LOFT_CAD_MAXDEG)
-		return write_curve(d, c);
-	if ((rc = loft_cad_lower_curve(c, ((struct iges *)d->state)->tol,
-	    &low, &buf)) == 0)
-		rc = write_curve(d, &low);
-	else if (rc != LOFT_ENOMEM)
-		d->out.bad = LOFT_EGEOM, rc = 0;
-	free(buf);
-	return rc;
+	return loft_cad_curve_limited(d, c, ((struct iges *)d->state)->tol,
+	    write_curve);
 }
 
-/* A patch, as bicubic patches where a degree is above that. */
 static int
 iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
 {
-	double *nets = NULL;
-	size_t n = 0;
-	int rc;
-
-	if (s->m <= LOFT_CAD_MAXDEG && s->n <= LOFT_CAD_MAXDEG)
-		return write_surface(d, s);
-	if ((rc = loft_cad_lower_surface(s, ((struct iges *)d->state)->tol,
-	    &nets, &n)) == 0)
-		for (size_t i = 0; i < n && rc == 0; i++) {
-			struct loft_bsurf c = { nets + 48 * i, 3, 3 };
-
-			rc = write_surface(d, &c);
-		}
-	else if (rc != LOFT_ENOMEM)
-		d->out.bad = LOFT_EGEOM, rc = 0;
-	free(nets);
-	return rc;
+	return loft_cad_surface_limited(d, s, ((struct iges *)d->state)->tol,
+	    write_surface);
 }
 
 /* "nH..." */

@@ -487,7 +487,6 @@ plane108(struct iges *g, const struct de *e, long k)
 	double hi[2] = { -INFINITY, -INFINITY }, net[12], len, d;
 	struct loft__pts p = { NULL, 0, 0 };
 	struct loft__bsname nm = name_of(e, k);
-	size_t mark = g->c->w->len;
 	long bound;
 
 	if (g->nv < 6 || e->form != 1) {
@@ -549,21 +548,7 @@ plane108(struct iges *g, const struct de *e, long k)
 		    "cannot be read", k);
 		return -1;
 	}
-	loft_put_type(g->c->w, "bezier-surface");
-	loft__cadin_put_name(g->c->w, "name", nm.name, nm.nname);
-	{
-		char num[32];
-
-		snprintf(num, sizeof num, "%ld", k);
-		loft_put_attr(g->c->w, "entity", num);
-	}
-	loft_put_attr(g->c->w, "m", "1");
-	loft_put_attr(g->c->w, "n", "1");
-	loft_end_line(g->c->w);
-	for (int q = 0; q < 4; q++)
-		loft_put_row(g->c->w, net + 3 * q, 3);
-	loft_end_record(g->c->w);
-	return loft__cadin_done(g->c, mark, e->line);
+	return loft__bs_patch(g->c, net, 1, 1, &nm, e->line);
 }
 
 int

@@ -308,21 +308,16 @@ const double *loft_cad_ctl(const struct loft_bcurve *c, size_t k);
 #define LOFT_CAD_MAXDEG 25
 
 /*
- * The curve c as cubic pieces, each within tol of c at the same
- * parameter, into *out, whose points are in *buf (malloc'd, the
- * caller's to free, even on failure).  Returns 0, LOFT_ENOMEM, or
- * LOFT_ENOCONV when a piece would need more than 4096 cubics.
+ * Hand the curve c to write as it is, or, when its degree is above
+ * LOFT_CAD_MAXDEG, as cubic pieces each within tol of it at the same
+ * parameter (bspline.c).  Returns write's code, or LOFT_ENOMEM; when no
+ * 4096 cubics a piece would do, d->out.bad is LOFT_EGEOM.
  */
-int loft_cad_lower_curve(const struct loft_bcurve *c, double tol,
-    struct loft_bcurve *out, double **buf);
+int loft_cad_curve_limited(struct loft_cad_doc *d, const struct loft_bcurve *c,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bcurve *));
 
-/*
- * The patch s as *count bicubic patches (48 numbers each, u-major nets,
- * over a grid of equal parts of [0,1]^2, loft_bezier_bicubics's order)
- * within tol, into *nets (malloc'd, the caller's).
- * Returns as loft_cad_lower_curve (more than 4096: LOFT_ENOCONV).
- */
-int loft_cad_lower_surface(const struct loft_bsurf *s, double tol,
-    double **nets, size_t *count);
+/* The same for a patch, as bicubic patches (no more than 4096). */
+int loft_cad_surface_limited(struct loft_cad_doc *d, const struct loft_bsurf *s,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bsurf *));
 
 #endif

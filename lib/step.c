@@ -190,49 +190,23 @@ write_surface(struct loft_cad_doc *d, const struct loft_bsurf *b)
 	return keep_face(s, b, n);
 }
 
-/* A curve, as cubic pieces within the tolerance where its degree is
- * above what readers take. */
+/* A curve or a patch, as cubics where its degree is above what readers
+ * take (the patch's links are then not kept). */
 static int
 step_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 {
-	struct loft_bcurve low;
-	double *buf = NULL;
-	int rc;
-
-	if (c->deg <= LOFT_CAD_MAXDEG)
-		return write_curve(d, c);
-	if ((rc = loft_cad_lower_curve(c, ((struct step *)d->state)->tol,
-	    &low, &buf)) == 0)
-		rc = write_curve(d, &low);
-	else if (rc != LOFT_ENOMEM)
-		d->out.bad = LOFT_EGEOM, rc = 0;
-	free(buf);
-	return rc;
+	return loft_cad_curve_limited(d, c, ((struct step *)d->state)->tol,
+	    write_curve);
 }
 
-/* A patch, as bicubic patches within the tolerance where a degree is
- * above what readers take (their links are then not kept). */
 static int
 step_surface(struct loft_cad_doc *d, const struct loft_bsurf *b)
 {
 	struct step *s = d->state;
-	double *nets = NULL;
-	size_t n = 0;
-	int rc;
 
-	if (b->m <= LOFT_CAD_MAXDEG && b->n <= LOFT_CAD_MAXDEG)
-		return write_surface(d, b);
-	s->rec = NULL;
-	if ((rc = loft_cad_lower_surface(b, s->tol, &nets, &n)) == 0)
-		for (size_t i = 0; i < n && rc == 0; i++) {
-			struct loft_bsurf c = { nets + 48 * i, 3, 3 };
-
-			rc = write_surface(d, &c);
-		}
-	else if (rc != LOFT_ENOMEM)
-		d->out.bad = LOFT_EGEOM, rc = 0;
-	free(nets);
-	return rc;
+	if (b->m > LOFT_CAD_MAXDEG || b->n > LOFT_CAD_MAXDEG)
+		s->rec = NULL;
+	return loft_cad_surface_limited(d, b, s->tol, write_surface);
 }
 
 /* ---- the shell ------------------------------------------------------- */

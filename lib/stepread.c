@@ -1061,7 +1061,6 @@ plane_face(struct step *st, long face, size_t l, long plane, long line)
 	    -INFINITY }, net[12];
 	struct frame f;
 	struct loft__bsname nm = name_of(st, l, face);
-	size_t wmark = st->c->w->len;
 	int oom = 0;
 
 	if (placement(st, ref_arg(st, pl, 1), &f) != 0) {
@@ -1092,21 +1091,7 @@ plane_face(struct step *st, long face, size_t l, long plane, long line)
 			for (int q = 0; q < 3; q++)
 				net[3 * (2 * i + j) + q] = f.o[q] + (i ? hi[0] :
 				    lo[0]) * f.x[q] + (j ? hi[1] : lo[1]) * f.y[q];
-	loft_put_type(st->c->w, "bezier-surface");
-	loft__cadin_put_name(st->c->w, "name", nm.name, nm.nname);
-	{
-		char num[32];
-
-		snprintf(num, sizeof num, "%ld", face);
-		loft_put_attr(st->c->w, "entity", num);
-	}
-	loft_put_attr(st->c->w, "m", "1");
-	loft_put_attr(st->c->w, "n", "1");
-	loft_end_line(st->c->w);
-	for (int k = 0; k < 4; k++)
-		loft_put_row(st->c->w, net + 3 * k, 3);
-	loft_end_record(st->c->w);
-	return loft__cadin_done(st->c, wmark, line);
+	return loft__bs_patch(st->c, net, 1, 1, &nm, line);
 }
 
 /* Count a face of a surface type loft does not read. */
