@@ -1105,8 +1105,11 @@ skipped(struct step *st, const struct val *t)
 	for (k = 0; k < NSKIP && st->skip[k].n > 0; k++)
 		if (st->skip[k].len == n && memcmp(st->skip[k].s, s, n) == 0)
 			break;
-	if (k == NSKIP)
-		k--;            /* the last counts the rest */
+	if (k == NSKIP) {       /* the last counts the rest */
+		k--;
+		s = "other";
+		n = 5;
+	}
 	st->skip[k].s = s;
 	st->skip[k].len = n;
 	st->skip[k].n++;
