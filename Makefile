@@ -36,17 +36,17 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/bernstein.o lib/arclen.o lib/measure.o lib/flatten.o \
           lib/merge.o lib/fair.o lib/skin.o lib/cut.o lib/error.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
-          lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o
+          lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
 PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o
 # the CAD output formats (lib/loftcad.h): the document protocol, the
 # format table, one module a format, and loftplot's picture
 CADOBJ  = lib/cad.o lib/cadformats.o lib/dxf.o lib/svgcad.o lib/step.o \
-          lib/iges.o lib/stl.o lib/obj.o lib/svgplot.o
+          lib/iges.o lib/stl.o lib/obj.o lib/svgplot.o lib/cadlimit.o
 # the CAD readers (lib/cadread.h): what they share, their table, one
 # module a reader
 CADINOBJ = lib/cadread.o lib/cadreaders.o lib/dxfread.o lib/svgread.o \
-          lib/csvread.o
+          lib/csvread.o lib/bsplineread.o lib/stepread.o lib/igesread.o
 LIBOBJ  = $(COREOBJ) $(PROGOBJ) $(CADOBJ) $(CADINOBJ)
 LIB     = bin/libloft.a
 # loftplot's page (loftplot -i), below
@@ -59,7 +59,7 @@ BINS    = $(PROGS:%=bin/%)
 CMDOBJ  = $(PROGS:%=cmd/%.o)
 # the test programs, tests/NAME.c each, linked into bin/test
 TESTPROGS = unit paper patch bezier numtest pow10gen offsetref hostile \
-          arclen cad noisy nearest tables grid
+          arclen cad noisy nearest tables grid bspline
 TESTOBJ = $(TESTPROGS:%=tests/%.o)
 TESTS   = $(TESTPROGS:%=bin/test/%) bin/test/oom.so bin/test/line/progs
 BENCHPROGS = gen floor timeit tandiff numbers

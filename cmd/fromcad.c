@@ -1,5 +1,5 @@
 /*
- * fromcad: read CAD documents (DXF, SVG, CSV) into loft streams: each
+ * fromcad: read CAD documents (DXF, SVG, CSV, STEP, IGES) into loft streams: each
  * named file whole, its drawing's curves as records.
  */
 #include <errno.h>
@@ -17,7 +17,7 @@ struct opts {
 };
 
 static const char usage_text[] =
-    "usage: fromcad [-f dxf|svg|csv] [-t tolerance] [-p digits] "
+    "usage: fromcad [-f dxf|svg|csv|step|iges] [-t tolerance] [-p digits] "
     "[file ...]\n";
 
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
@@ -99,8 +99,8 @@ read_document(struct opts *o, struct loft_cadin *cad, const char *name)
 	if (len == 0)
 		complain(o, 0, "empty file: no drawing in it");
 	else if (format < 0)
-		complain(o, 0, "not a DXF, SVG or CSV document (-f names "
-		    "the format)");
+		complain(o, 0, "not a DXF, SVG, CSV, STEP or IGES document "
+		    "(-f names the format)");
 	else
 		loft_cadin_read(format, buf, len, cad);
 	free(buf);

@@ -91,6 +91,14 @@ loft__dxf_sniff(const char *buf, size_t len)
 }
 
 int
+loft__step_sniff(const char *buf, size_t len)
+{
+	size_t i = content_start(buf, len);
+
+	return len - i >= 12 && memcmp(buf + i, "ISO-10303-21", 12) == 0;
+}
+
+int
 loft__svg_sniff(const char *buf, size_t len)
 {
 	size_t i = content_start(buf, len);

@@ -63,6 +63,7 @@ void loft__pts_put(struct loft_writer *w, const struct loft__echo *e,
  * (SVG), or a text whose first line names an x and a y column (CSV). */
 int loft__dxf_sniff(const char *buf, size_t len);
 int loft__svg_sniff(const char *buf, size_t len);
+int loft__step_sniff(const char *buf, size_t len);
 int loft__csv_sniff(const char *buf, size_t len);
 /* Complain about line of the document, printf-style; counts it. */
 void loft__cadin_say(struct loft_cadin *c, long line, const char *fmt, ...)
@@ -88,5 +89,48 @@ void loft__bezier_hermite(const double *b, int dim, double *row);
 const char *loft__cadin_quote(char *buf, size_t size, const char *s, size_t n);
 /* Whether s[0..n) is word, ignoring ASCII case. */
 int loft__word_is(const char *s, size_t n, const char *word);
+
+
+/* B-splines read from STEP and IGES (bsplineread.c).  A record's name=
+ * (the document's name of the entity, may be empty) and entity= (its
+ * number in the document, or 0: none). */
+struct loft__bsname {
+	const char *name;
+	size_t nname;
+	long entity;
+};
+/* A B-spline curve: degree, n control points of 3 numbers (z 0 for a
+ * plane curve), n + deg + 1 knots, n weights or NULL. */
+struct loft__bs {
+	int deg;
+	size_t n;
+	const double *t, *ctl, *w;
+};
+/* A B-spline surface: degrees p, q; nu by nv points of 3 numbers,
+ * u-major; knots; nu nv weights, u-major, or NULL. */
+struct loft__bsurf {
+	int p, q;
+	size_t nu, nv;
+	const double *tu, *tv, *ctl, *w;
+};
+/* Write the curve b as records (see bsplineread.c), whole or not at
+ * all; 0, or -1 after complaining at line. */
+int loft__bs_curve(struct loft_cadin *c, const struct loft__bs *b,
+    const struct loft__bsname *nm, long line);
+/* The same for the surface s. */
+int loft__bs_surface(struct loft_cadin *c, const struct loft__bsurf *s,
+    const struct loft__bsname *nm, long line);
+/* One bezier-surface record of degrees m, n and control points net
+ * (u-major); 0, or -1 after complaining at line. */
+int loft__bs_patch(struct loft_cadin *c, const double *net, int m, int n,
+    const struct loft__bsname *nm, long line);
+/* The knot vector t of want knots from distinct values val and their
+ * multiplicities mult (nval each); 0, or -1 when they do not add up. */
+int loft__bs_knots(const double *val, const long *mult, size_t nval,
+    size_t want, double *t);
+
+/* Whether buf[0..len) begins as an IGES file: a line of 80 columns
+ * whose 73rd is S (igesread.c). */
+int loft__iges_sniff(const char *buf, size_t len);
 
 #endif

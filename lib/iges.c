@@ -23,6 +23,7 @@ struct iges {
 	char line[DATA_COLS + 1];       /* the parameter line being filled */
 	int len;
 	long first;                     /* the entity's first parameter line */
+	double tol;                     /* the record's tolerance */
 };
 
 /* Close the parameter line being filled. */
@@ -112,7 +113,7 @@ iges_begin(struct loft_cad_doc *d)
 /* 126: K, M, planar, closed, polynomial, periodic, knots, weights,
  * control points, the parameter range, the plane's normal. */
 static int
-iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
+write_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 {
 	size_t np = c->npieces * (size_t)c->deg + 1;
 
@@ -145,7 +146,7 @@ iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 /* 128: K1, K2, M1, M2, closed and periodic flags, knots in u and v,
  * weights, control points with the u index running fastest, the range. */
 static int
-iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
+write_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
 {
 	param_int(d, 128);
 	param_int(d, s->m);
@@ -170,6 +171,29 @@ iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
 	param_real(d, 1);
 	param_real(d, 0);
 	return end_entity(d, 128, 1);
+}
+
+static int
+iges_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
+{
+	((struct iges *)d->state)->tol = it->tol;
+	return 0;
+}
+
+/* A curve or a patch, as cubics where its degree is above what readers
+ * take (LOFT_CAD_MAXDEG). */
+static int
+iges_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
+{
+	return loft_cad_curve_limited(d, c, ((struct iges *)d->state)->tol,
+	    write_curve);
+}
+
+static int
+iges_surface(struct loft_cad_doc *d, const struct loft_bsurf *s)
+{
+	return loft_cad_surface_limited(d, s, ((struct iges *)d->state)->tol,
+	    write_surface);
 }
 
 /* "nH..." */
@@ -260,6 +284,7 @@ iges_free(struct loft_cad_doc *d)
 
 const struct loft_cad_format loft_cad_iges = {
 	.name = "iges", .title = "IGES",
-	.begin = iges_begin, .end = iges_end, .curve = iges_curve,
+	.begin = iges_begin, .end = iges_end, .begin_record = iges_begin_record,
+	.curve = iges_curve,
 	.surface = iges_surface, .free = iges_free,
 };

@@ -1498,4 +1498,89 @@ void loft_label_box(const struct loft_label *l, double font, double *lo,
     double *hi);
 void loft_label_leader(const struct loft_label *l, double *sg);
 
+/* ------------------------------------------------------------------ */
+/* B-splines as Bezier pieces (bspline.c)                              */
+
+#define LOFT_BSPLINE_MAXDEG 63          /* as LOFT_BEZIER_MAXPTS - 1 */
+#define LOFT_BSPLINE_MAXDIM 4           /* a point in space and a weight */
+#define LOFT_BSPLINE_MAXCTL 100000000   /* control points in one direction */
+
+/*
+ * Check a B-spline of degree deg (1 to LOFT_BSPLINE_MAXDEG) with nctl
+ * control points (deg + 1 to LOFT_BSPLINE_MAXCTL) and the nctl + deg + 1
+ * knots t: finite, never decreasing, at least one span [t_i, t_i+1) of
+ * positive length for i from deg to nctl - 1.  Returns 0, or LOFT_EINPUT
+ * with err saying what is wrong (row: the knot's index).
+ */
+int loft_bspline_check(const double *t, size_t nctl, int deg,
+    struct loft_error *err);
+
+/* The count of spans of positive length, i from deg to nctl - 1. */
+size_t loft_bspline_spans(const double *t, size_t nctl, int deg);
+
+/*
+ * The B-spline curve of degree deg, knots t and control points ctl (nctl
+ * of dim numbers, 1 <= dim <= LOFT_BSPLINE_MAXDIM) as its Bezier pieces,
+ * by knot insertion, clamped or not: piece k (of loft_bspline_spans) at
+ * out[k (deg + 1) dim], the curve over its span, whose ends go into
+ * range[2k], range[2k + 1] (range may be NULL).  Exact but for rounding.
+ * A rational curve is converted in homogeneous form (w x, w y, w z, w).
+ * Returns 0, or LOFT_EINPUT (loft_bspline_check, or dim).
+ */
+int loft_bspline_bezier(const double *t, size_t nctl, int deg,
+    const double *ctl, int dim, double *out, double *range,
+    struct loft_error *err);
+
+/*
+ * The tensor-product B-spline surface of degrees p in u and q in v,
+ * knots tu (nu + p + 1) and tv (nv + q + 1), control points P_ij
+ * u-major at ctl[(i nv + j) dim], as Bezier patches: patch (a, b), a
+ * the u span and b the v span (of loft_bspline_spans), at
+ * out[(a sv + b) (p + 1) (q + 1) dim], its points u-major.  Returns 0,
+ * LOFT_EINPUT (as loft_bspline_bezier) or LOFT_ENOMEM.
+ */
+int loft_bspline_surface_bezier(const double *tu, size_t nu, int p,
+    const double *tv, size_t nv, int q, const double *ctl, int dim,
+    double *out, struct loft_error *err);
+
+/*
+ * The rational Bezier curve hw of degree deg (1 to 63), points of
+ * dim + 1 numbers (w x, ..., w; dim 1 to 3, weights positive; a
+ * polynomial one has all weights 1), as *n cubic Bezier pieces (4 points
+ * of dim numbers each into out, which holds 4 max dim) over equal parts
+ * of [0, 1], each the cubic that matches the curve's points and
+ * derivatives at its ends, within tol of the curve at the same
+ * parameter (checked at 15 inner points a piece with a margin of 2).
+ * *n is a power of 2 no more than max.  Returns 0; LOFT_EGEOM where a
+ * weight is not positive; LOFT_ENOCONV when more than max pieces would
+ * be needed; LOFT_EINPUT for bad arguments.
+ */
+int loft_rational_cubics(const double *hw, int deg, int dim, double tol,
+    size_t max, double *out, size_t *n, struct loft_error *err);
+
+/*
+ * The same for a rational tensor Bezier surface in space, degrees m and
+ * n, points (w x, w y, w z, w) u-major: *ku by *kv bicubic patches (16
+ * points of 3 numbers, u-major) into out (48 max max numbers), patch
+ * (a, b) over [a/ku, (a+1)/ku] x [b/kv, (b+1)/kv] at out[48 (a kv + b)],
+ * each Hermite-interpolating the corners' points, derivatives and
+ * twists; ku and kv powers of 2, ku kv at most max max, the direction
+ * that gains more halved first.  Returns as loft_rational_cubics.
+ */
+int loft_rational_bicubics(const double *hw, int m, int n, double tol,
+    size_t max, double *out, size_t *ku, size_t *kv,
+    struct loft_error *err);
+
+
+/*
+ * loft_rational_cubics and loft_rational_bicubics for polynomial Bezier
+ * curves (ctl, dim 1 to 3) and surfaces (in space, u-major), all weights
+ * 1: for a format that reads no degree as high.  Returns as they do.
+ */
+int loft_bezier_cubics(const double *ctl, int deg, int dim, double tol,
+    size_t max, double *out, size_t *n, struct loft_error *err);
+int loft_bezier_bicubics(const double *ctl, int m, int n, double tol,
+    size_t max, double *out, size_t *ku, size_t *kv,
+    struct loft_error *err);
+
 #endif

@@ -284,4 +284,27 @@ void loft_cad_knots(size_t npieces, int deg, double *knot, int *mult);
 /* Point k of the B-spline control points of c (k <= npieces * deg). */
 const double *loft_cad_ctl(const struct loft_bcurve *c, size_t k);
 
+
+/* ------------------------------------------------------------------ */
+/* Degrees a format cannot take (cadlimit.c)                           */
+
+/*
+ * The highest B-spline degree STEP and IGES readers take: OpenCASCADE
+ * reads a curve or surface of a higher one as nothing.
+ */
+#define LOFT_CAD_MAXDEG 25
+
+/*
+ * Hand the curve c to write as it is, or, when its degree is above
+ * LOFT_CAD_MAXDEG, as cubic pieces each within tol of it at the same
+ * parameter (bspline.c).  Returns write's code, or LOFT_ENOMEM; when no
+ * 4096 cubics a piece would do, d->out.bad is LOFT_EGEOM.
+ */
+int loft_cad_curve_limited(struct loft_cad_doc *d, const struct loft_bcurve *c,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bcurve *));
+
+/* The same for a patch, as bicubic patches (no more than 4096). */
+int loft_cad_surface_limited(struct loft_cad_doc *d, const struct loft_bsurf *s,
+    double tol, int (*write)(struct loft_cad_doc *, const struct loft_bsurf *));
+
 #endif

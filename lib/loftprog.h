@@ -334,5 +334,7 @@ int loft_cadin_read(int format, const char *buf, size_t len, struct loft_cadin *
 int loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_svg_read(const char *buf, size_t len, struct loft_cadin *c);
 int loft_csv_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_step_read(const char *buf, size_t len, struct loft_cadin *c);
+int loft_iges_read(const char *buf, size_t len, struct loft_cadin *c);
 
 #endif

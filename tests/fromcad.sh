@@ -53,7 +53,7 @@ svg() {         # svg FILE BODY: an SVG 100 mm square, 1 mm a user unit
 }
 
 usage_ok fromcad
-fails 2 "-f 'dwg': want dxf, svg or csv" "$F -f dwg /dev/null"
+fails 2 "-f 'dwg': want dxf, svg, csv, step or iges" "$F -f dwg /dev/null"
 fails 2 "-t" "$F -t 0 /dev/null"
 fails 2 "-p '18'" "$F -p 18 /dev/null"
 
@@ -919,7 +919,7 @@ out_is "7 8
 # ---- formats, files, output -------------------------------------------
 fails 1 "empty.dxf: empty file" "$F $(: >"$T/empty.dxf"; echo "$T/empty.dxf")"
 printf '\001\002\003 binary\n' >"$T/junk"
-fails 1 "junk: not a DXF, SVG or CSV document" "$F $T/junk"
+fails 1 "junk: not a DXF, SVG, CSV, STEP or IGES document" "$F $T/junk"
 fails 1 "nosuch: No such file" "$F $T/nosuch"
 # -f reads what the content would not say: a DXF named .svg
 cp "$T/none.dxf" "$T/dxf.svg"

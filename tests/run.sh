@@ -48,12 +48,14 @@ suite bin/test/cad
 slow sh tests/tocad.sh
 suite sh tests/loftcut.sh
 slow sh tests/fromcad.sh
+slow sh tests/stepiges.sh
 slow sh tests/roundtrip.sh
 slow sh tests/bad.sh
 suite bin/test/hostile
 slow sh tests/oom.sh
 suite bin/test/arclen
 suite bin/test/grid
+suite bin/test/bspline
 slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh

@@ -619,6 +619,9 @@ PY
 		[ "$1" = "$want" ] && ok || no "OpenCASCADE: $f: $1 surfaces, want $want"
 		echo "$2" >"$T/val"; within "OpenCASCADE: $f: sample's points off the surfaces" 1.5e-6
 	done
+	# the two patches of hull.step share a side: one edge (7, not 8)
+	set -- $("$OCCPY" "$T/occ.py" "$T/hull.step" "$T/hull.pts" 1 2>/dev/null | tail -n 1)
+	[ "$1" = 7 ] && ok || no "OpenCASCADE: hull.step: $1 edges, want 7 (one shared)"
 else
 	echo "tocad: skipped: no python3-gmsh (OpenCASCADE)"
 fi

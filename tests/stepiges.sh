@@ -1,0 +1,579 @@
+#!/bin/sh
+# stepiges.sh: fromcad's STEP and IGES readers, and tocad's STEP as a
+# sewn shell.  References: the records tocad was given (a round trip
+# comes back to rounding, by sampling both at the same parameters);
+# closed forms for conics written by hand; OpenCASCADE (python3-gmsh)
+# for files it writes, its own evaluation of its surfaces, and its
+# reading of tocad's shells (edges, faces, volumes).  What needs gmsh
+# skips with one line when it is missing.
+# The last line is "stepiges: N passed, M failed".
+
+T=bin/test/stepiges
+. tests/lib.sh
+
+# a python that has module $1, or nothing
+python_with() {
+	for p in /usr/bin/python3 python3; do
+		if command -v "$p" >/dev/null 2>&1 && "$p" -c "import $1" \
+		    2>/dev/null; then
+			echo "$p"
+			return
+		fi
+	done
+}
+OCCPY=$(python_with gmsh)
+
+# within WHAT LIMIT: $T/val holds the worst error; at most LIMIT
+within() {
+	read -r e <"$T/val"
+	awk -v e="$e" -v l="$2" 'BEGIN { exit !(e ~ /^[0-9.]+([eE][-+]?[0-9]+)?$/ &&
+	    e + 0 <= l + 0) }' &&
+	    ok || no "$1: error '$e', want at most $2"
+}
+
+# same A B: the largest difference between the rows of numbers of A and
+# B (sample's output), a row equal to the one before dropped (where a
+# curve of one record comes back as pieces, their joints are twice),
+# over the largest coordinate; "count" when the rows do not pair up
+same() {
+	awk '
+	function keep(f, i,    s, k, n) { s = $0; n = NF
+		if (n == 0) return
+		if (s == last[f]) return
+		last[f] = s; R[f, ++N[f]] = s; W[f, N[f]] = n }
+	FNR == 1 { f++ }
+	{ keep(f) }
+	END { if (N[1] != N[2] || N[1] == 0) { print "count " N[1] " " N[2]; exit }
+		for (i = 1; i <= N[1]; i++) {
+			n = split(R[1, i], a, " "); split(R[2, i], b, " ")
+			for (k = 1; k <= n; k++) { d = a[k] - b[k]; if (d < 0) d = -d
+				if (d > w) w = d; m = a[k] < 0 ? -a[k] : a[k]; if (m > big) big = m } }
+		print (big > 0 ? w / big : w) }' "$1" "$2"
+}
+
+# ---- the inputs -----------------------------------------------------------
+
+$B/splinefit man/figures/insole.knots >"$T/ins.cubic"
+printf '0 0 0\n10 5 2\n20 0 4\n30 -5 3\n' | $B/splinefit -o >"$T/space.cubic"
+printf 'quartic id=7\n0 0 10 0 0 12 0 -12 5 4\n10 0 20 4 0 -12 3 2 1 1\n' \
+    >"$T/q.quartic"
+printf 'bezier\n0 0 1\n2 6 0\n5 -4 2\n7 8 1\n9 -3 0\n12 1 3\n' >"$T/b5.bezier"
+$B/patchnew -c 0,0,0 -c 10,0,0 -c 0,10,0 -c 10,10,5 | $B/patchsplit -u 0.5 |
+    $B/patchdrag -i 2 -u 0.5 -v 0.5 -b 0,0,3 >"$T/hull.patch"
+printf 'bezier-surface m=2 n=1\n0 0 0\n0 4 1\n2 0 3\n2 4 -1\n5 1 0\n5 5 2\n' \
+    >"$T/bs.surf"
+
+# ---- round trips: tocad's STEP and IGES come back to rounding -------------
+
+for fmt in step iges; do
+	for r in ins.cubic space.cubic q.quartic b5.bezier hull.patch bs.surf; do
+		run "$B/tocad -f $fmt $T/$r | $B/fromcad"
+		status 0
+		$B/sample -n 7 "$T/$r" >"$T/a"
+		$B/sample -n 7 "$T/out" >"$T/b" 2>"$T/err" && ok ||
+		    no "$fmt $r: fromcad's records not sampled: $(head -2 "$T/err")"
+		same "$T/a" "$T/b" >"$T/val"
+		within "$fmt round trip of $r (relative)" 1e-12
+	done
+	# a file named on the line, told from its content
+	$B/tocad -f $fmt "$T/bs.surf" >"$T/x.$fmt"
+	run "$B/fromcad $T/x.$fmt"
+	status 0
+	grep -q '^bezier-surface .*m=2 n=1' "$T/out" && ok ||
+	    no "$fmt: not told from its content: $(head -1 "$T/out")"
+done
+
+# ---- STEP written by hand: conics, rational forms, trims ------------------
+
+step_doc() {
+	printf 'ISO-10303-21;\nHEADER;\nFILE_SCHEMA((%s));\nENDSEC;\nDATA;\n' \
+	    "'AUTOMOTIVE_DESIGN'"
+	cat
+	printf 'ENDSEC;\nEND-ISO-10303-21;\n'
+}
+# a circle of radius 5 about (1,2,3) in a tilted plane; a quarter arc of
+# it trimmed by parameter; a rational B-spline quarter circle of radius
+# 2 in the complex-entity form; a line trimmed by points; an ellipse
+step_doc >"$T/conic.step" <<'EOF'
+#1=CARTESIAN_POINT('',(1.,2.,3.));
+#2=DIRECTION('',(0.,0.6,0.8));
+#3=DIRECTION('',(1.,0.,0.));
+#4=AXIS2_PLACEMENT_3D('',#1,#2,#3);
+#5=CIRCLE('c',#4,5.);
+#6=TRIMMED_CURVE('t',#5,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.5707963267948966)),.T.,.PARAMETER.);
+#10=CARTESIAN_POINT('',(2.,0.,0.));
+#11=CARTESIAN_POINT('',(2.,2.,0.));
+#12=CARTESIAN_POINT('',(0.,2.,0.));
+#13=(BOUNDED_CURVE()B_SPLINE_CURVE(2,(#10,#11,#12),.CIRCULAR_ARC.,.F.,.F.)B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.,1.),.UNSPECIFIED.)CURVE()GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE((1.,0.7071067811865476,1.))REPRESENTATION_ITEM(''));
+#20=CARTESIAN_POINT('',(0.,0.,0.));
+#21=DIRECTION('',(1.,1.,0.));
+#22=VECTOR('',#21,1.);
+#23=LINE('',#20,#22);
+#24=CARTESIAN_POINT('',(1.,1.,0.));
+#25=CARTESIAN_POINT('',(3.,3.,0.));
+#26=TRIMMED_CURVE('',#23,(#24),(#25),.T.,.CARTESIAN.);
+#30=ELLIPSE('e',#4,4.,2.);
+#40=GEOMETRIC_SET('',(#5,#6,#13,#26,#30));
+EOF
+run "$B/fromcad -t 1e-9 $T/conic.step"
+status 0
+[ "$(grep -c '^cubic' "$T/out")" -eq 5 ] && ok || no "conics: $(grep -c '^cubic' "$T/out") curves, want 5"
+$B/sample -n 50 "$T/out" >"$T/pts"
+# each curve's points against its closed form, in the record's order
+awk -v c="1 2 3" '
+	BEGIN { cx = 1; cy = 2; cz = 3; nx = 0; ny = 0.6; nz = 0.8 }
+	NF == 0 { if (!gap) rec++; gap = 1; next }
+	{ gap = 0; r = rec + 1; x = $1 - cx; y = $2 - cy; z = $3 - cz
+	  if (r <= 2) { d = sqrt(x*x + y*y + z*z) - 5; e = x*nx + y*ny + z*nz }
+	  else if (r == 3) { d = sqrt($1*$1 + $2*$2) - 2; e = $3 }
+	  else if (r == 4) { d = $1 - $2; e = ($1 < 1 - 1e-12 || $1 > 3 + 1e-12) ? 1 : $3 }
+	  else { u = x; v = y * 0.8 - z * 0.6; d = sqrt((u/4)^2 + (v/2)^2) - 1; e = x*nx + y*ny + z*nz }
+	  if (d < 0) d = -d; if (e < 0) e = -e; if (d > w) w = d; if (e > w) w = e
+	  if (r == 2 && (x < -1e-9 || $2 - cy < -1e-9)) w = 9 }
+	END { print w + 0 }' "$T/pts" >"$T/val"
+within "conics against their closed forms (-t 1e-9)" 1e-9
+# the quarter arc (the second record) runs from parameter 0, (6,2,3), to
+# a quarter turn on, (1,6,0): o + 5 y with y = z x x = (0,0.8,-0.6)
+awk 'NF == 0 { if (!gap) rec++; gap = 1; next } { gap = 0 }
+    rec == 1 { if (!n++) a = $0; b = $0 }
+    END { split(a, p, " "); split(b, q, " ")
+	print sqrt((p[1]-6)^2 + (p[2]-2)^2 + (p[3]-3)^2) + sqrt((q[1]-1)^2 + (q[2]-6)^2 + q[3]^2) }' \
+    "$T/pts" >"$T/val"
+within "the trimmed arc's ends" 1e-12
+
+# a rational B-spline surface (a quarter cylinder of radius 3, height 2)
+step_doc >"$T/cyl.step" <<'EOF'
+#1=CARTESIAN_POINT('',(3.,0.,0.));
+#2=CARTESIAN_POINT('',(3.,0.,2.));
+#3=CARTESIAN_POINT('',(3.,3.,0.));
+#4=CARTESIAN_POINT('',(3.,3.,2.));
+#5=CARTESIAN_POINT('',(0.,3.,0.));
+#6=CARTESIAN_POINT('',(0.,3.,2.));
+#7=(BOUNDED_SURFACE()B_SPLINE_SURFACE(2,1,((#1,#2),(#3,#4),(#5,#6)),.UNSPECIFIED.,.F.,.F.,.F.)B_SPLINE_SURFACE_WITH_KNOTS((3,3),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.)GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_SURFACE(((1.,1.),(0.7071067811865476,0.7071067811865476),(1.,1.)))REPRESENTATION_ITEM('')SURFACE());
+#8=GEOMETRIC_SET('',(#7));
+EOF
+run "$B/fromcad -t 1e-6 $T/cyl.step"
+status 0
+$B/sample -n 6 "$T/out" | awk 'NF { d = sqrt($1*$1 + $2*$2) - 3; if (d < 0) d = -d
+    if ($3 < -1e-12 || $3 > 2 + 1e-12) d = 1; if (d > w) w = d } END { print w + 0 }' >"$T/val"
+within "rational surface within -t 1e-6 of the cylinder" 1e-6
+
+# bad STEP: each says what and where, and exits 1
+step_doc >"$T/bad.step" <<'EOF'
+#1=CARTESIAN_POINT('',(0.,0.,0.));
+#2=CARTESIAN_POINT('',(1.,0.,0.));
+#3=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(1.,0.),.UNSPECIFIED.);
+#4=B_SPLINE_CURVE_WITH_KNOTS('',70,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#5=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#9),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#6=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,3),(0.,1.),.UNSPECIFIED.);
+#7=B_SPLINE_CURVE_WITH_KNOTS('good',1,(#1,#2),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,1.),.UNSPECIFIED.);
+#8=GEOMETRIC_SET('',(#3,#4,#5,#6,#7));
+EOF
+run "$B/fromcad $T/bad.step"
+status 1
+says "bad.step:8: knot 3 decreases"
+says "#4: its degree (1 to 63) or control points cannot be read"
+says "#5: its degree"
+says "#6: its knots and multiplicities do not make 4 knots"
+grep -q '^cubic name=good' "$T/out" && ok || no "bad step: the good curve not read: $(head -2 "$T/out")"
+run "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
+fails 1 "no entity instances" "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
+fails 1 "not a DXF, SVG, CSV, STEP or IGES document" "echo hello | $B/fromcad"
+
+# ---- files OpenCASCADE writes (through gmsh), checked by its own evaluation
+
+if [ -n "$OCCPY" ]; then
+	cat >"$T/occgen.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+occ = gmsh.model.occ
+def save(name):
+    occ.synchronize()
+    gmsh.write(sys.argv[1] + "/" + name + ".step")
+    gmsh.model.remove()
+gmsh.model.add("box"); occ.addBox(1, 2, 3, 4, 5, 6); save("box")
+gmsh.model.add("cyl"); occ.addCylinder(0, 0, 0, 0, 0, 3, 1.5); save("cyl")
+gmsh.model.add("sph"); occ.addSphere(0, 0, 0, 2); save("sph")
+gmsh.model.add("fil"); occ.addBox(0, 0, 0, 2, 2, 2); occ.synchronize()
+occ.fillet([1], [1, 2], [0.3]); save("fil")
+# 6 x 5 points of degree 3: 3 x 2 spans, knots 0..3 and 0..2
+gmsh.model.add("bs")
+p = [occ.addPoint(i, j, 0.2 * ((i - 2.5) ** 2 - (j - 2) ** 2 + i * j / 3.0))
+     for j in range(5) for i in range(6)]
+occ.addBSplineSurface(p, 6, degreeU=3, degreeV=3); save("bs")
+gmsh.model.add("rat")
+p = [occ.addPoint(i, j, 0.5 * ((i + j) % 2)) for j in range(3) for i in range(4)]
+w = [1 + 0.5 * ((3 * k) % 4) for k in range(12)]
+occ.addBSplineSurface(p, 4, degreeU=2, degreeV=2, weights=w); save("rat")
+gmsh.finalize()
+PY
+	# occcheck.py FILE PTS: "faces points worst": the largest distance
+	# from PTS's points to the surfaces of FILE as OpenCASCADE evaluates
+	# them (getValue at the parameters of the nearest point), over the
+	# model's size
+	cat >"$T/occcheck.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+faces = [t for d, t in gmsh.model.getEntities(2)]
+pts = [[float(x) for x in l.split()[:3]] for l in open(sys.argv[2]) if l.strip()]
+worst = 0.0
+for p in pts:
+    best = 1e300
+    for t in faces:
+        q = gmsh.model.getClosestPoint(2, t, p)[0]
+        try:
+            q = gmsh.model.getValue(2, t, gmsh.model.getParametrization(2, t, q))
+        except Exception:
+            pass
+        best = min(best, sum((q[k] - p[k]) ** 2 for k in range(3)) ** 0.5)
+    worst = max(worst, best)
+b = gmsh.model.getBoundingBox(-1, -1)
+size = sum((b[k + 3] - b[k]) ** 2 for k in range(3)) ** 0.5
+print(len(faces), len(pts), worst / size)
+gmsh.finalize()
+PY
+	# occspan.py FILE RECORDS SU SV: the Bezier patches of RECORDS, span
+	# (a, b) u-major, evaluated here (Bernstein sums) at a 7 x 7 grid
+	# against OpenCASCADE's getValue at (a + s, b + r); the worst distance
+	cat >"$T/occspan.py" <<'PY'
+import sys, gmsh
+from math import comb
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+recs, cur = [], None
+for l in open(sys.argv[2]):
+    w = l.split()
+    if not w:
+        cur = None
+    elif w[0] == "bezier-surface":
+        a = dict(x.split("=") for x in w[1:])
+        cur = [int(a["m"]), int(a["n"]), []]
+        recs.append(cur)
+    else:
+        cur[2].append([float(x) for x in w])
+su, sv = int(sys.argv[3]), int(sys.argv[4])
+t = gmsh.model.getEntities(2)[0][1]
+worst = 0.0 if len(recs) == su * sv else 1e300
+for k, (m, n, P) in enumerate(recs[:su * sv]):
+    a, b = k // sv, k % sv
+    for i in range(7):
+        for j in range(7):
+            s, r = i / 6.0, j / 6.0
+            x = [sum(comb(m, p) * s ** p * (1 - s) ** (m - p) *
+                     comb(n, q) * r ** q * (1 - r) ** (n - q) *
+                     P[p * (n + 1) + q][c] for p in range(m + 1)
+                     for q in range(n + 1)) for c in range(3)]
+            y = gmsh.model.getValue(2, t, [a + s, b + r])
+            worst = max(worst, sum((x[c] - y[c]) ** 2 for c in range(3)) ** 0.5)
+print(len(recs), worst)
+gmsh.finalize()
+PY
+	mkdir -p "$T/occ"
+	"$OCCPY" "$T/occgen.py" "$T/occ" >/dev/null 2>&1
+	# file, -t, the records wanted, the largest deviation over the size,
+	# sample's steps (rat's -t 1e-3 is 2.7e-4 of its size, 3.6)
+	for c in box:0:6:1e-14:5 bs:0:6:1e-14:5 cyl:0:2:1e-14:5 \
+	    fil:0:6:1e-14:5 rat:1e-3:0:2.7e-4:2; do
+		set -- $(echo "$c" | tr : ' ')
+		topt=; [ "$2" = 0 ] || topt="-t $2"
+		$B/fromcad $topt "$T/occ/$1.step" >"$T/occ/$1.loft" 2>"$T/err"
+		n=$(grep -c '^bezier-surface' "$T/occ/$1.loft")
+		[ "$3" = 0 ] || [ "$n" = "$3" ] && ok ||
+		    no "OpenCASCADE's $1.step: $n surfaces, want $3"
+		$B/sample -n "$5" "$T/occ/$1.loft" >"$T/occ/$1.pts"
+		set -- $("$OCCPY" "$T/occcheck.py" "$T/occ/$1.step" \
+		    "$T/occ/$1.pts" 2>/dev/null | tail -n 1) "$4" "$1"
+		echo "$3" >"$T/val"
+		within "OpenCASCADE's $5.step: $2 points off its faces" "$4"
+	done
+	# what is passed over is said, with exit 1
+	run "$B/fromcad $T/occ/cyl.step"
+	status 1
+	says "1 CYLINDRICAL_SURFACE item passed over"
+	run "$B/fromcad $T/occ/sph.step"
+	status 1
+	says "1 SPHERICAL_SURFACE item passed over"
+	# the B-spline's spans, patch by patch, at OpenCASCADE's parameters
+	set -- $("$OCCPY" "$T/occspan.py" "$T/occ/bs.step" "$T/occ/bs.loft" 3 2 \
+	    2>/dev/null | tail -n 1)
+	[ "$1" = 6 ] && ok || no "OpenCASCADE's bs.step: $1 patches, want 6"
+	echo "$2" >"$T/val"
+	within "OpenCASCADE's bs.step: patches against getValue by span" 1e-14
+else
+	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE): its files, shells and degree 63"
+fi
+
+# ---- tocad's STEP as a sewn shell ------------------------------------------
+
+# a closed box of six bilinear patches, each normal outward
+cat >"$T/cube.surf" <<'EOF'
+bezier-surface m=1 n=1
+0 0 0
+0 1 0
+2 0 0
+2 1 0
+
+bezier-surface m=1 n=1
+0 0 3
+2 0 3
+0 1 3
+2 1 3
+
+bezier-surface m=1 n=1
+0 0 0
+2 0 0
+0 0 3
+2 0 3
+
+bezier-surface m=1 n=1
+0 1 0
+0 1 3
+2 1 0
+2 1 3
+
+bezier-surface m=1 n=1
+0 0 0
+0 0 3
+0 1 0
+0 1 3
+
+bezier-surface m=1 n=1
+2 0 0
+2 1 0
+2 0 3
+2 1 3
+EOF
+# hull.patch with patch 3's numbers moved by rounding (a part in 1e15):
+# its shared side is no longer the same points, but its link still says
+# it is shared; and without the links, two sides
+awk '/^patch id=3/ { p = 1 } /^$/ { p = 0 } !p || /^patch/ { print; next }
+    { for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * (1 + 1e-15)); print }' \
+    "$T/hull.patch" >"$T/nudged.patch"
+sed -E 's/ (u0|u1|v0|v1)=[0-9]+//g' "$T/nudged.patch" >"$T/unlinked.patch"
+# counted in the file: faces, edges, vertices, the shell
+for c in hull.patch:2:7:6:OPEN_SHELL nudged.patch:2:7:6:OPEN_SHELL \
+    unlinked.patch:2:8:8:OPEN_SHELL cube.surf:6:12:8:CLOSED_SHELL \
+    man/examples/hull.design:24:58:35:OPEN_SHELL; do
+	set -- $(echo "$c" | tr : ' ')
+	f=$1; [ -f "$f" ] || f=$T/$1
+	$B/tocad -f step "$f" >"$T/sewn.step"
+	got=$(awk '/ADVANCED_FACE/ { f++ } /EDGE_CURVE/ { e++ } /VERTEX_POINT/ { v++ }
+	    /CLOSED_SHELL/ { s = "CLOSED_SHELL" } /OPEN_SHELL/ { s = "OPEN_SHELL" }
+	    END { print f + 0, e + 0, v + 0, s }' "$T/sewn.step")
+	[ "$got" = "$2 $3 $4 $5" ] && ok ||
+	    no "step shell of $1: faces edges vertices '$got', want '$2 $3 $4 $5'"
+	run "$B/fromcad $T/sewn.step"
+	status 0
+	[ "$(grep -c '^bezier-surface' "$T/out")" = "$2" ] && ok ||
+	    no "step shell of $1: not $2 surfaces back"
+done
+if [ -n "$OCCPY" ]; then
+	# OpenCASCADE reads one connected shell: vertices, edges, faces,
+	# volumes, and the volume's size
+	cat >"$T/topo.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+n = [len(gmsh.model.getEntities(d)) for d in range(4)]
+v = sum(gmsh.model.occ.getMass(3, t) for d, t in gmsh.model.getEntities(3))
+print(*n, "%.12g" % v)
+gmsh.finalize()
+PY
+	for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
+	    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
+	    man/examples/hull.design:35:58:24:0:0; do
+		set -- $(echo "$c" | tr : ' ')
+		f=$1; [ -f "$f" ] || f=$T/$1
+		$B/tocad -f step "$f" >"$T/sewn.step"
+		got=$("$OCCPY" "$T/topo.py" "$T/sewn.step" 2>/dev/null | tail -n 1)
+		[ "$got" = "$2 $3 $4 $5 $6" ] && ok ||
+		    no "OpenCASCADE on the shell of $1: '$got', want '$2 $3 $4 $5 $6'"
+	done
+else
+	:       # said once above
+fi
+
+# ---- degrees above 25: cubic pieces within -t, which OpenCASCADE reads -----
+
+awk 'BEGIN { print "bezier"; for (i = 0; i < 64; i++) print i, i % 2 }' \
+    >"$T/b63.bezier"
+awk 'BEGIN { print "bezier-surface m=30 n=2"
+    for (i = 0; i <= 30; i++) for (j = 0; j <= 2; j++)
+	print i, j, (i % 3) * (j == 1) }' >"$T/s30.surf"
+for fmt in step iges; do
+	run "$B/tocad -f $fmt -t 1e-4 $T/b63.bezier"
+	status 0
+	cp "$T/out" "$T/b63.$fmt"
+	run "$B/fromcad $T/b63.$fmt"
+	status 0
+	grep -q '^cubic' "$T/out" && ok || no "$fmt: degree 63 not written as cubics"
+	# every point of the cubics is within -t of the curve at the same
+	# parameter: sampled at the same steps (the pieces cut the curve's
+	# parameter evenly, 256 of them here)
+	n=$(grep -c . "$T/out"); n=$((n - 1))
+	$B/sample -n "$n" "$T/b63.bezier" >"$T/a"
+	$B/sample -n 1 "$T/out" >"$T/b"
+	paste -d ' ' "$T/a" "$T/b" | awk 'NF == 4 { d = sqrt(($1-$3)^2 + ($2-$4)^2)
+	    if (d > w) w = d } END { print w + 0 }' >"$T/val"
+	within "$fmt: degree 63 as cubics, at the pieces' ends" 1e-12
+	$B/sample -n 8 "$T/out" >"$T/b"
+	$B/sample -n $((8 * n)) "$T/b63.bezier" >"$T/a"
+	paste -d ' ' "$T/a" "$T/b" | awk 'NF == 4 { d = sqrt(($1-$3)^2 + ($2-$4)^2)
+	    if (d > w) w = d } END { print w + 0 }' >"$T/val"
+	within "$fmt: degree 63 as cubics within -t 1e-4" 1e-4
+	run "$B/tocad -f $fmt -t 1e-4 $T/s30.surf"
+	status 0
+	cp "$T/out" "$T/s30.$fmt"
+done
+if [ -n "$OCCPY" ]; then
+	# OpenCASCADE finds the curve and the surface, and sample's points
+	# of the records given lie on them within -t
+	cat >"$T/occnear.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+dim = int(sys.argv[3])
+ents = [t for d, t in gmsh.model.getEntities(dim)]
+worst = 0.0 if ents else 1e300
+for l in open(sys.argv[2]):
+    p = [float(x) for x in l.split()]
+    if not p:
+        continue
+    p = (p + [0.0, 0.0])[:3]
+    best = min(sum((c - q) ** 2 for c, q in zip(
+        gmsh.model.getClosestPoint(dim, t, p)[0], p)) ** 0.5 for t in ents)
+    worst = max(worst, best)
+print(len(ents), worst)
+gmsh.finalize()
+PY
+	$B/sample -n 100 "$T/b63.bezier" >"$T/b63.pts"
+	$B/sample -n 6 "$T/s30.surf" >"$T/s30.pts"
+	for f in b63:1 s30:2; do
+		for fmt in step iges; do
+			set -- $("$OCCPY" "$T/occnear.py" "$T/${f%:*}.$fmt" \
+			    "$T/${f%:*}.pts" "${f#*:}" 2>/dev/null | tail -n 1)
+			[ "${1:-0}" -ge 1 ] && ok ||
+			    no "OpenCASCADE: ${f%:*}.$fmt read as nothing"
+			echo "$2" >"$T/val"
+			within "OpenCASCADE: ${f%:*}.$fmt within -t 1e-4" 1e-4
+		done
+	done
+else
+	:       # said once above
+fi
+
+# ---- IGES written by hand: lines, arcs, planes, matrices, dependents -------
+
+# iges_doc: an IGES file from lines "type form matrix-DE status params;"
+# (the parameters without the type), by the fixed form: 80 columns,
+# directory entries of two lines, parameters in columns 1-64 with their
+# entry's line in 66-72
+iges_doc() {
+	awk '
+	{ type[++n] = $1; form[n] = $2; mat[n] = $3; st[n] = $4
+	  p = $0; sub(/^[^ ]+ [^ ]+ [^ ]+ [^ ]+ /, "", p); par[n] = $1 "," p }
+	END {
+	  printf "%-72sS%7d\n", "hand made", 1
+	  printf "%-72sG%7d\n", "1H,,1H;,4Htest,8Htest.igs,4Htest,4Htest,32,38,6,308,15,", 1
+	  printf "%-72sG%7d\n", "4Htest,1.,2,2HMM,1,1.,15H20260101.000000,1E-08,10.,4Htest,4Htest,", 2
+	  printf "%-72sG%7d\n", "11,0,15H20260101.000000;", 3
+	  pl = 0
+	  for (i = 1; i <= n; i++) {   # parameter lines first, to count them
+		s = par[i]; first[i] = pl + 1; cnt = 0
+		while (length(s) > 0) { P[++pl] = sprintf("%-64s %7dP%7d", substr(s, 1, 64), 2 * i - 1, pl)
+			s = substr(s, 65); cnt++ }
+		lines[i] = cnt }
+	  for (i = 1; i <= n; i++) {
+		printf "%8d%8d%8d%8d%8d%8d%8d%8d%8sD%7d\n", type[i], first[i], 0, 0, 0, 0, mat[i], 0, st[i], 2 * i - 1
+		printf "%8d%8d%8d%8d%8d%8s%8s%8s%8dD%7d\n", type[i], 0, 0, lines[i], form[i], "", "", "LABEL" i, 0, 2 * i }
+	  for (k = 1; k <= pl; k++) print P[k]
+	  printf "S%7dG%7dD%7dP%7d%40sT%7d\n", 1, 3, 2 * n, pl, "", 1 }'
+}
+# 1 (D1): a segment; 2 (D3): a matrix, a quarter turn about z and a move
+# by (10,0,0); 3 (D5): an arc of radius 2 about (1,1) at z 3, from
+# angle 0 to a half turn, moved by D3; 4 (D7): a full circle; 5 (D9): a
+# segment that belongs to a composite curve (status 01: passed over);
+# 6 (D11): that composite curve, made of 5; 7 (D13): a plane z = 1
+# bounded by the composite curve and by 4; 8 (D15): a curve of a kind
+# loft does not read (112)
+iges_doc >"$T/hand.igs" <<'EOF'
+110 0 0 00000000 0.,0.,0.,3.,4.,0.;
+124 0 0 00000000 0.,-1.,0.,10.,1.,0.,0.,0.,0.,0.,1.,0.;
+100 0 3 00000000 3.,1.,1.,3.,1.,-1.,1.;
+100 0 0 00000000 0.,0.,0.,5.,0.,5.,0.;
+110 0 0 00010000 -2.,-3.,1.,4.,6.,1.;
+102 0 0 00000000 1,9;
+108 1 0 00000000 0.,0.,1.,1.,11,0.,0.,0.,0.;
+112 0 0 00000000 3,1,3,1,0.,1.,0.,1.,0.,0.,0.,1.,0.,0.,0.,0.,0.,0.,0.,0.,1.,1.,0.,0.,0.,0.,0.,0.,0.,0.;
+EOF
+run "$B/fromcad -t 1e-9 $T/hand.igs"
+status 1
+says "1 entities of type 112 passed over"
+[ "$(grep -c '^cubic' "$T/out")" -eq 3 ] && ok || no "iges: $(grep -c '^cubic' "$T/out") curves, want 3 (the segment, the arc, the circle)"
+grep -q '^bezier-surface name=LABEL7 entity=13 m=1 n=1' "$T/out" && ok ||
+    no "iges: the bounded plane not read: $(grep bezier-surface "$T/out")"
+$B/sample -n 40 "$T/out" >"$T/pts"
+# the segment along (0,0)-(3,4); the arc: (x,y) about (1,1) radius 2 with
+# y >= 1, turned a quarter (x,y) -> (-y,x) and moved by (10,0): so about
+# (9,1), radius 2, x <= 9, z 3; the circle: radius 5 about the origin;
+# the plane: z = 1, the box of the bounding segment, x -2..4, y -3..6
+awk 'NF == 0 { if (!gap) rec++; gap = 1; next }
+    { gap = 0; r = rec + 1
+      if (r == 1) { d = $1 * 4 - $2 * 3; e = ($1 < -1e-12 || $1 > 3 + 1e-12) }
+      else if (r == 2) { d = sqrt(($1 - 9)^2 + ($2 - 1)^2) - 2; e = ($3 - 3) + ($1 > 9 + 1e-9) }
+      else if (r == 3) { d = sqrt($1^2 + $2^2) - 5; e = $3 }
+      else { d = $3 - 1; e = ($1 < -2 - 1e-12 || $1 > 4 + 1e-12 || $2 < -3 - 1e-12 || $2 > 6 + 1e-12) }
+      if (d < 0) d = -d; if (e < 0) e = -e; if (d > w) w = d; if (e > w) w = e }
+    END { print w + 0 }' "$T/pts" >"$T/val"
+within "iges by hand: segment, moved arc, circle, plane (-t 1e-9)" 1e-9
+# the plane's corners reach its bounds
+awk 'NF == 3 { if ($1 == -2 && $2 == -3) a = 1; if ($1 == 4 && $2 == 6) b = 1 }
+    END { exit !(a && b) }' "$T/pts" && ok || no "iges: the plane does not span its bounding curve"
+# bad IGES: a 126 whose counts do not fit, and a missing matrix
+iges_doc >"$T/bad.igs" <<'EOF'
+126 0 0 00000000 5,3,0,0,1,0,0.,1.;
+110 0 9 00000000 0.,0.,0.,1.,1.,1.;
+110 0 0 00000000 0.,0.,0.,1.,1.,1.;
+EOF
+run "$B/fromcad $T/bad.igs"
+status 1
+says "bad.igs:5: 126 (D1): its degree (1 to 63) or counts do not fit its 9 parameters"
+says "bad.igs:7: 110 (D3): its transformation cannot be read"
+[ "$(grep -c '^cubic' "$T/out")" -eq 1 ] && ok || no "bad iges: the good line not read"
+if [ -n "$OCCPY" ]; then
+	# OpenCASCADE reads the same entities: the points of fromcad's
+	# curves lie on its curves (a file of the curves alone: with a face
+	# in it, it keeps only the face), and its plane's on its face
+	iges_doc >"$T/handc.igs" <<'EOF'
+110 0 0 00000000 0.,0.,0.,3.,4.,0.;
+124 0 0 00000000 0.,-1.,0.,10.,1.,0.,0.,0.,0.,0.,1.,0.;
+100 0 3 00000000 3.,1.,1.,3.,1.,-1.,1.;
+100 0 0 00000000 0.,0.,0.,5.,0.,5.,0.;
+EOF
+	$B/fromcad -t 1e-9 "$T/handc.igs" | $B/sample -n 10 >"$T/hand.pts"
+	set -- $("$OCCPY" "$T/occnear.py" "$T/handc.igs" "$T/hand.pts" 1 \
+	    2>/dev/null | tail -n 1)
+	[ "${1:-0}" -eq 3 ] && ok || no "OpenCASCADE: handc.igs: ${1:-no} curves, want 3"
+	echo "$2" >"$T/val"
+	# (OpenCASCADE's projection onto a curve stops near 1e-8 of its size,
+	# 6e-8 here; the closed forms above hold the curves to 1e-9)
+	within "OpenCASCADE: handc.igs: fromcad's curves on its curves" 1e-7
+	$B/fromcad "$T/hand.igs" 2>/dev/null | awk '/^bezier-surface/ { s = 1 }
+	    s' | $B/sample -n 4 >"$T/hand.pts"
+	set -- $("$OCCPY" "$T/occnear.py" "$T/hand.igs" "$T/hand.pts" 2 \
+	    2>/dev/null | tail -n 1)
+	echo "$2" >"$T/val"
+	within "OpenCASCADE: hand.igs: fromcad's plane on its face" 1e-12
+fi
+
+finish stepiges
