@@ -1335,4 +1335,107 @@ int loft_cut_plane(const struct loft_cutter *k, const double *normal, double d,
 
 void loft_cut_free(struct loft_cut *c);
 
+
+/* ------------------------------------------------------------------ */
+/* Triangle meshes of surfaces (mesh.c)                                */
+
+/*
+ * A mesh: nv vertices of 3 numbers (a plane surface's third is 0), each
+ * with the (u, v) and the index of the surface it was evaluated on; nt
+ * triangles of 3 vertex indices.  Starts zeroed; free with
+ * loft_mesh_free.
+ */
+struct loft_mesh {
+	double *v;
+	size_t nv;
+	size_t *t;
+	size_t nt;
+	double *uv;             /* 2 numbers a vertex */
+	size_t *patch;          /* a vertex's surface, by index */
+	size_t vcap, tcap, uvcap, pcap;
+};
+
+/*
+ * The steps N along each side of the Bezier patch of degrees m, n
+ * (control points ctl, 3 numbers each, u-major) for which the mesh's
+ * triangles are within tol (> 0) of it: 1 to 256.
+ */
+long loft_mesh_steps(const double *ctl, int m, int n, double tol);
+
+/*
+ * Append the ns surfaces s to me, each on an N x N grid of cells (N >= 1,
+ * the same for all so that shared edges match), two triangles a cell,
+ * counter-clockwise in (u, v) (normals along f_u x f_v), vertices u-major.
+ * With a design dz (or NULL), ip[i] (or ip NULL) the index in dz of
+ * surface i or -1: where a neighbour covers only part of an edge, the
+ * cells along it are fans through the neighbour's steps, so there is no
+ * T-junction.  With weld_tol >= 0 vertices within weld_tol are then one
+ * and the triangles oriented alike across every shared side; with
+ * weld_tol < 0 the grids are left as made.  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_mesh_surfaces(struct loft_mesh *me, const struct loft_surface *s,
+    size_t ns, const long *ip, const struct loft_design *dz, long N,
+    double weld_tol);
+
+/*
+ * The adjacency of me's triangles: nb[3 t + k] (nb holds 3 nt) is the
+ * triangle across side k of triangle t (from its vertex k to k + 1), or
+ * (size_t)-1 on the boundary or where more than two triangles meet;
+ * same (may be NULL) whether the two run that side the same way.
+ * Returns 0 or LOFT_ENOMEM.
+ */
+int loft_mesh_neighbours(const struct loft_mesh *me, size_t *nb,
+    unsigned char *same);
+
+/*
+ * Weld me: vertices within tol (>= 0) of one another are one, triangles
+ * that lose a side to it dropped, the rest renumbered in their order;
+ * map (may be NULL; nv entries, the count before) gets each old
+ * vertex's new index.  Returns 0 or LOFT_ENOMEM (me unchanged).
+ */
+int loft_mesh_weld(struct loft_mesh *me, double tol, size_t *map);
+
+void loft_mesh_free(struct loft_mesh *me);
+
+/* Fill s for the Bezier patch of degrees m, n (control points ctl of 3
+ * numbers, u-major, as a bezier-surface record's rows); s points into
+ * ctl.  (surface.c) */
+void loft_surface_from_bezier(const double *ctl, int m, int n,
+    struct loft_surface *s);
+
+/* ------------------------------------------------------------------ */
+/* Sparse symmetric systems (sparse.c)                                 */
+
+/*
+ * A sparse symmetric matrix of order n, its entries (i, j, a) in any
+ * order, duplicates summed; both triangles are given or only one (the
+ * other follows).  Built by loft_sparse_add, then loft_sparse_compress.
+ */
+struct loft_sparse {
+	size_t n;
+	size_t *row, *col;      /* triplets, then compressed rows: row[n + 1] */
+	double *a;
+	size_t nnz, cap;
+	int compressed;
+};
+
+/* Add a to entry (i, j) and, off the diagonal, to (j, i).  i, j < n.
+ * Returns 0 or LOFT_ENOMEM. */
+int loft_sparse_add(struct loft_sparse *m, size_t i, size_t j, double a);
+
+/* Sort and sum the entries into compressed rows.  0 or LOFT_ENOMEM. */
+int loft_sparse_compress(struct loft_sparse *m);
+
+/*
+ * Solve m x = b (m compressed, symmetric positive definite) by conjugate
+ * gradients with a Jacobi preconditioner, from the x given (a guess, or
+ * zeros), until the residual is below tol times |b|, at most maxit
+ * steps.  Returns 0, LOFT_ENOCONV (x holds the best reached) or
+ * LOFT_ENOMEM.  *iters (may be NULL) gets the steps taken.
+ */
+int loft_sparse_solve(const struct loft_sparse *m, const double *b,
+    double *x, double tol, long maxit, long *iters);
+
+void loft_sparse_free(struct loft_sparse *m);
+
 #endif
