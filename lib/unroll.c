@@ -41,6 +41,9 @@
  * part of it. */
 #define ENERGY_TOL 1e-7
 
+/* Passes of reweighting after the plain iteration (arap). */
+#define REWEIGHTS 6
+
 /* A cotangent weight is held to this: a sliver's would swamp the rest. */
 #define COT_MAX 1e4
 
@@ -228,29 +231,69 @@ fit_motion(const double *l, const double *g, size_t n, int flip,
 
 /* The count of nodes of patch p whose welded vertex is placed. */
 static size_t
-placed_nodes(const struct loft_unroll *r, const unsigned char *have,
-    size_t p)
+placed_nodes(const struct loft_unroll *r, const size_t *owner, size_t p)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), c = 0;
 
 	for (size_t k = p * nn; k < (p + 1) * nn; k++)
-		c += have[r->grid[k]];
+		c += owner[r->grid[k]] != (size_t)-1;
 	return c;
+}
+
+/* The unit normal f_u x f_v of the patch of grid node k, or 0s. */
+static void
+node_normal(const struct loft_unroll *r, const struct loft_surface *s,
+    size_t k, double *n)
+{
+	size_t nn = (size_t)(r->N + 1) * (r->N + 1), w = (size_t)r->N + 1;
+	double du[3] = { 0 }, dv[3] = { 0 };
+
+	loft_surface_eval(&s[k / nn], (double)(k % nn / w) / r->N,
+	    (double)(k % nn % w) / r->N, NULL, du, dv);
+	cross(du, dv, n);
+	vunit(n, 3);
+}
+
+/*
+ * Whether patch p runs the other way from the placed patches it
+ * shares vertices with: its normal against theirs (flip says which
+ * placed patches were reflected), at the first shared vertex where
+ * both are defined.
+ */
+static int
+reflected(const struct loft_unroll *r, const struct loft_surface *s,
+    const size_t *owner, const unsigned char *flip, size_t p)
+{
+	size_t nn = (size_t)(r->N + 1) * (r->N + 1);
+
+	for (size_t k = p * nn; k < (p + 1) * nn; k++) {
+		size_t o = owner[r->grid[k]];
+		double a[3], b[3], d;
+
+		if (o == (size_t)-1)
+			continue;
+		node_normal(r, s, k, a);
+		node_normal(r, s, o, b);
+		if ((d = vdot(a, b, 3)) != 0)
+			return flip[o / nn] ^ (d < 0);
+	}
+	return 0;
 }
 
 /*
  * Place patch p's developed nodes loc (and their jac) on the vertices
- * placed already (have), by the motion that fits them best, reflected
- * where the patch runs the other way; with none placed, to the right of
- * what is (a sheet in pieces).  Then its unplaced vertices are placed.
+ * placed already (owner: the node that placed each, or -1), by the
+ * motion that fits them best, reflected where the patch runs the other
+ * way (flip[p]); with none placed, to the right of what is (a sheet in
+ * pieces).  Then its unplaced vertices are placed.
  */
 static int
-place_patch(struct loft_unroll *r, unsigned char *have, size_t p,
+place_patch(struct loft_unroll *r, size_t *owner, int flip, size_t p,
     double *loc, double *jac, double *right)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), n = 0;
 	double *l = malloc(4 * nn * sizeof *l), *g = l + 2 * nn, lo = INFINITY;
-	struct motion m, mf;
+	struct motion m;
 
 	if (l == NULL)
 		return LOFT_ENOMEM;
@@ -258,14 +301,13 @@ place_patch(struct loft_unroll *r, unsigned char *have, size_t p,
 		size_t w = r->grid[p * nn + k];
 
 		lo = fmin(lo, loc[2 * k]);
-		if (!have[w])
+		if (owner[w] == (size_t)-1)
 			continue;
 		vcopy(l + 2 * n, loc + 2 * k, 2);
 		vcopy(g + 2 * n++, r->xy + 2 * w, 2);
 	}
 	if (n >= 2) {
-		if (fit_motion(l, g, n, 1, &mf) < fit_motion(l, g, n, 0, &m))
-			m = mf;
+		fit_motion(l, g, n, flip, &m);
 	} else {
 		memset(&m, 0, sizeof m);
 		m.c = 1;
@@ -278,9 +320,9 @@ place_patch(struct loft_unroll *r, unsigned char *have, size_t p,
 		move(&m, loc + 2 * k, q, 0);
 		move(&m, jac + 4 * k, r->jac + 4 * (p * nn + k), 1);
 		move(&m, jac + 4 * k + 2, r->jac + 4 * (p * nn + k) + 2, 1);
-		if (!have[w]) {
+		if (owner[w] == (size_t)-1) {
 			vcopy(r->xy + 2 * w, q, 2);
-			have[w] = 1;
+			owner[w] = p * nn + k;
 		}
 		*right = fmax(*right, q[0]);
 	}
@@ -294,14 +336,18 @@ develop(struct loft_unroll *r, const struct loft_surface *s)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), np = r->npatch;
 	double *loc = malloc(6 * nn * sizeof *loc), right = 0;
-	unsigned char *have = calloc(r->mesh.nv + 1, 1), *done = calloc(np, 1);
-	int rc = loc == NULL || have == NULL || done == NULL ? LOFT_ENOMEM : 0;
+	size_t *owner = malloc((r->mesh.nv + 1) * sizeof *owner);
+	unsigned char *done = calloc(np, 1), *flip = calloc(np, 1);
+	int rc = loc == NULL || owner == NULL || done == NULL || flip == NULL ?
+	    LOFT_ENOMEM : 0;
 
+	for (size_t i = 0; rc == 0 && i < r->mesh.nv; i++)
+		owner[i] = (size_t)-1;
 	for (size_t round = 0; rc == 0 && round < np; round++) {
 		size_t best = np, most = 0;
 
 		for (size_t p = 0; p < np; p++) {
-			size_t c = done[p] ? 0 : placed_nodes(r, have, p);
+			size_t c = done[p] ? 0 : placed_nodes(r, owner, p);
 
 			if (!done[p] && (best == np || c > most)) {
 				best = p;
@@ -309,14 +355,16 @@ develop(struct loft_unroll *r, const struct loft_surface *s)
 			}
 		}
 		done[best] = 1;
+		flip[best] = (unsigned char)reflected(r, s, owner, flip, best);
 		rc = develop_patch(&s[best], r->N, loc, loc + 2 * nn);
 		if (rc == 0)
-			rc = place_patch(r, have, best, loc, loc + 2 * nn,
-			    &right);
+			rc = place_patch(r, owner, flip[best], best, loc,
+			    loc + 2 * nn, &right);
 	}
 	free(loc);
-	free(have);
+	free(owner);
 	free(done);
+	free(flip);
 	return rc;
 }
 
@@ -400,7 +448,7 @@ sheet_size(const struct loft_surface *s, size_t ns)
 
 /* A triangle of the iteration: its flat shape (x), cotangents, sense. */
 struct tri {
-	double x[6], cot[3];
+	double x[6], cot[3], cot0[3];
 	int ok;
 };
 
@@ -427,8 +475,8 @@ tri_setup(const struct loft_mesh *me, size_t t, double sign, struct tri *T)
 		vsub(a, me->v + 3 * v[(k + 1) % 3], me->v + 3 * v[k], 3);
 		vsub(b, me->v + 3 * v[(k + 2) % 3], me->v + 3 * v[k], 3);
 		cross(a, b, d);
-		T->cot[k] = fmax(-COT_MAX, fmin(COT_MAX, vdot(a, b, 3) /
-		    vnorm(d, 3)));
+		T->cot[k] = T->cot0[k] = fmax(-COT_MAX, fmin(COT_MAX,
+		    vdot(a, b, 3) / vnorm(d, 3)));
 	}
 	T->ok = 1;
 }
@@ -541,29 +589,25 @@ senses(const struct loft_mesh *me, const double *xy, struct tri *T)
 	}
 }
 
+/* The rounds of one weighting: the Laplacian factored once. */
 static int
-arap(struct loft_unroll *r, int rounds)
+arap_rounds(struct loft_unroll *r, struct tri *T, int rounds, double *rot,
+    double *b)
 {
 	struct loft_mesh *me = &r->mesh;
-	struct tri *T = malloc((me->nt + 1) * sizeof *T);
-	double *rot = malloc((me->nt + me->nv + 1) * sizeof *rot);
-	double *b = malloc((4 * me->nv + 1) * sizeof *b), e0 = INFINITY, pin = 0;
+	double e0 = INFINITY, pin = 0, *x = b + 2 * me->nv;
 	struct loft_sparse L;
 	struct loft_sparse_chol C;
-	int rc = T == NULL || rot == NULL || b == NULL ? LOFT_ENOMEM : 0;
-	int direct = 0;
+	int rc, direct = 0;
 
 	memset(&L, 0, sizeof L);
 	memset(&C, 0, sizeof C);
-	if (rc == 0) {
-		senses(me, r->xy, T);
-		rc = laplacian(me, T, &L, &pin);
-	}
+	rc = laplacian(me, T, &L, &pin);
 	/* the factor once for every round; conjugate gradients without it */
 	if (rc == 0)
 		direct = loft_sparse_factor(&L, &C) == 0;
-	for (r->rounds = 0; rc == 0 && r->rounds < rounds; r->rounds++) {
-		double e = local_step(me, T, r->xy, rot), *x = b + 2 * me->nv;
+	for (int round = 0; rc == 0 && round < rounds; round++, r->rounds++) {
+		double e = local_step(me, T, r->xy, rot);
 
 		if (!(e < e0 * (1 - ENERGY_TOL)))
 			break;
@@ -591,9 +635,70 @@ arap(struct loft_unroll *r, int rounds)
 	}
 	loft_sparse_free(&L);
 	loft_sparse_chol_free(&C);
+	return rc;
+}
+
+/* The largest edge strain of triangle t. */
+static double
+tri_strain(const struct loft_mesh *me, const double *xy, size_t t)
+{
+	double s = 0;
+
+	for (int k = 0; k < 3; k++) {
+		size_t a = me->t[3 * t + k], b = me->t[3 * t + (k + 1) % 3];
+		double l3 = vdist(me->v + 3 * a, me->v + 3 * b, 3);
+
+		if (l3 > 0)
+			s = fmax(s, fabs(vdist(xy + 2 * a, xy + 2 * b, 2) / l3 - 1));
+	}
+	return s;
+}
+
+/*
+ * As rigid as possible, then reweighted: the energy's least squares
+ * leave the largest strains where the sheet is most curved, so each
+ * further pass weighs a triangle by how its strain stands to the
+ * mean (iteratively reweighted least squares, towards the least
+ * largest strain), and the best of the passes by largest strain is
+ * kept.
+ */
+static int
+arap(struct loft_unroll *r, int rounds)
+{
+	struct loft_mesh *me = &r->mesh;
+	struct tri *T = malloc((me->nt + 1) * sizeof *T);
+	double *rot = malloc((me->nt + me->nv + 1) * sizeof *rot);
+	double *b = malloc((4 * me->nv + 1) * sizeof *b);
+	double *best = malloc((2 * me->nv + 1) * sizeof *best), most = INFINITY;
+	int rc = T == NULL || rot == NULL || b == NULL || best == NULL ?
+	    LOFT_ENOMEM : 0;
+
+	if (rc == 0)
+		senses(me, r->xy, T);
+	r->rounds = 0;
+	for (int pass = 0; rc == 0 && pass < REWEIGHTS; pass++) {
+		double mean = 0, worst = 0;
+
+		rc = arap_rounds(r, T, rounds, rot, b);
+		for (size_t t = 0; t < me->nt; t++) {
+			rot[t] = tri_strain(me, r->xy, t);
+			mean += rot[t] / me->nt;
+			worst = fmax(worst, rot[t]);
+		}
+		if (worst < most) {
+			most = worst;
+			memcpy(best, r->xy, 2 * me->nv * sizeof *best);
+		}
+		for (size_t t = 0; mean > 0 && t < me->nt; t++)
+			for (int k = 0; k < 3; k++)
+				T[t].cot[k] *= 1 + rot[t] * rot[t] / (mean * mean);
+	}
+	if (rc == 0)
+		memcpy(r->xy, best, 2 * me->nv * sizeof *best);
 	free(T);
 	free(rot);
 	free(b);
+	free(best);
 	return rc;
 }
 
