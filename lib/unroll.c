@@ -1065,8 +1065,18 @@ static void
 cut_point(const struct loft_unroll *r, size_t a, size_t b, double da,
     double db, double *q)
 {
-	double t = da / (da - db);
+	double t;
 
+	if (b < a) {            /* from the lower end: one point for both */
+		size_t x = a;   /* triangles of the side */
+		double y = da;
+
+		a = b;
+		b = x;
+		da = db;
+		db = y;
+	}
+	t = da / (da - db);
 	q[0] = r->xy[2 * a] + t * (r->xy[2 * b] - r->xy[2 * a]);
 	q[1] = r->xy[2 * a + 1] + t * (r->xy[2 * b + 1] - r->xy[2 * a + 1]);
 }
@@ -1094,35 +1104,53 @@ cut_add(struct loft_cut_curve *c, size_t *cap, const double *q)
 	return 0;
 }
 
-/* Chain the pieces into curves, appended to out. */
+/* Extend curve c from the end whose side is key by unused pieces. */
+static int
+extend(struct piece *pc, size_t n, struct loft_cut_curve *c, size_t *cap,
+    const size_t *key)
+{
+	int rc = 0;
+
+	for (int more = 1; rc == 0 && more; ) {
+		more = 0;
+		for (size_t j = 0; j < n && !more; j++)
+			for (int e = 0; e < 2 && !pc[j].used; e++)
+				if (same_key(pc[j].k[e], key)) {
+					pc[j].used = more = 1;
+					rc = cut_add(c, cap, pc[j].q + 2 * (1 - e));
+					key = pc[j].k[1 - e];
+					break;
+				}
+	}
+	return rc;
+}
+
+/* Chain the pieces into curves, appended to out: from each unused
+ * piece forward, then the curve turned round and on from its start. */
 static int
 chain_pieces(struct piece *pc, size_t n, struct loft_cut *out)
 {
 	for (size_t i = 0; i < n; i++) {
 		struct loft_cut_curve c = { NULL, 0, 0 };
-		size_t cap = 0, cur = i, *key;
+		size_t cap = 0, m;
 		int rc;
 
 		if (pc[i].used)
 			continue;
 		pc[i].used = 1;
-		rc = cut_add(&c, &cap, pc[i].q) || cut_add(&c, &cap, pc[i].q + 2);
-		key = pc[i].k[1];
-		for (int more = 1; rc == 0 && more; ) {
-			more = 0;
-			for (size_t j = 0; j < n && !more; j++)
-				for (int e = 0; e < 2 && !pc[j].used; e++)
-					if (same_key(pc[j].k[e], key)) {
-						pc[j].used = more = 1;
-						rc = cut_add(&c, &cap, pc[j].q + 2 *
-						    (1 - e));
-						key = pc[j].k[1 - e];
-						cur = j;
-						break;
-					}
-		}
-		(void)cur;
-		c.closed = c.n > 3 && same_key(key, pc[i].k[0]);
+		rc = cut_add(&c, &cap, pc[i].q) || cut_add(&c, &cap, pc[i].q + 2) ||
+		    extend(pc, n, &c, &cap, pc[i].k[1]);
+		m = c.n;
+		for (size_t k = 0; rc == 0 && k < m / 2; k++)
+			for (int d = 0; d < 2; d++) {
+				double t = c.p[2 * k + d];
+
+				c.p[2 * k + d] = c.p[2 * (m - 1 - k) + d];
+				c.p[2 * (m - 1 - k) + d] = t;
+			}
+		if (rc == 0)
+			rc = extend(pc, n, &c, &cap, pc[i].k[0]);
+		c.closed = c.n > 3 && vdist(c.p, c.p + 2 * (c.n - 1), 2) == 0;
 		if (c.closed)
 			c.n--;
 		if (rc != 0 || loft__grow((void **)&out->c, &out->cap, out->n + 1,
@@ -1159,12 +1187,15 @@ loft_unroll_cut(const struct loft_unroll *r, const double *normal, double d,
 
 			if ((sa < 0) == (sb < 0))
 				continue;
+			/* through a vertex: the vertex is the key */
+			if (sa == 0 || sb == 0)
+				a = b = sa == 0 ? a : b;
 			x.k[m][0] = a < b ? a : b;
 			x.k[m][1] = a < b ? b : a;
-			cut_point(r, a, b, sa, sb, x.q + 2 * m);
+			cut_point(r, v[k], v[(k + 1) % 3], sa, sb, x.q + 2 * m);
 			m++;
 		}
-		if (m < 2)
+		if (m < 2 || same_key(x.k[0], x.k[1]))
 			continue;
 		x.used = 0;
 		if (loft__grow((void **)&pc, &cap, n + 1, sizeof *pc) != 0)

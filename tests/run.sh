@@ -55,5 +55,6 @@ slow sh tests/install.sh
 slow sh tests/examples.sh
 slow sh tests/approx.sh
 suite sh tests/synopsis.sh
+suite sh tests/unroll.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
