@@ -81,14 +81,15 @@ put_edges(struct loft_writer *w, const struct loft_unroll *r,
 	return 0;
 }
 
-/* A colour for a strain s of the largest smax: white to red. */
+/* A colour for a strain s of the largest smax: from pale grey, red
+ * where the flat edge is longer, blue where shorter. */
 static void
 strain_colour(double s, double smax, char *buf)
 {
 	double f = smax > 0 ? fmin(1, fabs(s) / smax) : 0;
-	int g = (int)(235 - 215 * f + 0.5);
+	int hi = (int)(225 - 25 * f + 0.5), lo = (int)(225 - 200 * f + 0.5);
 
-	snprintf(buf, 8, "#%02x%02x%02x", 230 - (int)(30 * f), g, g);
+	snprintf(buf, 7, "%02x%02x%02x", s < 0 ? lo : hi, lo, s < 0 ? hi : lo);
 }
 
 /* -m: every mesh edge, a straight segment coloured by its strain. */
@@ -97,7 +98,7 @@ put_map(struct loft_writer *w, const struct loft_unroll *r)
 {
 	const struct loft_mesh *me = &r->mesh;
 	size_t *nb = malloc((3 * me->nt + 1) * sizeof *nb);
-	char val[LOFT_NUMBUF], col[8];
+	char val[LOFT_NUMBUF], col[7];
 
 	if (nb == NULL || loft_mesh_neighbours(me, nb, NULL) != 0) {
 		free(nb);
