@@ -24,10 +24,10 @@
 
 /* Mesh steps a patch side: at least, at most, and the vertices of the
  * whole mesh at most when the steps come from the tolerance (a 100-patch
- * plate gets 12 steps a side, and unrolls in a fraction of a second). */
+ * plate gets 6 steps a side, and unrolls in a fraction of a second). */
 #define MIN_STEPS 4
 #define MAX_STEPS 64
-#define VERTEX_BUDGET 16384.0
+#define VERTEX_BUDGET 4096.0
 
 /* Vertices nearer than this part of the sheet's size are one (as
  * cad.c's WELD_TOL: shared edges agree to a few rounding errors). */

@@ -37,7 +37,7 @@ BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 PROMPT=5                        # seconds a program may take to notice a closed pipe
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin loftplot offset measure tocad patchloft patchcut"}
+    patchjoin loftplot offset measure tocad patchloft patchcut unroll"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -2074,6 +2074,30 @@ patchcut_cases() {
 		    "$T/p0" "$T/p1" && ok ||
 		    no "$what: the cuts differ"
 	done
+}
+
+# ---- unroll ---------------------------------------------------------------------
+
+unroll_kind=design
+unroll_opts="-n 4"
+unroll_many=0           # copies of one patch weld into one: one outline
+unroll_run() { "$B/unroll" "$@"; }
+unroll_good() { patchsplit_good "$@"; }
+
+unroll_cases() {
+	opts -n 4
+	design_cases
+	opts -n 3 -e -m -x 1
+	design_cases
+	opts -n 4
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "a curve record" 1 "cubic record: unroll lays surface records flat"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	good "a bezier-surface"
+	{ patch 5 "" 0 0 | sed 's/^0 0 0 0 3 0/0 0 0 0 3 1e300/'; } >"$T/case"
+	sane "a coefficient of 1e300"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n' >"$T/case"
+	sane "a surface that is a point"
 }
 
 # ---- run them -----------------------------------------------------------------
