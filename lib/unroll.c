@@ -1000,7 +1000,7 @@ loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
 		return loft_fail(err, LOFT_EGEOM, -1, !(size > 0) ? "the "
 		    "surface is a point" : "the surface overflows: "
 		    "coefficients too large");
-	loft_surface_numbers(s, ns, 8, &r->num);
+	loft_surface_numbers(s, ns, ns > 16 ? 2 : 8, &r->num);
 	r->N = o->steps > 0 ? o->steps : steps_for(s, ns, o->tol > 0 ? o->tol :
 	    LOFT_UNROLL_RELTOL * size);
 	if ((rc = make_mesh(r, s, ns, size, err)) != 0)
