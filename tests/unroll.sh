@@ -132,6 +132,14 @@ b=$($B/unroll "$T/big" | $B/measure -f area)
 echo "$a $b" | awk '{ r = $2 / ($1 * 1e12) - 1; exit !(r < 1e-9 && r > -1e-9) }' &&
     ok || no "unroll of the cylinder times 1e6: area $b, want $a e12"
 
+# measure of a surface: the cylinder's area (field 1) is L H, its
+# Gaussian curvature 0 (fields 2 and 5), developable (field 16); the
+# dome's area the quadrature's below, not developable
+set -- $($B/measure "$T/cyl")
+echo "$1 $2 $5 ${16} $(sed -n 1p "$T/ref")" | awk "$QUAD"'{
+	exit !(rel($1, $6) <= 1e-9 && $2 == 0 && $3 == 0 && $4 == 1) }' && ok ||
+    no "measure of the cylinder: $*"
+
 # -v says which way
 run "$B/unroll -v $T/cyl"
 says "developable, developed exactly"
@@ -141,7 +149,8 @@ says "developable, developed exactly"
 # area 4, loses 2.7 % of its area (quadrature below)
 awk 'BEGIN { print "bezier-surface m=3 n=3"
 	for (i = 0; i < 4; i++) for (j = 0; j < 4; j++)
-		print i/3*2 - 1, j/3*2 - 1, (i % 3 && j % 3) ? 0.355 : 0
+		printf "%.17g %.17g %s\n", i/3*2 - 1, j/3*2 - 1,
+		    (i % 3 && j % 3) ? 0.355 : 0
 	print "" }' >"$T/dome"
 area=$(awk "$QUAD"'BEGIN { gl(); h = 0.355; M = 40
 	for (a = 0; a < M; a++) for (p = 1; p <= 5; p++)
@@ -153,6 +162,9 @@ area=$(awk "$QUAD"'BEGIN { gl(); h = 0.355; M = 40
 	printf "%.17g\n", s / (M * M) }')
 echo "$area" | awk '{ exit !(1 - 4 / $1 > 0.026) }' && ok ||
     no "the dome's projection loses less than 2.6 %: area $area"
+set -- $($B/measure "$T/dome")
+echo "$1 ${16} $area" | awk "$QUAD"'{ exit !(rel($1, $3) <= 1e-9 && $2 == 0) }' &&
+    ok || no "measure of the dome: area $1 developable ${16}, want $area 0"
 got=$($B/unroll "$T/dome" | $B/measure -f area)
 echo "$got $area" | awk '{ r = $1 / $2 - 1; exit !(r < 0.005 && r > -0.005) }' &&
     ok || no "the dome unrolled: area $got, surface $area (want 0.5 %)"
