@@ -448,7 +448,7 @@ sheet_size(const struct loft_surface *s, size_t ns)
 
 /* A triangle of the iteration: its flat shape (x), cotangents, sense. */
 struct tri {
-	double x[6], cot[3], cot0[3];
+	double x[6], cot[3];
 	int ok;
 };
 
@@ -475,8 +475,8 @@ tri_setup(const struct loft_mesh *me, size_t t, double sign, struct tri *T)
 		vsub(a, me->v + 3 * v[(k + 1) % 3], me->v + 3 * v[k], 3);
 		vsub(b, me->v + 3 * v[(k + 2) % 3], me->v + 3 * v[k], 3);
 		cross(a, b, d);
-		T->cot[k] = T->cot0[k] = fmax(-COT_MAX, fmin(COT_MAX,
-		    vdot(a, b, 3) / vnorm(d, 3)));
+		T->cot[k] = fmax(-COT_MAX, fmin(COT_MAX, vdot(a, b, 3) /
+		    vnorm(d, 3)));
 	}
 	T->ok = 1;
 }
@@ -506,6 +506,20 @@ laplacian(const struct loft_mesh *me, const struct tri *T,
 	return loft_sparse_compress(L);
 }
 
+/* Side k of triangle t (opposite its vertex k): its own vector X (2
+ * numbers) and, when xy is not NULL, its flat vector U. */
+static void
+side_vectors(const struct loft_mesh *me, const struct tri *T, size_t t,
+    int k, const double *xy, double *X, double *U)
+{
+	int a = (k + 1) % 3, b = (k + 2) % 3;
+
+	X[0] = T[t].x[2 * a] - T[t].x[2 * b];
+	X[1] = T[t].x[2 * a + 1] - T[t].x[2 * b + 1];
+	if (xy != NULL)
+		vsub(U, xy + 2 * me->t[3 * t + a], xy + 2 * me->t[3 * t + b], 2);
+}
+
 /* The local step: each triangle's best rotation (its angle in rot);
  * the energy of the flat points xy. */
 static double
@@ -515,31 +529,22 @@ local_step(const struct loft_mesh *me, const struct tri *T, const double *xy,
 	double e = 0;
 
 	for (size_t t = 0; t < me->nt; t++) {
-		double sd = 0, sc = 0, c, s;
+		double sd = 0, sc = 0, c, s, X[2], U[2];
 
 		for (int k = 0; T[t].ok && k < 3; k++) {
-			int a = (k + 1) % 3, b = (k + 2) % 3;
-			const double *p = xy + 2 * me->t[3 * t + a];
-			const double *q = xy + 2 * me->t[3 * t + b];
-			double X = T[t].x[2 * a] - T[t].x[2 * b];
-			double Y = T[t].x[2 * a + 1] - T[t].x[2 * b + 1];
-			double U = p[0] - q[0], V = p[1] - q[1];
-
-			sd += T[t].cot[k] * (X * U + Y * V);
-			sc += T[t].cot[k] * (X * V - Y * U);
+			side_vectors(me, T, t, k, xy, X, U);
+			sd += T[t].cot[k] * (X[0] * U[0] + X[1] * U[1]);
+			sc += T[t].cot[k] * (X[0] * U[1] - X[1] * U[0]);
 		}
 		rot[t] = atan2(sc, sd);
 		c = cos(rot[t]);
 		s = sin(rot[t]);
 		for (int k = 0; T[t].ok && k < 3; k++) {
-			int a = (k + 1) % 3, b = (k + 2) % 3;
-			const double *p = xy + 2 * me->t[3 * t + a];
-			const double *q = xy + 2 * me->t[3 * t + b];
-			double X = T[t].x[2 * a] - T[t].x[2 * b];
-			double Y = T[t].x[2 * a + 1] - T[t].x[2 * b + 1];
-			double du = p[0] - q[0] - (c * X - s * Y);
-			double dv = p[1] - q[1] - (s * X + c * Y);
+			double du, dv;
 
+			side_vectors(me, T, t, k, xy, X, U);
+			du = U[0] - (c * X[0] - s * X[1]);
+			dv = U[1] - (s * X[0] + c * X[1]);
 			e += T[t].cot[k] * (du * du + dv * dv);
 		}
 	}
@@ -557,16 +562,17 @@ global_rhs(const struct loft_mesh *me, const struct tri *T, const double *rot,
 		double c = cos(rot[t]), s = sin(rot[t]);
 
 		for (int k = 0; T[t].ok && k < 3; k++) {
-			int a = (k + 1) % 3, b = (k + 2) % 3;
-			size_t i = me->t[3 * t + a], j = me->t[3 * t + b];
-			double X = T[t].x[2 * a] - T[t].x[2 * b];
-			double Y = T[t].x[2 * a + 1] - T[t].x[2 * b + 1];
-			double w = T[t].cot[k];
+			size_t i = me->t[3 * t + (k + 1) % 3];
+			size_t j = me->t[3 * t + (k + 2) % 3];
+			double w = T[t].cot[k], X[2], rx, ry;
 
-			bx[i] += w * (c * X - s * Y);
-			by[i] += w * (s * X + c * Y);
-			bx[j] -= w * (c * X - s * Y);
-			by[j] -= w * (s * X + c * Y);
+			side_vectors(me, T, t, k, NULL, X, NULL);
+			rx = w * (c * X[0] - s * X[1]);
+			ry = w * (s * X[0] + c * X[1]);
+			bx[i] += rx;
+			by[i] += ry;
+			bx[j] -= rx;
+			by[j] -= ry;
 		}
 	}
 	/* the hold on vertex 0 where it is */
