@@ -1561,19 +1561,14 @@ struct loft_unroll {
  * are then placed on one another where they share vertices.  Otherwise
  * that development starts an as-rigid-as-possible iteration (Liu et al.
  * 2008: local rotations, then a global sparse least-squares solve) on
- * the mesh.  Returns 0 and fills r (free with loft_unroll_free), or
- * LOFT_EINPUT (no surface, tol not positive), LOFT_EGEOM (a sheet with
- * no outline, or a number not finite) or LOFT_ENOMEM.
+ * the mesh, and six passes reweighted towards the least largest
+ * strain.  Returns 0 and fills r (free with loft_unroll_free), or
+ * LOFT_EINPUT (no surface, tol negative or not finite), LOFT_EGEOM (a
+ * surface that is a point or overflows, a sheet with no outline) or
+ * LOFT_ENOMEM.
  */
 int loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
     size_t ns, struct loft_unroll *r, struct loft_error *err);
-
-/*
- * The flat image of point (u, v) of surface p of r, by the flat map on
- * the mesh's cell around it.
- */
-void loft_unroll_map(const struct loft_unroll *r, size_t p, double u,
-    double v, double *xy);
 
 /*
  * The cubic segment (8 numbers, a cubic record's row) of the flat

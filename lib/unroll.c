@@ -1027,28 +1027,6 @@ loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
 }
 
 void
-loft_unroll_map(const struct loft_unroll *r, size_t p, double u, double v,
-    double *xy)
-{
-	long N = r->N, i = (long)floor(u * N), j = (long)floor(v * N);
-	size_t nn = (size_t)(N + 1) * (N + 1);
-	double a, b;
-
-	i = i < 0 ? 0 : i >= N ? N - 1 : i;
-	j = j < 0 ? 0 : j >= N ? N - 1 : j;
-	a = u * N - i;
-	b = v * N - j;
-	xy[0] = xy[1] = 0;
-	for (int q = 0; q < 4; q++) {
-		size_t k = p * nn + (size_t)(i + q / 2) * (N + 1) + (size_t)(j +
-		    q % 2);
-		double w = (q / 2 ? a : 1 - a) * (q % 2 ? b : 1 - b);
-
-		vaxpy(xy, w, r->xy + 2 * r->grid[k], 2);
-	}
-}
-
-void
 loft_unroll_hermite(const struct loft_unroll *r, size_t p, const double *a,
     const double *b, double *seg)
 {

@@ -1881,7 +1881,10 @@ measure_cases() {
 	bad "a point record" 1 "a point record is no curve"
 	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 0 0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 0 0\n' \
 	    >"$T/case"
-	bad "a patch" 1 "a patch record is a surface"
+	good "a patch"
+	opts -f length
+	bad "a patch with -f" 1 "-f names curve fields; a patch record is a surface"
+	opts
 	printf 'cubic\n0 0 1 0 0 2 0\n' >"$T/case"
 	bad "a truncated cubic row" 2 "cubic rows need 8 or 12 numbers, not 7"
 	printf 'cubic\n0 0 1 0 0 0 1 1\n' >"$T/case"
