@@ -50,6 +50,7 @@ BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
           bin/bench/numbers
 BENCH  += bin/test/noisy
 TESTS  += bin/test/noisy bin/test/nearest
+TESTS  += bin/test/sparse
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5

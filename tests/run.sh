@@ -55,6 +55,7 @@ slow sh tests/install.sh
 slow sh tests/examples.sh
 slow sh tests/approx.sh
 suite sh tests/synopsis.sh
+suite bin/test/sparse
 suite sh tests/unroll.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
