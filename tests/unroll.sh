@@ -205,6 +205,23 @@ else
 	echo "unroll: skip: the LSCM comparison (no /usr/bin/python3 with scipy)"
 fi
 
+# the dome a millionth the size: the same strain (units do not matter)
+awk '/^[0-9-]/ { printf "%.17g %.17g %.17g\n", $1 * 1e-6, $2 * 1e-6, $3 * 1e-6; next }
+    { print }' "$T/dome" >"$T/small"
+a=$($B/unroll -v -n 8 "$T/dome" 2>&1 >/dev/null | sed 's/.*largest \([^ ]*\) .*/\1/')
+b=$($B/unroll -v -n 8 "$T/small" 2>&1 >/dev/null | sed 's/.*largest \([^ ]*\) .*/\1/')
+[ -n "$a" ] && [ "$a" = "$b" ] && ok ||
+    no "the dome's largest strain $a, a millionth of it $b"
+
+# -m: loftplot draws each edge in the colour unroll gave it
+$B/unroll -m -n 4 "$T/dome" >"$T/map"
+c=$(sed -n 's/^cubic .*colour=\([0-9a-f]*\).*/\1/p' "$T/map" | sort -u)
+$B/loftplot "$T/map" >"$T/map.svg"
+n=0
+for x in $c; do grep -q "#$x" "$T/map.svg" || n=$((n + 1)); done
+[ -n "$c" ] && [ $n -eq 0 ] && ok ||
+    no "unroll -m | loftplot: $n of the colours not drawn"
+
 # a design: the example patch split in two unrolls as the patch
 a=$($B/unroll man/examples/hull.patch | $B/measure -f area)
 b=$($B/unroll man/examples/split.patch | $B/measure -f area)
