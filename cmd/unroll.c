@@ -145,6 +145,8 @@ put_cuts(struct loft_writer *w, const struct opts *o,
 		snprintf(val, sizeof val, "%s=", axis[o->cut[i].axis]);
 		loft_format_num(val + 2, o->cut[i].at, 0);
 		for (size_t c = 0; c < cut.n; c++) {
+			if (cut.c[c].n == 0)
+				continue;
 			loft_put_type(w, "points");
 			loft_put_attr(w, "cut", val);
 			loft_end_line(w);

@@ -245,11 +245,14 @@ static void
 node_normal(const struct loft_unroll *r, const struct loft_surface *s,
     size_t k, double *n)
 {
-	size_t nn = (size_t)(r->N + 1) * (r->N + 1), w = (size_t)r->N + 1;
+	size_t N = r->N > 0 ? (size_t)r->N : 1, w = N + 1, nn = w * w;
 	double du[3] = { 0 }, dv[3] = { 0 };
 
-	loft_surface_eval(&s[k / nn], (double)(k % nn / w) / r->N,
-	    (double)(k % nn % w) / r->N, NULL, du, dv);
+	n[0] = n[1] = n[2] = 0;
+	if (nn == 0)            /* N so large its square wrapped: none */
+		return;
+	loft_surface_eval(&s[k / nn], (double)(k % nn / w) / (double)N,
+	    (double)(k % nn % w) / (double)N, NULL, du, dv);
 	cross(du, dv, n);
 	vunit(n, 3);
 }
@@ -292,11 +295,12 @@ place_patch(struct loft_unroll *r, size_t *owner, int flip, size_t p,
     double *loc, double *jac, double *right)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), n = 0;
-	double *l = malloc(4 * nn * sizeof *l), *g = l + 2 * nn, lo = INFINITY;
+	double *l = malloc(4 * nn * sizeof *l), *g, lo = INFINITY;
 	struct motion m;
 
 	if (l == NULL)
 		return LOFT_ENOMEM;
+	g = l + 2 * nn;
 	for (size_t k = 0; k < nn; k++) {
 		size_t w = r->grid[p * nn + k];
 
@@ -335,7 +339,7 @@ static int
 develop(struct loft_unroll *r, const struct loft_surface *s)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), np = r->npatch;
-	double *loc = malloc(6 * nn * sizeof *loc), right = 0;
+	double *loc = calloc(6 * nn, sizeof *loc), right = 0;
 	size_t *owner = malloc((r->mesh.nv + 1) * sizeof *owner);
 	unsigned char *done = calloc(np, 1), *flip = calloc(np, 1);
 	int rc = loc == NULL || owner == NULL || done == NULL || flip == NULL ?
@@ -425,7 +429,7 @@ make_mesh(struct loft_unroll *r, const struct loft_surface *s, size_t ns,
 static double
 sheet_size(const struct loft_surface *s, size_t ns)
 {
-	double lo[3], hi[3], d = 0;
+	double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 }, d = 0;
 
 	for (size_t i = 0; i < ns; i++)
 		for (int a = 0; a <= 4; a++)
@@ -1163,6 +1167,7 @@ loft_unroll_cut(const struct loft_unroll *r, const double *normal, double d,
 		int m = 0;
 		struct piece x;
 
+		memset(&x, 0, sizeof x);
 		for (int k = 0; k < 3; k++)
 			s[k] = vdot(me->v + 3 * v[k], normal, 3) - d;
 		for (int k = 0; k < 3 && m < 2; k++) {
