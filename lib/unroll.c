@@ -229,15 +229,46 @@ fit_motion(const double *l, const double *g, size_t n, int flip,
 	return e;
 }
 
-/* The count of nodes of patch p whose welded vertex is placed. */
-static size_t
-placed_nodes(const struct loft_unroll *r, const size_t *owner, size_t p)
+/*
+ * The grid nodes of each welded vertex: node[start[w] .. start[w + 1])
+ * (start: nv + 1 entries, node: as many as grid).  0 or LOFT_ENOMEM.
+ */
+static int
+vertex_nodes(const struct loft_unroll *r, size_t **start, size_t **node)
 {
-	size_t nn = (size_t)(r->N + 1) * (r->N + 1), c = 0;
+	size_t nv = r->mesh.nv, n = (size_t)(r->N + 1) * (r->N + 1) * r->npatch;
+	size_t *st = calloc(nv + 2, sizeof *st), *nd = malloc((n + 1) *
+	    sizeof *nd);
 
-	for (size_t k = p * nn; k < (p + 1) * nn; k++)
-		c += owner[r->grid[k]] != (size_t)-1;
-	return c;
+	*start = st;
+	*node = nd;
+	if (st == NULL || nd == NULL)
+		return LOFT_ENOMEM;
+	for (size_t k = 0; k < n; k++)
+		st[r->grid[k] + 2]++;
+	for (size_t w = 2; w < nv + 2; w++)
+		st[w] += st[w - 1];
+	for (size_t k = 0; k < n; k++)
+		nd[st[r->grid[k] + 1]++] = k;
+	return 0;
+}
+
+/* After patch p is placed: each vertex it placed counts once more for
+ * every patch with a node on it. */
+static void
+count_placed(const struct loft_unroll *r, const size_t *owner,
+    const size_t *start, const size_t *node, size_t p, size_t *count)
+{
+	size_t nn = (size_t)(r->N + 1) * (r->N + 1);
+
+	for (size_t k = p * nn; k < (p + 1) * nn; k++) {
+		size_t w = r->grid[k];
+
+		if (owner[w] != k)
+			continue;
+		for (size_t j = start[w]; j < start[w + 1]; j++)
+			count[node[j] / nn]++;
+	}
 }
 
 /* The unit normal f_u x f_v of the patch of grid node k, or 0s. */
@@ -334,39 +365,43 @@ place_patch(struct loft_unroll *r, size_t *owner, int flip, size_t p,
 	return 0;
 }
 
-/* Develop every patch and place them, neighbours first. */
+/* Develop every patch and place them, the patch with the most
+ * vertices placed already first. */
 static int
 develop(struct loft_unroll *r, const struct loft_surface *s)
 {
 	size_t nn = (size_t)(r->N + 1) * (r->N + 1), np = r->npatch;
 	double *loc = calloc(6 * nn, sizeof *loc), right = 0;
 	size_t *owner = malloc((r->mesh.nv + 1) * sizeof *owner);
+	size_t *count = calloc(np + 1, sizeof *count), *start, *node;
 	unsigned char *done = calloc(np, 1), *flip = calloc(np, 1);
-	int rc = loc == NULL || owner == NULL || done == NULL || flip == NULL ?
-	    LOFT_ENOMEM : 0;
+	int rc = loc == NULL || owner == NULL || done == NULL || flip == NULL ||
+	    count == NULL ? LOFT_ENOMEM : 0;
 
+	if (vertex_nodes(r, &start, &node) != 0)
+		rc = LOFT_ENOMEM;
 	for (size_t i = 0; rc == 0 && i < r->mesh.nv; i++)
 		owner[i] = (size_t)-1;
 	for (size_t round = 0; rc == 0 && round < np; round++) {
-		size_t best = np, most = 0;
+		size_t best = np;
 
-		for (size_t p = 0; p < np; p++) {
-			size_t c = done[p] ? 0 : placed_nodes(r, owner, p);
-
-			if (!done[p] && (best == np || c > most)) {
+		for (size_t p = 0; p < np; p++)
+			if (!done[p] && (best == np || count[p] > count[best]))
 				best = p;
-				most = c;
-			}
-		}
 		done[best] = 1;
 		flip[best] = (unsigned char)reflected(r, s, owner, flip, best);
 		rc = develop_patch(&s[best], r->N, loc, loc + 2 * nn);
 		if (rc == 0)
 			rc = place_patch(r, owner, flip[best], best, loc,
 			    loc + 2 * nn, &right);
+		if (rc == 0)
+			count_placed(r, owner, start, node, best, count);
 	}
 	free(loc);
 	free(owner);
+	free(count);
+	free(start);
+	free(node);
 	free(done);
 	free(flip);
 	return rc;
