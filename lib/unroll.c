@@ -724,7 +724,7 @@ arap(struct loft_unroll *r, int rounds)
 	for (int pass = 0; rc == 0 && pass < REWEIGHTS; pass++) {
 		double mean = 0, worst = 0;
 
-		rc = arap_rounds(r, T, rounds, rot, b);
+		rc = arap_rounds(r, T, pass == 0 ? rounds : rounds / 2, rot, b);
 		for (size_t t = 0; t < me->nt; t++) {
 			rot[t] = tri_strain(me, r->xy, t);
 			mean += rot[t] / me->nt;
