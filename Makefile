@@ -26,7 +26,8 @@ DESTDIR =
 # PROGS is the one list of programs: their binaries and pages follow
 # from it (a program is cmd/NAME.c and man/NAME.1).
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
-          loftplot grade offset measure tocad patchloft patchcut fromcad
+          loftplot grade offset measure tocad patchloft patchcut fromcad \
+          unroll
 
 # The library's objects, by layer.  The core (lib/loft.h; each includes
 # only loft.h and internal.h, never a FILE):
@@ -36,7 +37,8 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/bernstein.o lib/arclen.o lib/measure.o lib/flatten.o \
           lib/merge.o lib/fair.o lib/skin.o lib/cut.o lib/error.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
-          lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o
+          lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o \
+          lib/mesh.o lib/sparse.o lib/unroll.o lib/surfmeasure.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
 PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o
 # the CAD output formats (lib/loftcad.h): the document protocol, the
@@ -59,7 +61,7 @@ BINS    = $(PROGS:%=bin/%)
 CMDOBJ  = $(PROGS:%=cmd/%.o)
 # the test programs, tests/NAME.c each, linked into bin/test
 TESTPROGS = unit paper patch bezier numtest pow10gen offsetref hostile \
-          arclen cad noisy nearest tables grid bspline
+          arclen cad noisy nearest tables grid bspline sparse
 TESTOBJ = $(TESTPROGS:%=tests/%.o)
 TESTS   = $(TESTPROGS:%=bin/test/%) bin/test/oom.so bin/test/line/progs
 BENCHPROGS = gen floor timeit tandiff numbers
@@ -322,7 +324,8 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fsanitize=fuzzer,address,undefined,float-cast-overflow \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
-          patchjoin loftplot grade offset measure patchloft patchcut fromcad
+          patchjoin loftplot grade offset measure patchloft patchcut fromcad \
+          unroll
 LIBSRC  = $(LIBOBJ:.o=.c)
 
 fuzz:

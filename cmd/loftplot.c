@@ -93,6 +93,8 @@ struct drawn {
 	double kmax;            /* its comb's largest curvature */
 	const char *file;
 	long line;
+	char colour[8];         /* its colour=rrggbb as #rrggbb (unroll -m), */
+	                        /* or "" */
 };
 
 struct pic {
@@ -834,6 +836,7 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 	struct extent e;
 	double mid[LOFT_MAXDIM], centre[2];
 	int rc, surface = 0, dim = pc->dim;
+	const char *c0;
 
 	extent_empty(&e);
 	pc->kmax = 0;           /* this record's own, for pc->rec */
@@ -882,7 +885,10 @@ keep_record(struct loft_run *run, const struct loft_record *rec,
 		    &pc->page->points : surface ? &pc->page->design :
 		    &pc->page->curves, rec);
 	pc->rec[pc->nrec] = (struct drawn){ e.box, pc->kmax, rec->file,
-	    rec->line };
+	    rec->line, "" };
+	if ((c0 = loft_attr(rec, "colour")) != NULL && strlen(c0) == 6 &&
+	    strspn(c0, "0123456789abcdefABCDEF") == 6)
+		snprintf(pc->rec[pc->nrec].colour, 8, "#%s", c0);
 	pc->kmax = fmax(kmax, pc->kmax);
 	pc->nrec++;
 	return 0;
@@ -918,9 +924,13 @@ keep_knots(struct loft_run *run, const struct loft_record *rec,
 /* ------------------------------------------------------------------ */
 /* Writing the picture */
 
+static const struct drawn *drawn_colour;      /* the records' own */
+
 static const char *
 colour(int rec)
 {
+	if (rec >= 0 && drawn_colour != NULL && drawn_colour[rec].colour[0])
+		return drawn_colour[rec].colour;
 	return rec < 0 ? "#000" : colours[rec % NCOLOURS];
 }
 
@@ -1333,6 +1343,7 @@ write_svg(struct loft_cad_doc *d, struct pic *pc, struct loft_error *err)
 	double scale = comb_scale(pc, &b), font;
 	int rc = frame(d, pc, &b, scale, &font);
 
+	drawn_colour = pc->rec;
 	if (rc == 0 && (rc = d->f->begin(d)) == 0 &&
 	    (rc = draw_strokes(d, pc, scale)) == 0 &&
 	    (rc = draw_labels(d, pc, font)) == 0)

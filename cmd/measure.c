@@ -2,7 +2,8 @@
  * measure: for each curve record one row of numbers: its length, area,
  * centroid, bounding box, smallest radius of curvature and where it is,
  * inflexions, curvature extrema, bending energy and largest curvature
- * jump at a knot, or the fields -f names, in its order.
+ * jump at a knot, or the fields -f names, in its order; for each surface
+ * record its area, curvature extremes and distance from developable.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -121,6 +122,53 @@ field_value(struct sums *s, int f, double *v, struct loft_error *err)
 	}
 }
 
+/*
+ * Quadrature cells a side of a surface for its numbers: Gauss-Legendre
+ * of order 5 on 8 x 8 cells holds a bi-quartic patch's area to 1e-12.
+ */
+#define SURFACE_CELLS 8
+
+/*
+ * A surface record's row: area; least and greatest Gaussian curvature
+ * and mean curvature, each with the u and v where it falls; the
+ * integrals of K dA and |K| dA; 1 when developable (surfmeasure.c).
+ */
+static int
+measure_surface(struct loft_run *run, const struct loft_record *rec,
+    struct loft_error *err)
+{
+	const struct opts *o = run->ctx;
+	struct loft_surface s;
+	struct loft_surface_numbers m;
+	const struct loft_surface_where *w[4] = { &m.kmin, &m.kmax, &m.hmin,
+	    &m.hmax };
+	double v[16];
+	int n = 0;
+
+	if (o->nfield > 0)
+		return loft_fail(err, LOFT_EINPUT, -1, "-f names curve fields; "
+		    "a %s record is a surface, whose row is fixed", rec->type);
+	if (loft_surface_from_record(rec, &s, err) != 0)
+		return LOFT_EINPUT;
+	loft_surface_numbers(&s, 1, SURFACE_CELLS, &m);
+	v[n++] = m.area;
+	for (int i = 0; i < 4; i++) {
+		v[n++] = w[i]->value;
+		v[n++] = w[i]->u;
+		v[n++] = w[i]->v;
+	}
+	v[n++] = m.kint;
+	v[n++] = m.kabs;
+	v[n++] = m.developable;
+	for (int i = 0; i < n; i++)
+		if (!isfinite(v[i]))
+			return loft_fail(err, LOFT_EGEOM, -1, "the surface's "
+			    "numbers overflow: coefficients too large");
+	loft_put_row(&run->w, v, n);
+	loft_end_record(&run->w);
+	return 0;
+}
+
 static int
 measure_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
@@ -132,8 +180,7 @@ measure_record(struct loft_run *run, const struct loft_record *rec,
 	int n = o->nfield;
 
 	if (loft_is_surface(rec))
-		return loft_fail(err, LOFT_EINPUT, -1, "a %s record is a "
-		    "surface: measure measures curves", rec->type);
+		return measure_surface(run, rec, err);
 	if (loft_curve_from_record(rec, &c, err) != 0)
 		return LOFT_EINPUT;
 	if (n == 0) {

@@ -8,6 +8,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "loftprog.h"
@@ -350,44 +351,31 @@ wireframe(struct loft_run *run, const struct loft_surface *s,
 }
 
 /*
- * A surface as an OBJ mesh: (n + 1)^2 vertices, u-major, and two
- * triangles a cell, counter-clockwise in (u, v), so their normals point
- * along f_u x f_v.
+ * A surface as an OBJ mesh (mesh.c): (n + 1)^2 vertices, u-major, and
+ * two triangles a cell, counter-clockwise in (u, v), so their normals
+ * point along f_u x f_v; not welded.
  */
 static int
 mesh(struct loft_run *run, const struct loft_record *rec,
     const struct loft_surface *s, struct loft_error *err)
 {
 	struct opts *o = run->ctx;
-	double p[LOFT_MAXDIM], *v;
-	size_t n = (size_t)o->per, nv = (n + 1) * (n + 1), *tri, t = 0;
+	struct loft_mesh me;
 	int rc = 0;
 
-	v = malloc(3 * nv * sizeof *v);
-	tri = malloc(6 * n * n * sizeof *tri);
-	if (v == NULL || tri == NULL)
+	memset(&me, 0, sizeof me);
+	if (loft_mesh_surfaces(&me, s, 1, NULL, NULL, o->per, -1) != 0)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	for (size_t j = 0; j <= n && rc == 0; j++)
-		for (size_t k = 0; k <= n && rc == 0; k++) {
-			rc = surface_point(s, (double)j / n, (double)k / n, p,
-			    err);
-			for (int q = 0; q < 3; q++)
-				v[3 * (j * (n + 1) + k) + q] = q < s->dim ?
-				    p[q] : 0;
-		}
-	for (size_t j = 0; j < n && rc == 0; j++)
-		for (size_t k = 0; k < n; k++) {
-			size_t a = j * (n + 1) + k, b = a + n + 1;
-			size_t f[6] = { a, b, b + 1, a, b + 1, a + 1 };
-
-			for (int q = 0; q < 6; q++)
-				tri[t++] = f[q];
-		}
+	for (size_t i = 0; i < me.nv && rc == 0; i++)
+		for (int q = 0; q < 3 && rc == 0; q++)
+			if (!isfinite(me.v[3 * i + q]))
+				rc = loft_fail(err, LOFT_EGEOM, -1, "%s overflows "
+				    "at u = %g, v = %g: coefficients too large",
+				    s->type, me.uv[2 * i], me.uv[2 * i + 1]);
 	if (rc == 0 && (rc = obj_begin(run, rec, err)) == 0)
-		rc = obj_end(run, o->doc->f->mesh(o->doc, v, nv, tri, 2 * n * n),
-		    err);
-	free(v);
-	free(tri);
+		rc = obj_end(run, o->doc->f->mesh(o->doc, me.v, me.nv, me.t,
+		    me.nt), err);
+	loft_mesh_free(&me);
 	return rc;
 }
 

@@ -18,19 +18,13 @@
  */
 #define MAX_STEPS_PIECE 65536
 
-/* Most mesh steps along a patch side: 256^2 cells a patch. */
-#define MAX_STEPS 256
-
 /*
  * Vertices of a mesh nearer than this part of the design's size are one:
  * an edge evaluated from the two patches that share it agrees to a few
- * rounding errors (1e-15), and no mesh cell of at most MAX_STEPS steps
+ * rounding errors (1e-15), and no mesh cell of at most 256 steps
  * is anywhere near as small.
  */
 #define WELD_TOL 1e-9
-
-/* Edge parameters nearer than this are one place (loft.5's links). */
-#define EDGE_TOL 1e-9
 
 #define SURF_HEAD 3     /* numbers before a kept surface's control points */
 
@@ -554,451 +548,53 @@ loft_cad_record(struct loft_cad_doc *d, const struct loft_record *rec,
 
 /* ---- surfaces into one mesh ------------------------------------------ */
 
-/*
- * The steps along each side of patch (m, n, ctl) for a mesh within tol:
- * linear interpolation over cells of h = 1/N errs by at most
- * h^2 (M_uu + 2 M_uv + M_vv) / 8, M the bounds of the second derivatives
- * that the net's second differences give (times m (m - 1), m n, n (n - 1)).
- */
-static long
-steps_for(const double *ctl, int m, int n, double tol)
-{
-	double muu = 0, muv = 0, mvv = 0, t;
-	const double *p = ctl;
-
-#define P(i, j) (p + 3 * ((size_t)(i) * (n + 1) + (j)))
-	for (int i = 0; i <= m; i++)
-		for (int j = 0; j <= n; j++) {
-			double a[3];
-
-			if (i + 2 <= m) {
-				for (int k = 0; k < 3; k++)
-					a[k] = P(i + 2, j)[k] -
-					    2 * P(i + 1, j)[k] + P(i, j)[k];
-				if ((t = m * (m - 1) * vnorm(a, 3)) > muu)
-					muu = t;
-			}
-			if (j + 2 <= n) {
-				for (int k = 0; k < 3; k++)
-					a[k] = P(i, j + 2)[k] -
-					    2 * P(i, j + 1)[k] + P(i, j)[k];
-				if ((t = n * (n - 1) * vnorm(a, 3)) > mvv)
-					mvv = t;
-			}
-			if (i + 1 <= m && j + 1 <= n) {
-				for (int k = 0; k < 3; k++)
-					a[k] = P(i + 1, j + 1)[k] -
-					    P(i + 1, j)[k] - P(i, j + 1)[k] +
-					    P(i, j)[k];
-				if ((t = m * n * vnorm(a, 3)) > muv)
-					muv = t;
-			}
-		}
-#undef P
-	t = ceil(sqrt((muu + 2 * muv + mvv) / (8 * tol)));
-	return !(t >= 1) ? 1 : t > MAX_STEPS ? MAX_STEPS : (long)t;
-}
-
-struct mesh {
-	double *v;
-	size_t nv, vcap;
-	size_t *t;
-	size_t nt, tcap;
-};
-
-/* The points of an edge beyond its N steps: parameters, sorted. */
-struct extra {
-	double *t;
-	size_t n, cap;
-};
-
-static int
-by_value(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-
-	return x < y ? -1 : x > y;
-}
-
-/*
- * The extra points of edge e of design patch ip: the steps k/N of each
- * neighbour across it that fall between this edge's own steps (a
- * T-junction: the neighbour covers part of the edge), mapped into this
- * edge's parameter by the two links; sorted, each once.
- */
-static int
-edge_extras(const struct loft_design *dz, size_t ip, int e, long N,
-    struct extra *x)
-{
-	const struct loft_patch *p = &dz->p[ip];
-
-	x->n = 0;
-	for (size_t l = 0; l < p->nlink[e]; l++) {
-		const struct loft_link *L = &p->link[e][l];
-		long iq = loft_design_find(dz, L->id);
-		const struct loft_link *B = NULL;
-
-		if (iq < 0)
-			continue;
-		for (int f = 0; f < 4 && B == NULL; f++)
-			for (size_t k = 0; k < dz->p[iq].nlink[f]; k++)
-				if (dz->p[iq].link[f][k].id == p->id)
-					B = &dz->p[iq].link[f][k];
-		if (B == NULL || fabs(B->b - B->a) < EDGE_TOL)
-			continue;
-		for (long k = 0; k <= N; k++) {
-			double s = (double)k / N, lo = fmin(B->a, B->b);
-			double hi = fmax(B->a, B->b), t, r;
-
-			if (s < lo - EDGE_TOL || s > hi + EDGE_TOL)
-				continue;
-			t = L->a + (s - B->a) * (L->b - L->a) / (B->b - B->a);
-			r = t * N - floor(t * N + 0.5);
-			if (t <= EDGE_TOL || t >= 1 - EDGE_TOL ||
-			    fabs(r) <= EDGE_TOL * N)
-				continue;       /* one of this edge's own steps */
-			if (loft__grow((void **)&x->t, &x->cap, x->n + 1,
-			    sizeof *x->t) != 0)
-				return LOFT_ENOMEM;
-			x->t[x->n++] = t;
-		}
-	}
-	if (x->n > 1)
-		qsort(x->t, x->n, sizeof *x->t, by_value);
-	return 0;
-}
-
-static int
-add_vertex(struct mesh *me, const struct loft_bsurf *s, double u, double v,
-    size_t *at)
-{
-	if (loft__grow((void **)&me->v, &me->vcap, 3 * (me->nv + 1),
-	    sizeof *me->v) != 0)
-		return LOFT_ENOMEM;
-	loft_bezier_surface_eval(s->ctl, s->m, s->n, u, v, me->v + 3 * me->nv,
-	    NULL, NULL);
-	*at = me->nv++;
-	return 0;
-}
-
-static int
-add_triangle(struct mesh *me, size_t a, size_t b, size_t c)
-{
-	if (loft__grow((void **)&me->t, &me->tcap, 3 * (me->nt + 1),
-	    sizeof *me->t) != 0)
-		return LOFT_ENOMEM;
-	me->t[3 * me->nt] = a;
-	me->t[3 * me->nt + 1] = b;
-	me->t[3 * me->nt + 2] = c;
-	me->nt++;
-	return 0;
-}
-
-/* The extras of x strictly between lo and hi, from lo's end: "rev" from hi's. */
-static int
-side(struct mesh *me, const struct loft_bsurf *s, const struct extra *x,
-    double lo, double hi, int rev, int dir, double fixed, size_t *poly,
-    size_t *np)
-{
-	for (size_t k = 0; k < x->n; k++) {
-		double t = x->t[rev ? x->n - 1 - k : k];
-		int rc;
-
-		if (t <= lo || t >= hi)
-			continue;
-		rc = dir == 0 ? add_vertex(me, s, t, fixed, &poly[*np]) :
-		    add_vertex(me, s, fixed, t, &poly[*np]);
-		if (rc != 0)
-			return rc;
-		++*np;
-	}
-	return 0;
-}
-
-/*
- * Patch s on an N x N grid: two triangles a cell, counter-clockwise in
- * (u, v); a cell with extra points on its sides (x[edge], by enum
- * loft_edge) a fan around its centre through all its points.
- */
-static int
-mesh_patch(struct mesh *me, const struct loft_bsurf *s, long N,
-    const struct extra *x)
-{
-	size_t base = me->nv, w = (size_t)N + 1, at;
-	size_t *poly = NULL;
-	int rc = 0;
-
-	for (size_t i = 0; rc == 0 && i < w; i++)
-		for (size_t j = 0; rc == 0 && j < w; j++)
-			rc = add_vertex(me, s, (double)i / N, (double)j / N, &at);
-	for (size_t i = 0; rc == 0 && i + 1 < w; i++)
-		for (size_t j = 0; rc == 0 && j + 1 < w; j++) {
-			size_t a = base + i * w + j, b = a + w, np = 0, c;
-			double u0 = (double)i / N, u1 = (double)(i + 1) / N;
-			double v0 = (double)j / N, v1 = (double)(j + 1) / N;
-			size_t cap = 4 + (j == 0 ? x[LOFT_V0].n : 0) +
-			    (i + 2 == w ? x[LOFT_U1].n : 0) +
-			    (j + 2 == w ? x[LOFT_V1].n : 0) +
-			    (i == 0 ? x[LOFT_U0].n : 0);
-
-			if (cap == 4) {
-				rc = add_triangle(me, a, b, b + 1) ||
-				    add_triangle(me, a, b + 1, a + 1);
-				continue;
-			}
-			free(poly);
-			if ((poly = malloc(cap * sizeof *poly)) == NULL)
-				return LOFT_ENOMEM;
-			/* counter-clockwise: v = v0, u = u1, v = v1, u = u0 */
-			poly[np++] = a;
-			if (j == 0)
-				rc = side(me, s, &x[LOFT_V0], u0, u1, 0, 0, 0, poly,
-				    &np);
-			poly[np++] = b;
-			if (rc == 0 && i + 2 == w)
-				rc = side(me, s, &x[LOFT_U1], v0, v1, 0, 1, 1, poly,
-				    &np);
-			poly[np++] = b + 1;
-			if (rc == 0 && j + 2 == w)
-				rc = side(me, s, &x[LOFT_V1], u0, u1, 1, 0, 1, poly,
-				    &np);
-			poly[np++] = a + 1;
-			if (rc == 0 && i == 0)
-				rc = side(me, s, &x[LOFT_U0], v0, v1, 1, 1, 0, poly,
-				    &np);
-			if (rc == 0)
-				rc = add_vertex(me, s, (u0 + u1) / 2, (v0 + v1) / 2,
-				    &c);
-			for (size_t k = 0; rc == 0 && k < np; k++)
-				rc = add_triangle(me, c, poly[k], poly[(k + 1) % np]);
-		}
-	free(poly);
-	return rc ? LOFT_ENOMEM : 0;
-}
-
-static const double *weld_v;
-
-static int
-by_x(const void *a, const void *b)
-{
-	double xa = weld_v[3 * *(const size_t *)a];
-	double xb = weld_v[3 * *(const size_t *)b];
-
-	return xa < xb ? -1 : xa > xb;
-}
-
-/*
- * Weld: vertices within tol are one (the first of them by x), triangles
- * that lose a side to it dropped, the vertices renumbered densely.
- */
-static int
-weld(struct mesh *me, double tol)
-{
-	size_t *ord = malloc((me->nv + 1) * sizeof *ord);
-	size_t *to = malloc((me->nv + 1) * sizeof *to);
-	size_t nv = 0, nt = 0;
-
-	if (ord == NULL || to == NULL) {
-		free(ord);
-		free(to);
-		return LOFT_ENOMEM;
-	}
-	for (size_t i = 0; i < me->nv; i++) {
-		ord[i] = i;
-		to[i] = (size_t)-1;
-	}
-	weld_v = me->v;
-	qsort(ord, me->nv, sizeof *ord, by_x);
-	for (size_t a = 0; a < me->nv; a++) {
-		size_t i = ord[a];
-
-		if (to[i] != (size_t)-1)
-			continue;
-		to[i] = i;
-		for (size_t b = a + 1; b < me->nv &&
-		    me->v[3 * ord[b]] - me->v[3 * i] <= tol; b++)
-			if (to[ord[b]] == (size_t)-1 &&
-			    vdist(me->v + 3 * ord[b], me->v + 3 * i, 3) <= tol)
-				to[ord[b]] = i;
-	}
-	/* renumber the kept vertices in their order, then the triangles */
-	for (size_t i = 0; i < me->nv; i++)
-		if (to[i] == i) {
-			vcopy(me->v + 3 * nv, me->v + 3 * i, 3);
-			ord[i] = nv++;
-		}
-	for (size_t k = 0; k < me->nt; k++) {
-		size_t a = ord[to[me->t[3 * k]]], b = ord[to[me->t[3 * k + 1]]];
-		size_t c = ord[to[me->t[3 * k + 2]]];
-
-		if (a == b || b == c || a == c)
-			continue;
-		me->t[3 * nt] = a;
-		me->t[3 * nt + 1] = b;
-		me->t[3 * nt + 2] = c;
-		nt++;
-	}
-	me->nv = nv;
-	me->nt = nt;
-	free(ord);
-	free(to);
-	return 0;
-}
-
-/* A triangle's side: its ends (lower first), the triangle, its sense. */
-struct side {
-	size_t a, b, t;
-	int up;                 /* the triangle runs from a to b */
-};
-
-static int
-by_ends(const void *x, const void *y)
-{
-	const struct side *p = x, *q = y;
-
-	if (p->a != q->a)
-		return p->a < q->a ? -1 : 1;
-	return p->b < q->b ? -1 : p->b > q->b;
-}
-
-/*
- * Orient the welded mesh consistently: across each side two triangles
- * share, they must run it opposite ways.  Each connected piece keeps the
- * orientation of its first triangle (its first patch's f_u x f_v) and the
- * rest follow by a breadth-first walk; a piece that cannot be oriented
- * (a Moebius band) keeps what the walk gave it.
- */
-static int
-orient(struct mesh *me)
-{
-	size_t ns = 3 * me->nt, head = 0, tail = 0;
-	struct side *s = malloc((ns + 1) * sizeof *s);
-	size_t *nb = malloc((ns + 1) * sizeof *nb);
-	size_t *queue = malloc((me->nt + 1) * sizeof *queue);
-	unsigned char *same = malloc(ns + 1), *flip = calloc(me->nt + 1, 1);
-	unsigned char *seen = calloc(me->nt + 1, 1);
-	int rc = LOFT_ENOMEM;
-
-	if (s == NULL || nb == NULL || queue == NULL || same == NULL ||
-	    flip == NULL || seen == NULL)
-		goto out;
-	for (size_t t = 0; t < me->nt; t++)
-		for (int k = 0; k < 3; k++) {
-			size_t a = me->t[3 * t + k], b = me->t[3 * t + (k + 1) % 3];
-			struct side *e = &s[3 * t + k];
-
-			e->a = a < b ? a : b;
-			e->b = a < b ? b : a;
-			e->t = t;
-			e->up = a < b;
-			nb[3 * t + k] = (size_t)-1;
-		}
-	qsort(s, ns, sizeof *s, by_ends);
-	/* a side of exactly two triangles links them, in a free slot */
-	for (size_t i = 0; i + 1 < ns; i++) {
-		size_t j = i + 1;
-
-		if (by_ends(&s[i], &s[j]) != 0 || (j + 1 < ns &&
-		    by_ends(&s[j], &s[j + 1]) == 0))
-			continue;
-		for (int r = 0; r < 2; r++) {
-			size_t t = s[r ? j : i].t, k = 3 * t;
-
-			while (k < 3 * t + 2 && nb[k] != (size_t)-1)
-				k++;
-			nb[k] = s[r ? i : j].t;
-			same[k] = s[i].up == s[j].up;
-		}
-		i = j;
-	}
-	for (size_t t0 = 0; t0 < me->nt; t0++) {
-		if (seen[t0])
-			continue;
-		seen[t0] = 1;
-		queue[tail++] = t0;
-		while (head < tail) {
-			size_t t = queue[head++];
-
-			for (size_t k = 3 * t; k < 3 * t + 3; k++) {
-				size_t n = nb[k];
-
-				if (n == (size_t)-1 || seen[n])
-					continue;
-				seen[n] = 1;
-				flip[n] = flip[t] ^ same[k];
-				queue[tail++] = n;
-			}
-		}
-	}
-	for (size_t t = 0; t < me->nt; t++)
-		if (flip[t]) {
-			size_t x = me->t[3 * t + 1];
-
-			me->t[3 * t + 1] = me->t[3 * t + 2];
-			me->t[3 * t + 2] = x;
-		}
-	rc = 0;
-out:
-	free(s);
-	free(nb);
-	free(queue);
-	free(same);
-	free(flip);
-	free(seen);
-	return rc;
-}
-
+/* The kept surfaces as one mesh (mesh.c), handed to the format. */
 static int
 make_mesh(struct loft_cad_doc *d)
 {
-	struct mesh me = { NULL, 0, 0, NULL, 0, 0 };
-	struct extra x[4] = { { NULL, 0, 0 }, { NULL, 0, 0 }, { NULL, 0, 0 },
-	    { NULL, 0, 0 } };
+	struct loft_mesh me;
+	struct loft_surface *s = NULL;
+	long *ip = NULL, N = d->o.per;
+	size_t ns = 0, k = 0;
 	double size = 0, tol;
-	long N = d->o.per;
-	int rc = 0;
+	int rc;
 
-	for (int k = 0; k < 3; k++)
-		size = hypot(size, d->box[3 + k] - d->box[k]);
+	memset(&me, 0, sizeof me);
+	for (int c = 0; c < 3; c++)
+		size = hypot(size, d->box[3 + c] - d->box[c]);
 	tol = d->o.tol > 0 ? d->o.tol : LOFT_CAD_MESHTOL * size;
-	/* one step count for every patch, so shared edges match */
-	for (size_t i = 0; N == 0 && i < d->nsurf; ) {
+	for (size_t i = 0; i < d->nsurf; ns++)
+		i += SURF_HEAD + 3 * (size_t)(d->surf[i] + 1) *
+		    (size_t)(d->surf[i + 1] + 1);
+	s = malloc((ns + 1) * sizeof *s);
+	ip = malloc((ns + 1) * sizeof *ip);
+	rc = s == NULL || ip == NULL ? LOFT_ENOMEM : 0;
+	/* one step count for every patch, so shared edges match: the
+	 * first patch's, as the mesher has always taken it */
+	for (size_t i = 0; rc == 0 && i < d->nsurf; k++) {
 		int m = (int)d->surf[i], n = (int)d->surf[i + 1];
-		long s = steps_for(d->surf + i + SURF_HEAD, m, n, tol);
 
-		N = s > N ? s : N;
+		loft_surface_from_bezier(d->surf + i + SURF_HEAD, m, n, &s[k]);
+		ip[k] = (long)d->surf[i + 2];
+		if (N == 0) {
+			long st = loft_mesh_steps(s[k].coef, m, n, tol);
+
+			N = st > N ? st : N;
+		}
 		i += SURF_HEAD + 3 * (size_t)(m + 1) * (n + 1);
 	}
-	N = N > 0 ? N : 1;
-	for (size_t i = 0; rc == 0 && i < d->nsurf; ) {
-		struct loft_bsurf s = { d->surf + i + SURF_HEAD,
-		    (int)d->surf[i], (int)d->surf[i + 1] };
-		long ip = (long)d->surf[i + 2];
-
-		for (int e = 0; e < 4; e++) {
-			x[e].n = 0;
-			if (rc == 0 && ip >= 0)
-				rc = edge_extras(&d->design, (size_t)ip, e, N, &x[e]);
-		}
-		if (rc == 0)
-			rc = mesh_patch(&me, &s, N, x);
-		i += SURF_HEAD + 3 * (size_t)(s.m + 1) * (s.n + 1);
-	}
-	for (int e = 0; e < 4; e++)
-		free(x[e].t);
 	if (rc == 0)
-		rc = weld(&me, WELD_TOL * size);
-	if (rc == 0)
-		rc = orient(&me);
+		rc = loft_mesh_surfaces(&me, s, ns, ip, &d->design, N,
+		    WELD_TOL * size);
 	if (rc == 0 && me.nt == 0)
 		rc = LOFT_EGEOM;        /* no area: no facet (issue 28) */
 	if (rc == 0)
 		rc = d->f->mesh(d, me.v, me.nv, me.t, me.nt);
-	free(me.v);
-	free(me.t);
+	loft_mesh_free(&me);
+	free(s);
+	free(ip);
 	return rc;
 }
-
 int
 loft_cad_finish(struct loft_cad_doc *d, struct loft_error *err)
 {

@@ -9,10 +9,10 @@
 #include "cadread.h"
 
 const struct loft_cadin_reader loft_cadin_readers[] = {
-	{ "step", loft__step_sniff, loft_step_read },
-	{ "iges", loft__iges_sniff, loft_iges_read },
 	{ "dxf", loft__dxf_sniff, loft_dxf_read },
 	{ "svg", loft__svg_sniff, loft_svg_read },
 	{ "csv", loft__csv_sniff, loft_csv_read },
+	{ "step", loft__step_sniff, loft_step_read },
+	{ "iges", loft__iges_sniff, loft_iges_read },
 	{ NULL, NULL, NULL }
 };

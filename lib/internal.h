@@ -274,6 +274,9 @@ extern const struct loft__curve_type loft__cubic_type, loft__quartic_type,
 extern const struct loft__surface_type loft__patch_type,
     loft__bezier_surface_type;
 
+/* surfmeasure.c: Gauss-Legendre nodes and weights of order 5 on [0, 1]. */
+extern const double loft__gl5_x[5], loft__gl5_w[5];
+
 /* quartic.c: the quartic with coefficient vectors k[0..4] at u (any of
  * p, d1, d2 may be NULL); loft_quartic_eval over pointers. */
 void loft__quartic_combine(const double *const *k, int dim, double u,

@@ -1583,4 +1583,257 @@ int loft_bezier_bicubics(const double *ctl, int m, int n, double tol,
     size_t max, double *out, size_t *ku, size_t *kv,
     struct loft_error *err);
 
+/* ------------------------------------------------------------------ */
+/* Triangle meshes of surfaces (mesh.c)                                */
+
+/*
+ * A mesh: nv vertices of 3 numbers (a plane surface's third is 0), each
+ * with the (u, v) and the index of the surface it was evaluated on; nt
+ * triangles of 3 vertex indices.  Starts zeroed; free with
+ * loft_mesh_free.
+ */
+struct loft_mesh {
+	double *v;
+	size_t nv;
+	size_t *t;
+	size_t nt;
+	double *uv;             /* 2 numbers a vertex */
+	size_t *patch;          /* a vertex's surface, by index */
+	size_t vcap, tcap, uvcap, pcap;
+};
+
+/*
+ * The steps N along each side of the Bezier patch of degrees m, n
+ * (control points ctl, 3 numbers each, u-major) for which the mesh's
+ * triangles are within tol (> 0) of it: 1 to 256.
+ */
+long loft_mesh_steps(const double *ctl, int m, int n, double tol);
+
+/*
+ * Append the ns surfaces s to me, each on an N x N grid of cells (N >= 1,
+ * the same for all so that shared edges match), two triangles a cell,
+ * counter-clockwise in (u, v) (normals along f_u x f_v), vertices u-major.
+ * With a design dz (or NULL), ip[i] (or ip NULL) the index in dz of
+ * surface i or -1: where a neighbour covers only part of an edge, the
+ * cells along it are fans through the neighbour's steps, so there is no
+ * T-junction.  With weld_tol >= 0 vertices within weld_tol are then one
+ * and the triangles oriented alike across every shared side; with
+ * weld_tol < 0 the grids are left as made.  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_mesh_surfaces(struct loft_mesh *me, const struct loft_surface *s,
+    size_t ns, const long *ip, const struct loft_design *dz, long N,
+    double weld_tol);
+
+/*
+ * The adjacency of me's triangles: nb[3 t + k] (nb holds 3 nt) is the
+ * triangle across side k of triangle t (from its vertex k to k + 1), or
+ * (size_t)-1 on the boundary or where more than two triangles meet;
+ * same (may be NULL) whether the two run that side the same way.
+ * Returns 0 or LOFT_ENOMEM.
+ */
+int loft_mesh_neighbours(const struct loft_mesh *me, size_t *nb,
+    unsigned char *same);
+
+/*
+ * Weld me: vertices within tol (>= 0) of one another are one, triangles
+ * that lose a side to it dropped, the rest renumbered in their order;
+ * map (may be NULL; nv entries, the count before) gets each old
+ * vertex's new index.  Returns 0 or LOFT_ENOMEM (me unchanged).
+ */
+int loft_mesh_weld(struct loft_mesh *me, double tol, size_t *map);
+
+void loft_mesh_free(struct loft_mesh *me);
+
+/* Fill s for the Bezier patch of degrees m, n (control points ctl of 3
+ * numbers, u-major, as a bezier-surface record's rows); s points into
+ * ctl.  (surface.c) */
+void loft_surface_from_bezier(const double *ctl, int m, int n,
+    struct loft_surface *s);
+
+/* ------------------------------------------------------------------ */
+/* Sparse symmetric systems (sparse.c)                                 */
+
+/*
+ * A sparse symmetric matrix of order n, its entries (i, j, a) in any
+ * order, duplicates summed; both triangles are given or only one (the
+ * other follows).  Built by loft_sparse_add, then loft_sparse_compress.
+ */
+struct loft_sparse {
+	size_t n;
+	size_t *row, *col;      /* triplets, then compressed rows: row[n + 1] */
+	double *a;
+	size_t nnz, cap;
+	int compressed;
+};
+
+/* Add a to entry (i, j) and, off the diagonal, to (j, i).  i, j < n.
+ * Returns 0 or LOFT_ENOMEM. */
+int loft_sparse_add(struct loft_sparse *m, size_t i, size_t j, double a);
+
+/* Sort and sum the entries into compressed rows.  0 or LOFT_ENOMEM. */
+int loft_sparse_compress(struct loft_sparse *m);
+
+/*
+ * Solve m x = b (m compressed, symmetric positive definite) by conjugate
+ * gradients with a Jacobi preconditioner, from the x given (a guess, or
+ * zeros), until the residual is below tol times |b|, at most maxit
+ * steps.  Returns 0, LOFT_ENOCONV (x holds the best reached) or
+ * LOFT_ENOMEM.  *iters (may be NULL) gets the steps taken.
+ */
+int loft_sparse_solve(const struct loft_sparse *m, const double *b,
+    double *x, double tol, long maxit, long *iters);
+
+void loft_sparse_free(struct loft_sparse *m);
+
+/*
+ * A Cholesky factor L L^t = P m P^t of a compressed symmetric positive
+ * definite m, held in its envelope, the rows in reverse Cuthill-McKee
+ * order (P) so that a mesh's envelope stays narrow.  For many solves
+ * with one matrix (unroll's rounds).
+ */
+struct loft_sparse_chol {
+	size_t n;
+	size_t *perm, *inv;     /* row i of the factor is m's row perm[i] */
+	size_t *first, *start;  /* row i holds columns first[i]..i from */
+	double *l;              /* l[start[i]] on */
+};
+
+/* Factor m into c.  Returns 0, LOFT_EGEOM (m is not positive definite)
+ * or LOFT_ENOMEM (also when the envelope would pass 2^26 numbers). */
+int loft_sparse_factor(const struct loft_sparse *m, struct loft_sparse_chol *c);
+
+/* Solve m x = b with the factor c; work holds c->n numbers. */
+void loft_sparse_chol_solve(const struct loft_sparse_chol *c, const double *b,
+    double *x, double *work);
+
+void loft_sparse_chol_free(struct loft_sparse_chol *c);
+
+
+/* ------------------------------------------------------------------ */
+/* The numbers of a surface (surfmeasure.c)                            */
+
+/*
+ * A surface is developable (unrolls without strain) when the integral
+ * of |K| dA, its total absolute Gaussian curvature, a number without
+ * units, is at most this: the quadrature of an exact cylinder or cone
+ * gives 1e-10 or less, and a dome of 1 % rise already gives 1e-3.
+ */
+#define LOFT_DEVELOPABLE_TOL 1e-6
+
+/* Where a curvature is greatest or least: its value, the surface (by
+ * index) and (u, v). */
+struct loft_surface_where {
+	double value;
+	size_t patch;
+	double u, v;
+};
+
+struct loft_surface_numbers {
+	double area;
+	struct loft_surface_where kmin, kmax;   /* Gaussian curvature */
+	struct loft_surface_where hmin, hmax;   /* mean curvature, signed */
+	                                        /* as f_u x f_v points */
+	double kint, kabs;      /* integral of K dA and of |K| dA */
+	int developable;        /* kabs <= LOFT_DEVELOPABLE_TOL */
+};
+
+/*
+ * The Gaussian curvature *k, mean curvature *h and area element
+ * |f_u x f_v| *da of s at (u, v).  Returns 0, or LOFT_EGEOM where the
+ * surface is degenerate there (*k = *h = 0).
+ */
+int loft_surface_curvature(const struct loft_surface *s, double u, double v,
+    double *k, double *h, double *da);
+
+/*
+ * The numbers of the ns surfaces s taken as one: by Gauss-Legendre
+ * quadrature of order 5 on cells x cells cells of each (cells >= 1; 8
+ * holds the area of a cubic patch to 1e-12), the extremes among the
+ * quadrature's points.
+ */
+void loft_surface_numbers(const struct loft_surface *s, size_t ns, long cells,
+    struct loft_surface_numbers *m);
+
+/* ------------------------------------------------------------------ */
+/* Laying a surface flat (unroll.c)                                    */
+
+struct loft_unroll_opts {
+	double tol;             /* the mesh within this, in units, or 0: */
+	                        /* LOFT_UNROLL_RELTOL of the sheet's size */
+	long steps;             /* mesh steps a patch side, or 0: from tol */
+	int arap;               /* 1: as-rigid-as-possible even when the */
+	                        /* surface is developable */
+	int rounds;             /* as-rigid-as-possible rounds at most */
+};
+
+/* The default tolerance: 1e-5 of the size, as a CAD polyline's. */
+#define LOFT_UNROLL_RELTOL 1e-5
+
+/* The default rounds of the as-rigid-as-possible iteration: each
+ * lowers the energy; after 50 the largest strain moves by less than
+ * 1e-4 of itself on a dome or a bow. */
+#define LOFT_UNROLL_ROUNDS 50
+
+/*
+ * A surface laid flat.  The mesh is welded across shared edges; xy
+ * its vertices in the plane.  grid[k] the welded vertex of node
+ * (i, j) of patch p, k = (p (N + 1) + i) (N + 1) + j, at (u, v) =
+ * (i / N, j / N); jac there the 2 x 2 derivative of the flat map
+ * (d/du, d/dv; 4 numbers).  seg the outline: nseg cubic segments of
+ * 8 numbers (loft.5's cubic rows), closed, counter-clockwise.
+ */
+struct loft_unroll {
+	struct loft_mesh mesh;
+	double *xy;
+	size_t *grid;
+	double *jac;
+	long N;
+	size_t npatch;
+	double *seg;
+	size_t nseg;
+	int exact;              /* developed exactly; else least strain */
+	long rounds;            /* as-rigid-as-possible rounds taken */
+	double strain_max, strain_mean; /* of mesh edges, |flat|/|3-D| - 1 */
+	double area3, area2;    /* of the mesh in space and flat */
+	struct loft_surface_numbers num;
+};
+
+/*
+ * Lay the ns surfaces s, one sheet (their shared edges found by
+ * welding, as loft_mesh_surfaces does), flat.  Where the sheet is
+ * developable (loft_surface_numbers) and o->arap is 0, each surface is
+ * developed exactly: its edge u = 0 into the plane by its geodesic
+ * curvature, then each line v = const from it, by Gauss-Legendre
+ * quadrature, so lengths and angles are kept to rounding; the patches
+ * are then placed on one another where they share vertices.  Otherwise
+ * that development starts an as-rigid-as-possible iteration (Liu et al.
+ * 2008: local rotations, then a global sparse least-squares solve) on
+ * the mesh, and six passes reweighted towards the least largest
+ * strain.  Returns 0 and fills r (free with loft_unroll_free), or
+ * LOFT_EINPUT (no surface, tol negative or not finite), LOFT_EGEOM (a
+ * surface that is a point or overflows, a sheet with no outline) or
+ * LOFT_ENOMEM.
+ */
+int loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
+    size_t ns, struct loft_unroll *r, struct loft_error *err);
+
+/*
+ * The cubic segment (8 numbers, a cubic record's row) of the flat
+ * image of patch p of r from grid node a to grid node b ((u, v) of
+ * each, multiples of 1 / r->N, neighbours on the grid): their flat
+ * points and the flat map's derivative along the step.
+ */
+void loft_unroll_hermite(const struct loft_unroll *r, size_t p,
+    const double *a, const double *b, double *seg);
+
+/*
+ * The flat image of the cut of r's mesh by the plane normal . x = d:
+ * curves of plane points appended to out (out->dim 2), each piece
+ * chained across the triangles.  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_unroll_cut(const struct loft_unroll *r, const double *normal,
+    double d, struct loft_cut *out);
+
+void loft_unroll_free(struct loft_unroll *r);
+
 #endif

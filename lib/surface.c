@@ -249,3 +249,21 @@ loft_surface_bezier(const struct loft_surface *s, double *ctl)
 {
 	s->bezier(s, ctl);
 }
+
+void
+loft_surface_from_bezier(const double *ctl, int m, int n,
+    struct loft_surface *s)
+{
+	const struct loft__surface_type *t = &loft__bezier_surface_type;
+
+	memset(s, 0, sizeof *s);
+	s->type = t->name;
+	s->coef = ctl;
+	s->dim = 3;
+	s->m = m;
+	s->n = n;
+	s->eval = t->eval;
+	s->eval2 = t->eval2;
+	s->box = t->box;
+	s->bezier = t->bezier;
+}

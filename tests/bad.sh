@@ -36,7 +36,7 @@
 BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin loftplot offset measure tocad patchloft patchcut"}
+    patchjoin loftplot offset measure tocad patchloft patchcut unroll"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -1911,7 +1911,10 @@ measure_cases() {
 	bad "a point record" 1 "a point record is no curve"
 	printf 'patch id=1\n0 0 1 0 1 0 1 0 0.5 0\n0 1 1 1 1 0 1 0 0.5 1\n0 1 0 1 0 0 0 0 0 1\n0 0 0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 0 0\n' \
 	    >"$T/case"
-	bad "a patch" 1 "a patch record is a surface"
+	good "a patch"
+	opts -f length
+	bad "a patch with -f" 1 "-f names curve fields; a patch record is a surface"
+	opts
 	printf 'cubic\n0 0 1 0 0 2 0\n' >"$T/case"
 	bad "a truncated cubic row" 2 "cubic rows need 8 or 12 numbers, not 7"
 	printf 'cubic\n0 0 1 0 0 0 1 1\n' >"$T/case"
@@ -2140,6 +2143,30 @@ patchcut_cases() {
 		    "$T/p0" "$T/p1" && ok ||
 		    no "$what: the cuts differ"
 	done
+}
+
+# ---- unroll ---------------------------------------------------------------------
+
+unroll_kind=design
+unroll_opts="-n 4"
+unroll_many=0           # copies of one patch weld into one: one outline
+unroll_run() { "$B/unroll" "$@"; }
+unroll_good() { patchsplit_good "$@"; }
+
+unroll_cases() {
+	opts -n 4
+	design_cases
+	opts -n 3 -e -m -x 1
+	design_cases
+	opts -n 4
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "a curve record" 1 "cubic record: unroll lays surface records flat"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n' >"$T/case"
+	good "a bezier-surface"
+	{ patch 5 "" 0 0 | sed 's/^0 0 0 0 3 0/0 0 0 0 3 1e300/'; } >"$T/case"
+	sane "a coefficient of 1e300"
+	printf 'bezier-surface m=1 n=1\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n' >"$T/case"
+	sane "a surface that is a point"
 }
 
 # ---- run them -----------------------------------------------------------------

@@ -94,6 +94,7 @@ check patchloft 3
 check patchsplit 3 -u 0.5
 check patchjoin 3 -P 1 -S 2
 check patchcut 3 -x 1
+check unroll 3
 # every program of PROGS is tried here, but fromcad, which reads CAD
 # files, not records
 for p in $PROGS; do

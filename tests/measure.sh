@@ -265,7 +265,8 @@ fails 1 "field cz: a plane curve has no z" "$B/measure -f cz $T/s.bezier"
 fails 1 ":1: a point record is no curve" "printf '0 0\n1 1\n' | $B/measure"
 awk 'BEGIN { print "patch id=1"; for (i = 0; i < 5; i++) { s = i
 	for (j = 1; j < 10; j++) s = s " " i + j; print s } }' >"$T/one.patch"
-fails 1 ":1: a patch record is a surface" "$B/measure $T/one.patch"
+fails 1 ":1: -f names curve fields; a patch record is a surface" \
+    "$B/measure -f length $T/one.patch"
 # a zero start tangent that bends: no cusp, but k ~ 1/u toward the end
 # (y ~ x^1.5), and the energy diverges like log u (issue 24)
 printf 'cubic\n0 0 1 0 0 0 1 1\n' >"$T/cusp.cubic"

@@ -62,5 +62,7 @@ slow sh tests/examples.sh
 slow sh tests/approx.sh
 suite sh tests/synopsis.sh
 slow sh tests/units.sh
+suite bin/test/sparse
+suite sh tests/unroll.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

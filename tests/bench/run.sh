@@ -57,6 +57,14 @@ bin/test/noisy -n 10000 -s 0.3 -r 14 insole man/figures/insole.knots \
 awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
     $B/splinefit -o >$W/sections.cubic || exit 1
 $B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
+# issue 26: a plate of 100 patches (11 sections of 10 segments, lofted),
+# doubly curved, for unroll (under 1 s), against tocad -f stl's mesh of it
+awk -v n=11 'BEGIN { for (k = 0; k < n; k++) { print "points"
+	for (i = 0; i <= 10; i++) { t = i / 10
+	    x = (1 + 0.3 * sin(k / 3)) * sin(1.5 * t) + 0.1 * k * t
+	    printf "%d %.17g %.17g\n", k, x, 0.5 * cos(2 * t) + 0.02 * k }
+	print "" } }' | $B/splinefit -o | $B/patchloft >$W/plate100.design ||
+    exit 1
 # fromcad's corpus: the fitted insoles sampled 8 points a segment, each a
 # closed LWPOLYLINE of 177 vertices on layer 1, in millimetres: 50 MB
 echo "bench: making $W/insoles.dxf: the insoles as 10^4 LWPOLYLINEs, 50 MB"
@@ -126,6 +134,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ sample-n25 "$B/sample -n 25 $W/insoles.cubic"
 	case_ patchloft "$B/patchloft $W/sections.cubic"
 	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
+	case_ unroll "$B/unroll $W/plate100.design"
+	case_ stl-plate "$B/tocad -f stl -n 6 $W/plate100.design"
 	case_ approx "$B/splinefit -e 1.6 $W/noisy100000.pts"
 	case_ approx-small "$B/splinefit -e 1.6 $W/noisy10000.pts"
 	case_ interp-noisy "$B/splinefit -d 0 $W/noisy100000.pts"
@@ -156,3 +166,6 @@ echo "bench: splinefit -e 1.6 of 10^5 noisy points of the insole (under" \
     "1 s), over interpolating them (-d 0: every point a knot), and over" \
     "10^4 of them (linear: about 10)"
 $W/timeit -r $OUT approx/interp-noisy approx/approx-small
+echo "bench: unroll of a doubly curved plate of 100 patches (under 1 s)," \
+    "over tocad -f stl -n 6 meshing it"
+$W/timeit -r $OUT unroll/stl-plate
