@@ -333,8 +333,12 @@ loft__arc_chords(const struct loft_cadin *c, double r, double a)
 	double tol = arc_tol(c, r), t, n;
 
 	a = fabs(a);
-	t = tol >= r ? M_PI / 2 : 2 * acos(1 - tol / r);
-	if (!(t > 0) || t > M_PI / 2)
+	/* 1 - cos(t/2) = 2 sin^2(t/4) = tol/r, solved without forming
+	 * 1 - tol/r, which rounds to 1 below tol/r ~ 1e-16 (a square) */
+	t = tol >= r ? M_PI / 2 : 4 * asin(sqrt(tol / (2 * r)));
+	if (!(t > 0))
+		return -1;      /* tol/r underflowed: endless chords */
+	if (t > M_PI / 2)
 		t = M_PI / 2;
 	n = ceil(a / t - 1e-12);
 	if (!(n <= LOFT_CADIN_ARC_MAX))

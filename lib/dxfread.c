@@ -47,6 +47,8 @@ struct ent {
 	const char *handle, *layer;
 	size_t nhandle, nlayer;
 	struct loft__pts p10, p11;      /* 10/20/30, 11/21/31 */
+	unsigned m10, m11;              /* coordinates the last point has:
+					 * bit k for group 10 + 10 k */
 	struct nums bulge;              /* 42 per 10 point (polylines) */
 	struct nums g40, g41;           /* knots (radius), weights */
 	double t12[3], t13[3], ext[3], elev, a50, a51;
@@ -239,6 +241,7 @@ ent_start(struct ent *e, const struct pair *pr)
 	e->handle = e->layer = NULL;
 	e->nhandle = e->nlayer = 0;
 	e->p10.n = e->p11.n = e->bulge.n = e->g40.n = e->g41.n = 0;
+	e->m10 = e->m11 = 0;
 	e->has12 = e->has13 = e->has50 = e->has51 = 0;
 	e->ext[0] = e->ext[1] = 0;
 	e->ext[2] = 1;
@@ -248,20 +251,37 @@ ent_start(struct ent *e, const struct pair *pr)
 	e->bad = 0;
 }
 
-/* Coordinate k of a point list's last point, for groups 20 and 30. */
+/*
+ * Coordinate k (0 for group 10 or 11, 1 for 20 or 21, 2 for 30 or 31)
+ * of a point: of the last point in s when it lacks that coordinate
+ * still, else of a new point.  So a vertex whose 20 comes before its
+ * 10 is one vertex, not a y given to the vertex before; a point never
+ * given its x is refused at the entity's end.
+ */
 static void
-set_last(struct dxf *d, struct ent *e, struct loft__pts *s, int k,
-    const struct pair *pr)
+coord(struct dxf *d, struct ent *e, struct loft__pts *s, unsigned *mask,
+    int k, const struct pair *pr)
 {
-	double x;
+	double x[3] = { 0, 0, 0 };
+	int poly = strcmp(e->name, "LWPOLYLINE") == 0 ||
+	    strcmp(e->name, "VERTEX") == 0;
 
-	if (coord_num(d, e, pr, &x) != 0)
+	if (coord_num(d, e, pr, &x[k]) != 0)
 		return;
-	if (s->n == 0) {
-		ent_bad(e, "comes before its x (group 10 or 11)", pr);
+	if (s->n > 0 && !(*mask & 1u << k)) {
+		s->p[3 * (s->n - 1) + k] = x[k];
+		*mask |= 1u << k;
 		return;
 	}
-	s->p[3 * (s->n - 1) + k] = x;
+	if (s->n > 0 && !(*mask & 1)) {
+		ent_bad(e, "starts a point before the one before has its x "
+		    "(group 10 or 11)", pr);
+		return;
+	}
+	if (loft__pts_add(s, x) != 0 || (s == &e->p10 && poly &&
+	    nums_add(&e->bulge, 0) != 0))
+		d->oom = 1;
+	*mask = 1u << k;
 }
 
 static void
@@ -274,18 +294,12 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 	switch (pr->code) {
 	case 5: e->handle = pr->v; e->nhandle = pr->n; break;
 	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
-	case 10:
-	case 11:
-		if (coord_num(d, e, pr, &x[0]) != 0)
-			break;
-		if (loft__pts_add(pr->code == 10 ? &e->p10 : &e->p11, x) != 0 ||
-		    (pr->code == 10 && poly && nums_add(&e->bulge, 0) != 0))
-			d->oom = 1;
+	case 10: case 20: case 30:
+		coord(d, e, &e->p10, &e->m10, pr->code / 10 - 1, pr);
 		break;
-	case 20: set_last(d, e, &e->p10, 1, pr); break;
-	case 30: set_last(d, e, &e->p10, 2, pr); break;
-	case 21: set_last(d, e, &e->p11, 1, pr); break;
-	case 31: set_last(d, e, &e->p11, 2, pr); break;
+	case 11: case 21: case 31:
+		coord(d, e, &e->p11, &e->m11, pr->code / 10 - 1, pr);
+		break;
 	case 12: e->has12 = pair_num(e, pr, &e->t12[0]) == 0; break;
 	case 22: pair_num(e, pr, &e->t12[1]); break;
 	case 32: pair_num(e, pr, &e->t12[2]); break;
@@ -329,12 +343,21 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 static int
 ocs_axes(const double *ext, double *ax, double *ay, double *az)
 {
-	double len = sqrt(ext[0] * ext[0] + ext[1] * ext[1] + ext[2] * ext[2]);
+	double len;
 
+	int e;
+
+	/* scaled by a power of two first (exactly), so that a length of
+	 * 1e-300 or 1e300 is a direction, not zero or infinity */
+	len = vmaxabs(ext, 3);
 	if (!(len > 0) || !isfinite(len))
 		return -1;
+	e = ilogb(len);
 	for (int k = 0; k < 3; k++)
-		az[k] = ext[k] / len;
+		az[k] = ldexp(ext[k], -e);
+	len = vnorm(az, 3);
+	for (int k = 0; k < 3; k++)
+		az[k] /= len;
 	if (fabs(az[0]) < 1.0 / 64 && fabs(az[1]) < 1.0 / 64) {
 		ax[0] = az[2];          /* (0, 1, 0) x n */
 		ax[1] = 0;
@@ -344,7 +367,7 @@ ocs_axes(const double *ext, double *ax, double *ay, double *az)
 		ax[1] = az[0];
 		ax[2] = 0;
 	}
-	len = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+	len = vnorm(ax, 3);
 	for (int k = 0; k < 3; k++)
 		ax[k] /= len;
 	ay[0] = az[1] * ax[2] - az[2] * ax[1];
@@ -427,8 +450,12 @@ polyline_knots(struct dxf *d, const struct frame *f, const double *v,
 
 		if (knot(d, f, o) != 0)
 			return -1;
-		if (bu != 0 && (i + 1 < n || closed) && (dx != 0 || dy != 0)) {
-			double h = (1 - bu * bu) / (4 * bu);
+		/* a bulge below DBL_EPSILON stands the arc's middle less
+		 * than the chord's rounding off it: a straight segment */
+		if (fabs(bu) >= DBL_EPSILON && (i + 1 < n || closed) &&
+		    (dx != 0 || dy != 0)) {
+			/* (1 - b^2) / 4b, with no b^2 to overflow */
+			double h = (1 / bu - bu) / 4;
 			double cc[3] = { (p[0] + q[0]) / 2 - h * dy,
 			    (p[1] + q[1]) / 2 + h * dx, o[2] };
 			double r = hypot(p[0] - cc[0], p[1] - cc[1]);
@@ -669,36 +696,42 @@ do_arc(struct dxf *d, struct ent *e, int circle)
 
 /*
  * The Bezier control points b[0..p] of span [t[i], t[i+1]) of the
- * B-spline of degree p with knots t and control points ctl (dim each):
- * b_j is the blossom at (t[i] p - j times, t[i+1] j times), which is
- * what inserting t[i] and t[i+1] until each has multiplicity p leaves
- * as the span's control points.  The blossom at (u_1 .. u_p) is de
- * Boor's algorithm with u_r at level r.  work holds (p + 1) dim.
+ * B-spline of degree p with knots t and control points ctl (dim each),
+ * by knot insertion in O(p^2): with u the span's 2p knots t[i-p+1 ..
+ * i+p] (a = u[p-1], c = u[p] its ends) and the blossom f, the control
+ * points are P_k = f(u[k .. k+p-1]), k = 0..p.  First every u before
+ * the span becomes a, R_k = f(a^(p-k), u[p .. p+k-1]); then every u
+ * after it becomes c, b_j = f(a^(p-j), c^j).  Each step is the affine
+ * interpolation of two blossom values that differ in one argument.
+ * work is unused (kept for the callers' frames).
  */
 static void
 span_bezier(const double *t, const double *ctl, int p, size_t i, int dim,
     double *b, double *work)
 {
-	for (int j = 0; j <= p; j++) {
-		for (int k = 0; k <= p; k++)
-			memcpy(work + k * dim, ctl + (i - (size_t)p + (size_t)k) *
-			    (size_t)dim, (size_t)dim * sizeof *work);
-		for (int r = 1; r <= p; r++) {
-			double u = r <= p - j ? t[i] : t[i + 1];
+	const double *u = t + i + 1 - (size_t)p;
+	double a = t[i], c = t[i + 1];
 
-			for (int k = p; k >= r; k--) {
-				size_t m = i - (size_t)p + (size_t)k;
-				double a = (u - t[m]) / (t[m + (size_t)p + 1 -
-				    (size_t)r] - t[m]);
+	(void)work;
+	memcpy(b, ctl + (i - (size_t)p) * (size_t)dim, (size_t)((p + 1) *
+	    dim) * sizeof *b);
+	for (int r = 1; r <= p; r++)            /* u[k+r-1] -> a */
+		for (int k = 0; k <= p - r; k++) {
+			double al = (a - u[k + r - 1]) / (u[k + p] -
+			    u[k + r - 1]);
 
-				for (int q = 0; q < dim; q++)
-					work[k * dim + q] = (1 - a) *
-					    work[(k - 1) * dim + q] + a *
-					    work[k * dim + q];
-			}
+			for (int q = 0; q < dim; q++)
+				b[k * dim + q] += al * (b[(k + 1) * dim + q] -
+				    b[k * dim + q]);
 		}
-		memcpy(b + j * dim, work + p * dim, (size_t)dim * sizeof *b);
-	}
+	for (int r = 1; r <= p; r++)            /* u[p+k-r] -> c */
+		for (int k = p; k >= r; k--) {
+			double be = (c - a) / (u[p + k - r] - a);
+
+			for (int q = 0; q < dim; q++)
+				b[k * dim + q] = b[(k - 1) * dim + q] + be *
+				    (b[k * dim + q] - b[(k - 1) * dim + q]);
+		}
 }
 
 /*
@@ -1001,6 +1034,12 @@ ent_end(struct dxf *d, struct ent *e)
 		poly_end(d, 0);
 	if (strcmp(n, "ATTRIB") != 0 && strcmp(n, "SEQEND") != 0)
 		d->in_insert = 0;
+	if (!e->bad && ((e->p10.n > 0 && !(e->m10 & 1)) ||
+	    (e->p11.n > 0 && !(e->m11 & 1)))) {
+		e->bad = 1;
+		snprintf(e->msg, sizeof e->msg, "its last point has no x "
+		    "(group 10 or 11)");
+	}
 	if (e->bad) {
 		char msg[240];
 

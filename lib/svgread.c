@@ -45,8 +45,16 @@ struct svg {
 	const char *buf, *p, *end;
 	long line;              /* of p */
 	struct level st[SVG_DEPTH];
-	int depth;              /* open elements read */
-	long skip;              /* open elements below one not read */
+	int depth;              /* levels of open elements read */
+	long skip;              /* open elements passed over */
+	struct open {           /* every open element, innermost last */
+		const char *name;
+		size_t nn;
+		long line;
+		int kind;       /* 0: a level of st, 1: passed over */
+	} *open;
+	size_t nopen, opencap;
+	int after;              /* elements after the root closed */
 	int root;               /* the root svg was seen */
 	struct nums { double *v; size_t n, cap; } seg;  /* a subpath */
 	int oom;
@@ -616,6 +624,11 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 		} else if (cmd == 0 || cmd == 'Z' || cmd == 'z') {
 			goto bad;       /* numbers where a command must be */
 		}
+		if (prev == 0 && (cmd & ~0x20) != 'M') {
+			why = "path data must start with a moveto (M or m)";
+			p--;
+			goto bad;
+		}
 		/* an M's further pairs are L's */
 		rel = cmd >= 'a';
 		up = cmd & ~0x20;
@@ -781,6 +794,8 @@ do_poly(struct svg *s, const struct elem *el, const double *m, int closed)
 		v[0] = x[0];
 		v[1] = x[1];
 	}
+	if (s->seg.n == 0)
+		return;         /* no points: nothing drawn */
 	if (s->seg.n == 2) {    /* one point: a knot record of one knot */
 		size_t mark = s->c->w->len;
 		double y[2];
@@ -1110,6 +1125,144 @@ element(struct svg *s, const struct elem *el, int opens)
 	return 0;
 }
 
+/* ---- the XML stream: every element's open tag matched to its close -- */
+
+/* Push an open element on s->open; kind 0: it pushed a level, 1: it
+ * is passed over with what is in it (or inside one that is). */
+static int
+open_push(struct svg *s, const struct elem *el, int kind)
+{
+	struct open *o;
+
+	if (loft__grow((void **)&s->open, &s->opencap, s->nopen + 1,
+	    sizeof *s->open) != 0) {
+		s->oom = 1;
+		return -1;
+	}
+	o = &s->open[s->nopen++];
+	o->name = el->name;
+	o->nn = el->nn;
+	o->line = el->line;
+	o->kind = kind;
+	s->skip += kind;
+	return 0;
+}
+
+static void
+open_pop(struct svg *s)
+{
+	const struct open *o = &s->open[--s->nopen];
+
+	if (o->kind)
+		s->skip--;
+	else if (s->depth > 0)
+		s->depth--;
+}
+
+/*
+ * A closing tag at s->p (past "</"): it closes the innermost open
+ * element of its name, and any opened inside that one and left open
+ * (said so); one that closes nothing is said and passed over.  The
+ * document is never cut short by it.
+ */
+static void
+close_tag(struct svg *s, long line)
+{
+	const char *nm = s->p;
+	size_t nn, i;
+	char q[41], q2[41];
+
+	while (s->p < s->end && is_name_char((unsigned char)*s->p))
+		s->p++;
+	nn = (size_t)(s->p - nm);
+	if (skip_past(s, ">") != 0) {
+		loft__cadin_say(s->c, line, "the document ends inside a tag: "
+		    "truncated?");
+		s->p = s->end;
+		return;
+	}
+	loft__cadin_quote(q, sizeof q, nm, nn);
+	for (i = s->nopen; i > 0; i--)
+		if (s->open[i - 1].nn == nn && memcmp(s->open[i - 1].name, nm,
+		    nn) == 0)
+			break;
+	if (i == 0) {
+		loft__cadin_say(s->c, line, "</%s> closes no open element: "
+		    "passed over", q);
+		return;
+	}
+	if (i < s->nopen) {
+		const struct open *o = &s->open[s->nopen - 1];
+
+		loft__cadin_say(s->c, line, "</%s> comes while <%s> of line "
+		    "%ld is open: it closes that too", q, loft__cadin_quote(q2,
+		    sizeof q2, o->name, o->nn), o->line);
+	}
+	while (s->nopen >= i)
+		open_pop(s);
+}
+
+/* A start tag at s->p (past '<'): the element read, or passed over. */
+static void
+open_tag(struct svg *s, struct elem *el)
+{
+	int r = start_tag(s, el), e;
+
+	if (r < 0) {
+		if (s->p >= s->end) {
+			loft__cadin_say(s->c, el->line, "the document ends "
+			    "inside a tag: truncated?");
+			return;
+		}
+		loft__cadin_say(s->c, el->line, "malformed XML tag: passed over");
+		skip_past(s, ">");
+		return;
+	}
+	if (s->root && s->nopen == 0) {
+		if (!s->after++)
+			say_el(s, el, el->at, "after the root svg element "
+			    "closed: not read");
+		e = 1;
+	} else if (s->skip > 0) {
+		e = 1;
+	} else if ((e = element(s, el, r == 0)) < 0) {
+		s->p = s->end;  /* not an SVG document */
+		return;
+	}
+	if (r == 0)
+		open_push(s, el, e);
+}
+
+/* Comments, CDATA, processing instructions and DOCTYPE at s->p (past
+ * '<'); 1 when it is one of them (passed over), else 0. */
+static int
+other_markup(struct svg *s, long line)
+{
+	int r;
+
+	if (s->end - s->p >= 3 && memcmp(s->p, "!--", 3) == 0)
+		r = skip_past(s, "-->");
+	else if (s->end - s->p >= 8 && memcmp(s->p, "![CDATA[", 8) == 0)
+		r = skip_past(s, "]]>");
+	else if (s->p < s->end && *s->p == '?')
+		r = skip_past(s, "?>");
+	else if (s->p < s->end && *s->p == '!') {
+		/* a DOCTYPE, maybe with an internal subset */
+		const char *br = memchr(s->p, '[', (size_t)(s->end - s->p));
+		const char *gt = memchr(s->p, '>', (size_t)(s->end - s->p));
+
+		r = br != NULL && gt != NULL && br < gt ?
+		    skip_past(s, "]") | skip_past(s, ">") : skip_past(s, ">");
+	} else
+		return 0;
+	if (r != 0) {
+		loft__cadin_say(s->c, line, "the document ends inside a "
+		    "comment or declaration: truncated?");
+		s->p = s->end;
+	}
+	return 1;
+}
+
 int
 loft_svg_read(const char *buf, size_t len, struct loft_cadin *c)
 {
@@ -1135,62 +1288,29 @@ loft_svg_read(const char *buf, size_t len, struct loft_cadin *c)
 			s->line += *s->p == '\n';
 		el.at = s->p++;
 		el.line = s->line;
-		if (s->end - s->p >= 3 && memcmp(s->p, "!--", 3) == 0)
-			r = skip_past(s, "-->");
-		else if (s->end - s->p >= 8 && memcmp(s->p, "![CDATA[", 8) == 0)
-			r = skip_past(s, "]]>");
-		else if (s->p < s->end && *s->p == '?')
-			r = skip_past(s, "?>");
-		else if (s->p < s->end && *s->p == '!') {
-			/* a DOCTYPE, maybe with an internal subset */
-			const char *br = memchr(s->p, '[', (size_t)(s->end -
-			    s->p)), *gt = memchr(s->p, '>', (size_t)(s->end -
-			    s->p));
-
-			r = br != NULL && gt != NULL && br < gt ?
-			    skip_past(s, "]") | skip_past(s, ">") :
-			    skip_past(s, ">");
-		} else if (s->p < s->end && *s->p == '/') {
-			if ((r = skip_past(s, ">")) == 0) {
-				if (s->skip > 0)
-					s->skip--;
-				else if (s->depth > 0)
-					s->depth--;
-			}
-		} else {
-			r = start_tag(s, &el);
-			if (r >= 0 && s->skip > 0)
-				s->skip += r == 0;
-			else if (r >= 0) {
-				int e = element(s, &el, r == 0);
-
-				if (e < 0)
-					break;
-				if (e == 1 && r == 0)
-					s->skip = 1;
-			}
-		}
-		if (r < 0) {
-			loft__cadin_say(c, el.line, "%s", s->p >= s->end ? "the "
-			    "document ends inside a tag: truncated?" :
-			    "malformed XML here: the rest of the document is "
-			    "not read");
-			break;
-		}
-		if (s->root && s->depth == 0 && s->skip == 0)
-			break;  /* the root element closed */
+		if (other_markup(s, el.line))
+			continue;
+		if (s->p < s->end && *s->p == '/') {
+			s->p++;
+			close_tag(s, el.line);
+		} else
+			open_tag(s, &el);
 	}
-	if (!s->oom && s->root && (s->depth > 0 || s->skip > 0) &&
-	    c->nbad == nbad)
-		loft__cadin_say(c, s->line, "the document ends inside an "
-		    "element: truncated?");
-	else if (!s->oom && !s->root && c->nbad == nbad)
+	if (!s->oom && s->nopen > 0) {
+		char q[41];
+
+		loft__cadin_say(c, s->line, "the document ends inside <%s> of "
+		    "line %ld: truncated?", loft__cadin_quote(q, sizeof q,
+		    s->open[s->nopen - 1].name, s->open[s->nopen - 1].nn),
+		    s->open[s->nopen - 1].line);
+	} else if (!s->oom && !s->root && c->nbad == nbad)
 		loft__cadin_say(c, s->line, "no svg element: not an SVG "
 		    "document");
 	if (s->oom)
 		loft__cadin_say(c, s->line, "out of memory");
 	r = s->oom ? LOFT_ENOMEM : c->nbad > nbad ? LOFT_EINPUT : 0;
 	free(s->seg.v);
+	free(s->open);
 	free(s);
 	return r;
 }

@@ -885,6 +885,89 @@ grep -v '^#' man/figures/insole.knots | awk 'NF' >"$T/k"
 awk 'NR > 1 && NF' "$T/out" | cmp -s - "$T/k" && ok || no "insole.dxf: knots differ from insole.knots"
 head -1 "$T/out" | grep -qx 'points closed=1 layer=1' && ok || no "insole.dxf: $(head -1 "$T/out")"
 
+# ---- hostile shapes (issue 28) ----------------------------------------
+# Empty points: nothing drawn, no crash, and what follows is read.
+for pts in '' '   ' ','; do
+	printf '<svg><polyline points="%s"/><polygon points="%s"/><path d="M0 0L96 0"/></svg>' "$pts" "$pts" >"$T/empty.svg"
+	run "$F $T/empty.svg"
+	status 0
+	out_is "points closed=0
+0 0
+25.4 0
+"
+done
+# A stray closing tag is said with its line; what follows it is read.
+printf '<svg><path d="M0 0 L96 0"/></g>\n<path d="M96 0 L0 0"/></svg>' >"$T/stray.svg"
+run "$F $T/stray.svg"
+status 1
+says "stray.svg:1: </g> closes no open element"
+out_is "points closed=0
+0 0
+25.4 0
+
+points closed=0
+25.4 0
+0 0
+"
+# A closing tag for an outer element closes the inner one too.
+printf '<svg><g><path d="M0 0 L96 0"></g>\n<path d="M96 0 L0 0"/></svg>' >"$T/mis.svg"
+run "$F $T/mis.svg"
+status 1
+says "mis.svg:1: </g> comes while <path> of line 1 is open"
+[ "$(grep -c '^points' "$T/out")" = 2 ] && ok || no "mis.svg: $(cat "$T/out")"
+# Path data must start with a moveto: no invented 0,0.
+printf '<svg><path d="L6 6 L7 5"/></svg>' >"$T/l.svg"
+fails 1 "path data must start with a moveto (M or m) at 'L6 6 L7 5'" "$F $T/l.svg"
+# An LWPOLYLINE vertex whose 20 comes before its 10 is one vertex.
+printf '%s\n' '0 LWPOLYLINE' '8 0' '90 3' '10 0' '20 0' '20 5' '10 1' \
+    '10 2' '20 7' | dxf "$T/yx.dxf"
+run "$F $T/yx.dxf"
+status 0
+out_is "points closed=0 layer=0
+0 0
+1 5
+2 7
+"
+# A tolerance finer than the rounding of the radius is refused, never
+# a square.
+printf '%s\n' '0 CIRCLE' '10 0' '20 0' '40 1' | dxf "$T/circ.dxf"
+for t in 1e-17 1e-300; do
+	fails 1 "it needs more chords than the tolerance allows" "$F -t $t $T/circ.dxf"
+done
+# A bulge of 5e-324 (and 1e-20) is a straight segment.
+printf '%s\n' '0 LWPOLYLINE' '8 0' '10 0' '20 0' '42 5e-324' '10 4' '20 0' \
+    '42 1e-20' '10 8' '20 0' | dxf "$T/bulge.dxf"
+run "$F $T/bulge.dxf"
+status 0
+out_is "points closed=0 layer=0
+0 0
+4 0
+8 0
+"
+# Extrusions of length 1e-300 to 1e300 are the direction (0, 0, -1):
+# its OCS x axis is -x, so the x coordinates are negated.
+for z in 1e-300 1e-170 1e170 1e300; do
+	printf '%s\n' '0 LWPOLYLINE' '8 0' '10 1' '20 2' '10 3' '20 4' '210 0' \
+	    '220 0' "230 -$z" | dxf "$T/ext.dxf"
+	run "$F $T/ext.dxf"
+	status 0
+	out_is "points closed=0 layer=0
+-1 2
+-3 4
+"
+done
+# A degree-63 SPLINE of 4,000 control points is read (in linear time:
+# make bench's concern; here its pieces are counted).
+awk 'BEGIN { n = 4000; p = 63; printf "0\nSECTION\n2\nENTITIES\n0\nSPLINE\n8\n0\n71\n%d\n", p
+	for (i = 0; i <= p; i++) printf "40\n0\n"
+	for (i = 1; i < n - p; i++) printf "40\n%d\n", i
+	for (i = 0; i <= p; i++) printf "40\n%d\n", n - p
+	for (i = 0; i < n; i++) printf "10\n%d\n20\n%d\n", i, i % 5
+	printf "0\nENDSEC\n0\nEOF\n" }' >"$T/deg63.dxf"
+run "$F $T/deg63.dxf"
+status 0
+[ "$(grep -c '^bezier' "$T/out")" = $((4000 - 63)) ] && ok || no "deg63: $(grep -c '^bezier' "$T/out") pieces"
+
 # ---- ezdxf, when installed ---------------------------------------------
 PY=
 for p in ${PYTHON:-} python3 /usr/bin/python3; do
