@@ -40,6 +40,8 @@ struct nums {
 	size_t n, cap;
 };
 
+enum { S_NONE, S_HEADER, S_TABLES, S_BLOCKS, S_ENTITIES, S_REPLAY, S_OTHER };
+
 /* One entity: the groups loft uses, collected until the next 0 group. */
 struct ent {
 	char name[32];
@@ -52,9 +54,12 @@ struct ent {
 	struct nums bulge;              /* 42 per 10 point (polylines) */
 	struct nums g40, g41;           /* knots (radius), weights */
 	double t12[3], t13[3], ext[3], elev, a50, a51;
-	int has12, has13, has50, has51;
-	long f70, f71, f73, f90;
-	int has71, has73, has90;
+	double g42, g43, g44, g45;      /* INSERT: scales, spacings */
+	int has12, has13, has50, has51, has42, has43;
+	long f70, f71, f73, f90, f62;
+	int has71, has73, has90, has62;
+	const char *g2;                 /* a BLOCK's or INSERT's block */
+	size_t n2;
 	int bad;                        /* a message is in msg */
 	char msg[200];
 };
@@ -74,13 +79,36 @@ struct poly {
 struct knotrec {                /* a knot record written: for corners= */
 	size_t hdr;             /* offset in w of its header line's end */
 	size_t v0, nv;          /* its knots in verts */
+	long grp;               /* the INSERT it came by (0: none) */
 };
 
 struct turn {                   /* a POINT on layer 2 */
 	double x[3];
 	size_t a, b;            /* its record's text in w */
 	int used;
+	long grp;               /* the INSERT it came by (0: none) */
 };
+
+struct name {                   /* a name in the document */
+	const char *s;
+	size_t n;
+};
+
+struct block {                  /* a BLOCK of the BLOCKS section */
+	struct name name;
+	double base[3];
+	const char *at;         /* its first entity's 0 group */
+	long line;              /* the line before at */
+};
+
+/* Blocks inserted deeper than this are not read: real drawings nest a
+ * few levels, and a block that inserts itself stops here. */
+#define INSERT_DEPTH 16
+
+/* Entities drawn by INSERTs, at most, per document: arrays of nested
+ * blocks multiply, and a few hostile groups would otherwise ask for
+ * 10^20 records.  Four million is far above any real drawing. */
+#define INSERT_BUDGET 4000000L
 
 struct dxf {
 	const char *p, *end;
@@ -89,7 +117,22 @@ struct dxf {
 	double scale;           /* drawing units to millimetres */
 	struct ent e;
 	struct poly pl;
-	int in_insert;          /* ATTRIBs of an INSERT until its SEQEND */
+	int sec, want_name, in_ent, eof;
+	const char *var;        /* the HEADER variable being read */
+	size_t nvar;
+	struct ent lay;         /* TABLES: the entry being read */
+	int in_lay;
+	struct name *off;       /* layers off or frozen, sorted when read */
+	size_t noff, offcap;
+	int offsorted;
+	struct block *blk;      /* the BLOCKS section's blocks */
+	size_t nblk, blkcap;
+	int blksorted, in_block;
+	int nins;               /* INSERTs being drawn, nested */
+	double xf[12], stretch; /* their transform (see struct frame) */
+	struct name ins_layer, ins_block;       /* the outermost's */
+	long grp, budget;
+	struct loft__passed passed, hidden;
 	int turns;              /* the document may hold turn points */
 	struct loft__pts verts, knots, work;
 	struct knotrec *kr;
@@ -138,6 +181,8 @@ struct pair {
 	const char *v;
 	size_t n;
 	long line;              /* of the code */
+	const char *at;         /* where the code's line starts */
+	long before;            /* the line before it */
 };
 
 /* The next pair: 1, 0 at the end, -1 for a code that is not a whole
@@ -150,6 +195,8 @@ next_pair(struct dxf *d, struct pair *pr)
 	long code = 0;
 	int neg = 0;
 
+	pr->at = d->p;
+	pr->before = d->line;
 	if (!next_line(d, &s, &n))
 		return 0;
 	pr->line = d->line;
@@ -242,11 +289,15 @@ ent_start(struct ent *e, const struct pair *pr)
 	e->nhandle = e->nlayer = 0;
 	e->p10.n = e->p11.n = e->bulge.n = e->g40.n = e->g41.n = 0;
 	e->m10 = e->m11 = 0;
-	e->has12 = e->has13 = e->has50 = e->has51 = 0;
+	e->has12 = e->has13 = e->has50 = e->has51 = e->has42 = e->has43 = 0;
+	e->has62 = 0;
+	e->g2 = NULL;
+	e->n2 = 0;
 	e->ext[0] = e->ext[1] = 0;
 	e->ext[2] = 1;
 	e->elev = e->a50 = e->a51 = 0;
-	e->f70 = e->f71 = e->f73 = e->f90 = 0;
+	e->f70 = e->f71 = e->f73 = e->f90 = e->f62 = 0;
+	e->g42 = e->g43 = e->g44 = e->g45 = 0;
 	e->has71 = e->has73 = e->has90 = 0;
 	e->bad = 0;
 }
@@ -293,7 +344,12 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 
 	switch (pr->code) {
 	case 5: e->handle = pr->v; e->nhandle = pr->n; break;
+	case 2: e->g2 = pr->v; e->n2 = pr->n; break;
 	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
+	case 43: e->has43 = pair_num(e, pr, &e->g43) == 0; break;
+	case 44: pair_num(e, pr, &e->g44); break;
+	case 45: pair_num(e, pr, &e->g45); break;
+	case 62: e->has62 = pair_int(e, pr, &e->f62) == 0; break;
 	case 10: case 20: case 30:
 		coord(d, e, &e->p10, &e->m10, pr->code / 10 - 1, pr);
 		break;
@@ -314,8 +370,10 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 			d->oom = 1;
 		break;
 	case 42:
-		if (!poly)
-			break;  /* a SPLINE's 42 is a tolerance */
+		if (!poly) {    /* a SPLINE's 42 is a tolerance */
+			e->has42 = pair_num(e, pr, &e->g42) == 0;
+			break;
+		}
 		if (pair_num(e, pr, &x[0]) != 0)
 			break;
 		if (e->bulge.n == 0)
@@ -376,26 +434,59 @@ ocs_axes(const double *ext, double *ax, double *ay, double *az)
 	return 0;
 }
 
-/* An object's frame: from the OCS of extrusion ext to millimetres. */
+/*
+ * An object's frame: from the OCS of extrusion ext to the WCS, then
+ * through the transform of the blocks it is inserted by (xf: a 3 by 3
+ * matrix by rows, then a translation; NULL outside blocks), then to
+ * millimetres.  stretch: the most xf lengthens a length (1 outside),
+ * for the chords of arcs.
+ */
 struct frame {
 	int plain;              /* extrusion (0, 0, 1): OCS is WCS */
-	double ax[3], ay[3], az[3], scale;
+	double ax[3], ay[3], az[3], scale, stretch;
+	const double *xf;
 };
 
 static int
-frame_of(const double *ext, double scale, struct frame *f)
+frame_of(const struct dxf *d, const double *ext, struct frame *f)
 {
-	f->scale = scale;
+	f->scale = d->scale;
+	f->xf = d->nins > 0 ? d->xf : NULL;
+	f->stretch = d->nins > 0 ? d->stretch : 1;
 	f->plain = ext[0] == 0 && ext[1] == 0 && ext[2] > 0;
 	return f->plain ? 0 : ocs_axes(ext, f->ax, f->ay, f->az);
+}
+
+/* The frame of WCS coordinates (extrusion (0, 0, 1)). */
+static void
+wcs_frame(const struct dxf *d, struct frame *f)
+{
+	static const double up[3] = { 0, 0, 1 };
+
+	frame_of(d, up, f);
+}
+
+/* Point (lin 0) or direction (lin 1) o through the block transform m. */
+static void
+xf_apply(const double *m, const double *o, double *w, int lin)
+{
+	for (int k = 0; k < 3; k++)
+		w[k] = m[3 * k] * o[0] + m[3 * k + 1] * o[1] + m[3 * k + 2] *
+		    o[2] + (lin ? 0 : m[9 + k]);
 }
 
 static void
 to_world(const struct frame *f, const double *o, double *w)
 {
+	double p[3];
+
 	for (int k = 0; k < 3; k++)
-		w[k] = f->plain ? o[k] * f->scale : (o[0] * f->ax[k] + o[1] *
-		    f->ay[k] + o[2] * f->az[k]) * f->scale;
+		p[k] = f->plain ? o[k] : o[0] * f->ax[k] + o[1] * f->ay[k] +
+		    o[2] * f->az[k];
+	if (f->xf != NULL)
+		xf_apply(f->xf, p, p, 0);
+	for (int k = 0; k < 3; k++)
+		w[k] = p[k] * f->scale;
 }
 
 /* Append point o (in the OCS) to d->knots; -1 when out of memory. */
@@ -460,7 +551,8 @@ polyline_knots(struct dxf *d, const struct frame *f, const double *v,
 			    (p[1] + q[1]) / 2 + h * dx, o[2] };
 			double r = hypot(p[0] - cc[0], p[1] - cc[1]);
 			double sweep = 4 * atan(bu);
-			long m = loft__arc_chords(d->c, r * f->scale, sweep);
+			long m = loft__arc_chords(d->c, r * f->scale *
+			    f->stretch, sweep);
 
 			if (!isfinite(r) || !isfinite(h)) {
 				snprintf(msg, msize, "vertex %zu: bulge %g "
@@ -514,9 +606,26 @@ keep_vertices(struct dxf *d, size_t hdr, const struct loft__pts *v)
 	d->kr[d->nkr].hdr = hdr;
 	d->kr[d->nkr].v0 = d->verts.n;
 	d->kr[d->nkr].nv = v->n;
+	d->kr[d->nkr].grp = d->grp;
 	d->nkr++;
 	memcpy(d->verts.p + 3 * d->verts.n, v->p, 3 * v->n * sizeof *v->p);
 	d->verts.n += v->n;
+}
+
+/* A record's layer= (the INSERT's for an entity of layer 0 in a
+ * block, as CAD draws it) and block= (the outermost INSERT's). */
+static void
+put_where(const struct dxf *d, struct loft_writer *w, const char *layer,
+    size_t nlayer)
+{
+	if (d->nins > 0 && nlayer == 1 && layer[0] == '0') {
+		layer = d->ins_layer.s;
+		nlayer = d->ins_layer.n;
+	}
+	loft__cadin_put_name(w, "layer", layer, nlayer);
+	if (d->nins > 0)
+		loft__cadin_put_name(w, "block", d->ins_block.s,
+		    d->ins_block.n);
 }
 
 /*
@@ -534,7 +643,7 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 
 	loft_put_type(w, "points");
 	loft_put_attr(w, "closed", closed ? "1" : "0");
-	loft__cadin_put_name(w, "layer", layer, nlayer);
+	put_where(d, w, layer, nlayer);
 	if (start != NULL) {
 		vector_text(buf, start, dim);
 		loft_put_attr(w, "start", buf);
@@ -564,13 +673,14 @@ refuse(struct dxf *d, const struct ent *e, const char *what)
 static void
 do_line(struct dxf *d, struct ent *e)
 {
-	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+	struct frame f;
 
 	if (e->p10.n != 1 || e->p11.n != 1) {
 		refuse(d, e, "a LINE needs one start (10/20/30) and one end "
 		    "(11/21/31)");
 		return;
 	}
+	wcs_frame(d, &f);
 	d->knots.n = 0;
 	if (knot(d, &f, e->p10.p) != 0 || knot(d, &f, e->p11.p) != 0)
 		return;
@@ -580,7 +690,7 @@ do_line(struct dxf *d, struct ent *e)
 static void
 do_point(struct dxf *d, struct ent *e)
 {
-	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+	struct frame f;
 	struct loft_writer *w = d->c->w;
 	size_t mark = w->len;
 	double p[3];
@@ -589,9 +699,10 @@ do_point(struct dxf *d, struct ent *e)
 		refuse(d, e, "a POINT needs one point (10/20/30)");
 		return;
 	}
+	wcs_frame(d, &f);
 	to_world(&f, e->p10.p, p);
 	loft_put_type(w, "points");
-	loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+	put_where(d, w, e->layer, e->nlayer);
 	loft_end_line(w);
 	loft__echo_row(d->echo, w, p, loft__pts_dim(p, 1));
 	loft_end_record(w);
@@ -607,6 +718,7 @@ do_point(struct dxf *d, struct ent *e)
 	d->tp[d->ntp].a = mark;
 	d->tp[d->ntp].b = w->len;
 	d->tp[d->ntp].used = 0;
+	d->tp[d->ntp].grp = d->grp;
 	d->ntp++;
 }
 
@@ -626,7 +738,7 @@ do_lwpolyline(struct dxf *d, struct ent *e)
 		refuse(d, e, msg);
 		return;
 	}
-	if (frame_of(e->ext, d->scale, &f) != 0) {
+	if (frame_of(d, e->ext, &f) != 0) {
 		refuse(d, e, "its extrusion direction (210/220/230) is zero");
 		return;
 	}
@@ -660,7 +772,7 @@ do_arc(struct dxf *d, struct ent *e, int circle)
 		refuse(d, e, "its radius is not above 0");
 		return;
 	}
-	if (frame_of(e->ext, d->scale, &f) != 0) {
+	if (frame_of(d, e->ext, &f) != 0) {
 		refuse(d, e, "its extrusion direction (210/220/230) is zero");
 		return;
 	}
@@ -670,7 +782,7 @@ do_arc(struct dxf *d, struct ent *e, int circle)
 		a1 += 360;
 	sweep = (a1 - a0) * M_PI / 180;
 	a0 *= M_PI / 180;
-	if ((n = loft__arc_chords(d->c, r * d->scale, sweep)) < 0) {
+	if ((n = loft__arc_chords(d->c, r * f.scale * f.stretch, sweep)) < 0) {
 		refuse(d, e, "it needs more chords than the tolerance allows");
 		return;
 	}
@@ -692,6 +804,18 @@ do_arc(struct dxf *d, struct ent *e, int circle)
 		}
 	}
 	put_knots(d, e->layer, e->nlayer, e->line, circle, NULL, NULL);
+}
+
+static void
+do_arc_only(struct dxf *d, struct ent *e)
+{
+	do_arc(d, e, 0);
+}
+
+static void
+do_circle(struct dxf *d, struct ent *e)
+{
+	do_arc(d, e, 1);
 }
 
 /*
@@ -780,6 +904,57 @@ joint_add(struct dxf *d, const double *b, int dim)
 	return 0;
 }
 
+/* Whether a SPLINE by control points is whole: degree, counts, knots
+ * and weights; 0, or -1 after saying what is wrong. */
+static int
+spline_check(struct dxf *d, struct ent *e)
+{
+	size_t n = e->p10.n;
+	const double *t = e->g40.v;
+	int p = (int)e->f71;
+	char msg[160];
+
+	if (!e->has71 || p < 1 || p > MAX_DEGREE) {
+		snprintf(msg, sizeof msg, "degree (group 71) %ld: loft reads "
+		    "degrees 1 to %d", e->f71, MAX_DEGREE);
+		refuse(d, e, msg);
+		return -1;
+	}
+	if (e->has73 && e->f73 != (long)n) {
+		snprintf(msg, sizeof msg, "group 73 says %ld control points; "
+		    "it has %zu", e->f73, n);
+		refuse(d, e, msg);
+		return -1;
+	}
+	if (n < (size_t)p + 1 || e->g40.n != n + (size_t)p + 1) {
+		snprintf(msg, sizeof msg, "%zu control points of degree %d "
+		    "need %zu knots (group 40); it has %zu", n, p,
+		    n + (size_t)p + 1, e->g40.n);
+		refuse(d, e, n < (size_t)p + 1 ? "fewer control points than "
+		    "its degree needs" : msg);
+		return -1;
+	}
+	for (size_t k = 1; k < e->g40.n; k++)
+		if (t[k] < t[k - 1]) {
+			snprintf(msg, sizeof msg, "knot %zu (%g) is below the "
+			    "one before it", k + 1, t[k]);
+			refuse(d, e, msg);
+			return -1;
+		}
+	for (size_t k = 1; k < e->g41.n; k++)
+		if (fabs(e->g41.v[k] - e->g41.v[0]) > WEIGHT_SAME *
+		    fabs(e->g41.v[0])) {
+			refuse(d, e, "its weights differ: a rational spline, "
+			    "which loft's polynomial records cannot hold");
+			return -1;
+		}
+	if (e->g41.n > 0 && !(e->g41.v[0] > 0)) {
+		refuse(d, e, "its weights are not above 0");
+		return -1;
+	}
+	return 0;
+}
+
 /* A SPLINE by control points: its Bezier pieces, exactly. */
 static void
 spline_ctl(struct dxf *d, struct ent *e)
@@ -791,50 +966,15 @@ spline_ctl(struct dxf *d, struct ent *e)
 	size_t hdr = mark;
 	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
 	double row[12], *ctl;
-	char msg[160];
+	struct frame f;
 
-	if (!e->has71 || p < 1 || p > MAX_DEGREE) {
-		snprintf(msg, sizeof msg, "degree (group 71) %ld: loft reads "
-		    "degrees 1 to %d", e->f71, MAX_DEGREE);
-		refuse(d, e, msg);
+	if (spline_check(d, e) != 0)
 		return;
-	}
-	if (e->has73 && e->f73 != (long)n) {
-		snprintf(msg, sizeof msg, "group 73 says %ld control points; "
-		    "it has %zu", e->f73, n);
-		refuse(d, e, msg);
-		return;
-	}
-	if (n < (size_t)p + 1 || e->g40.n != n + (size_t)p + 1) {
-		snprintf(msg, sizeof msg, "%zu control points of degree %d "
-		    "need %zu knots (group 40); it has %zu", n, p,
-		    n + (size_t)p + 1, e->g40.n);
-		refuse(d, e, n < (size_t)p + 1 ? "fewer control points than "
-		    "its degree needs" : msg);
-		return;
-	}
-	for (size_t k = 1; k < e->g40.n; k++)
-		if (t[k] < t[k - 1]) {
-			snprintf(msg, sizeof msg, "knot %zu (%g) is below the "
-			    "one before it", k + 1, t[k]);
-			refuse(d, e, msg);
-			return;
-		}
-	for (size_t k = 1; k < e->g41.n; k++)
-		if (fabs(e->g41.v[k] - e->g41.v[0]) > WEIGHT_SAME *
-		    fabs(e->g41.v[0])) {
-			refuse(d, e, "its weights differ: a rational spline, "
-			    "which loft's polynomial records cannot hold");
-			return;
-		}
-	if (e->g41.n > 0 && !(e->g41.v[0] > 0)) {
-		refuse(d, e, "its weights are not above 0");
-		return;
-	}
 	/* the control points in millimetres, in place */
 	ctl = e->p10.p;
-	for (size_t k = 0; k < 3 * n; k++)
-		ctl[k] *= d->scale;
+	wcs_frame(d, &f);
+	for (size_t k = 0; k < n; k++)
+		to_world(&f, ctl + 3 * k, ctl + 3 * k);
 	dim = loft__pts_dim(ctl, n);
 	if (dim == 2)           /* close up to rows of dim numbers */
 		for (size_t k = 0; k < n; k++) {
@@ -847,7 +987,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 	if (cubic) {
 		loft_put_type(w, "cubic");
 		loft_put_attr(w, "closed", closed ? "1" : "0");
-		loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+		put_where(d, w, e->layer, e->nlayer);
 		hdr = w->len;
 		loft_end_line(w);
 	}
@@ -881,7 +1021,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 
 			snprintf(num, sizeof num, "%zu", npieces);
 			loft_put_type(w, "bezier");
-			loft__cadin_put_name(w, "layer", e->layer, e->nlayer);
+			put_where(d, w, e->layer, e->nlayer);
 			loft_put_attr(w, "piece", num);
 			loft_end_line(w);
 			for (int j = 0; j <= p; j++)
@@ -911,7 +1051,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 static void
 do_spline(struct dxf *d, struct ent *e)
 {
-	struct frame f = { 1, { 0 }, { 0 }, { 0 }, d->scale };
+	struct frame f;
 
 	if (e->p10.n > 0) {
 		spline_ctl(d, e);
@@ -922,6 +1062,7 @@ do_spline(struct dxf *d, struct ent *e)
 		    "fit points (11/21/31)");
 		return;
 	}
+	wcs_frame(d, &f);
 	d->knots.n = 0;
 	for (size_t k = 0; k < e->p11.n; k++)
 		if (knot(d, &f, e->p11.p + 3 * k) != 0)
@@ -961,8 +1102,7 @@ poly_end(struct dxf *d, int complete)
 		refuse(d, &tmp, "a POLYLINE needs vertices");
 		return;
 	}
-	if (frame_of(plane ? pl->ext : (double[3]){ 0, 0, 1 }, d->scale,
-	    &f) != 0) {
+	if (frame_of(d, plane ? pl->ext : (double[3]){ 0, 0, 1 }, &f) != 0) {
 		refuse(d, &tmp, "its extrusion direction (210/220/230) is "
 		    "zero");
 		return;
@@ -1024,60 +1164,446 @@ vertex(struct dxf *d, struct ent *e)
 		d->oom = 1;
 }
 
-/* The entity just ended: its record, or a message. */
+/*
+ * ELLIPSE: centre 10/20/30 and the end of its major axis 11/21/31
+ * (from the centre, WCS), the minor axis 40 times as long along the
+ * extrusion cross the major axis, from parameter 41 to 42 (radians;
+ * the whole ellipse by default).  The affine image of the unit
+ * circle's cubic pieces (loft__arc_unit): within the tolerance of a
+ * circle of the major radius, which the map stretches no more.
+ */
 static void
-ent_end(struct dxf *d, struct ent *e)
+do_ellipse(struct dxf *d, struct ent *e)
 {
-	const char *n = e->name;
+	struct loft_writer *w = d->c->w;
+	struct frame f;
+	double *maj, mn[3], n[3], r, t0, sweep, q[12], row[12];
+	size_t mark = w->len;
+	long np;
+	int full, dim = 2;
 
-	if (strcmp(n, "VERTEX") != 0 && strcmp(n, "SEQEND") != 0)
-		poly_end(d, 0);
-	if (strcmp(n, "ATTRIB") != 0 && strcmp(n, "SEQEND") != 0)
-		d->in_insert = 0;
+	if (e->p10.n != 1 || e->p11.n != 1 || e->g40.n != 1 ||
+	    !(e->g40.v[0] > 0)) {
+		refuse(d, e, "an ELLIPSE needs a centre (10/20/30), a major "
+		    "axis (11/21/31) and a ratio above 0 (40)");
+		return;
+	}
+	maj = e->p11.p;
+	if (ocs_axes(e->ext, n, n, n) != 0 || !(vnorm(maj, 3) > 0)) {
+		refuse(d, e, "its major axis or its extrusion is zero");
+		return;
+	}
+	vcopy(n, e->ext, 3);
+	vunit(n, 3);
+	mn[0] = e->g40.v[0] * (n[1] * maj[2] - n[2] * maj[1]);
+	mn[1] = e->g40.v[0] * (n[2] * maj[0] - n[0] * maj[2]);
+	mn[2] = e->g40.v[0] * (n[0] * maj[1] - n[1] * maj[0]);
+	t0 = e->g41.n > 0 ? e->g41.v[0] : 0;
+	sweep = (e->has42 ? e->g42 : 2 * M_PI) - t0;
+	full = e->g41.n == 0 || fabs(fabs(sweep) - 2 * M_PI) < 1e-12;
+	if (full)
+		sweep = 2 * M_PI;
+	sweep = fmod(sweep, 2 * M_PI);
+	if (!(sweep > 0))
+		sweep += 2 * M_PI;
+	wcs_frame(d, &f);
+	r = vnorm(maj, 3) * fmax(1, e->g40.v[0]);
+	if ((np = loft__arc_cubics(d->c, r * f.scale * f.stretch, sweep)) < 0) {
+		refuse(d, e, "it needs more cubic pieces than the tolerance "
+		    "allows");
+		return;
+	}
+	for (int pass = 0; pass < 2; pass++) {  /* the dimension; then out */
+		if (pass == 1) {
+			loft_put_type(w, "cubic");
+			loft_put_attr(w, "closed", full ? "1" : "0");
+			put_where(d, w, e->layer, e->nlayer);
+			loft_end_line(w);
+		}
+		for (long i = 0; i < np; i++) {
+			double h = sweep / (double)np, a = t0 + h * (double)i;
+			double u[8];
+
+			loft__arc_unit(a, h, i + 1 == np ? t0 + sweep : a + h, u);
+			for (int j = 0; j < 4; j++) {
+				double o[3];
+
+				for (int k = 0; k < 3; k++)
+					o[k] = e->p10.p[k] + u[2 * j] * maj[k] +
+					    u[2 * j + 1] * mn[k];
+				to_world(&f, o, q + 3 * j);
+				if (q[3 * j + 2] != 0)
+					dim = 3;
+			}
+			if (pass == 0)
+				continue;
+			if (dim == 2)
+				for (int j = 1; j < 4; j++) {
+					q[2 * j] = q[3 * j];
+					q[2 * j + 1] = q[3 * j + 1];
+				}
+			loft__bezier_hermite(q, dim, row);
+			loft__echo_row(d->echo, w, row, 4 * dim);
+		}
+	}
+	loft_end_record(w);
+	loft__cadin_done(d->c, mark, e->line);
+}
+
+/* ---- layers: those off or frozen ------------------------------------ */
+
+/* Names compared as DXF does, ignoring ASCII case. */
+static int
+name_cmp(const void *a, const void *b)
+{
+	const struct name *p = a, *q = b;
+
+	if (p->n != q->n)
+		return p->n < q->n ? -1 : 1;
+	for (size_t i = 0; i < p->n; i++) {
+		int x = (unsigned char)p->s[i], y = (unsigned char)q->s[i];
+
+		x = x >= 'a' && x <= 'z' ? x - 32 : x;
+		y = y >= 'a' && y <= 'z' ? y - 32 : y;
+		if (x != y)
+			return x < y ? -1 : 1;
+	}
+	return 0;
+}
+
+/* A group of a TABLES entry: a LAYER's name (2), colour (62, negative
+ * when off) and flags (70, bit 1 when frozen). */
+static void
+table_group(struct dxf *d, const struct pair *pr)
+{
+	double x;
+
+	if (!d->in_lay)
+		return;
+	if (pr->code == 2) {
+		d->lay.g2 = pr->v;
+		d->lay.n2 = pr->n;
+	} else if ((pr->code == 62 || pr->code == 70) &&
+	    loft_parse_num(pr->v, pr->n, &x, NULL) == 0 && fabs(x) < 1e9)
+		*(pr->code == 62 ? &d->lay.f62 : &d->lay.f70) = (long)x;
+}
+
+/* A TABLES entry ended: a LAYER off or frozen is kept. */
+static void
+table_end(struct dxf *d)
+{
+	struct name *nm;
+
+	if (!d->in_lay || d->lay.g2 == NULL || !(d->lay.f62 < 0 ||
+	    d->lay.f70 & 1))
+		return;
+	if (loft__grow((void **)&d->off, &d->offcap, d->noff + 1,
+	    sizeof *d->off) != 0) {
+		d->oom = 1;
+		return;
+	}
+	nm = &d->off[d->noff++];
+	nm->s = d->lay.g2;
+	nm->n = d->lay.n2;
+	d->offsorted = 0;
+}
+
+static int
+layer_off(struct dxf *d, const char *s, size_t n)
+{
+	struct name key = { s, n };
+
+	if (d->noff == 0 || s == NULL)
+		return 0;
+	if (!d->offsorted) {
+		qsort(d->off, d->noff, sizeof *d->off, name_cmp);
+		d->offsorted = 1;
+	}
+	return bsearch(&key, d->off, d->noff, sizeof *d->off, name_cmp) !=
+	    NULL;
+}
+
+/* ---- blocks --------------------------------------------------------- */
+
+static int
+block_cmp(const void *a, const void *b)
+{
+	const struct block *p = a, *q = b;
+
+	return name_cmp(&p->name, &q->name);
+}
+
+/* A BLOCK entity ended, its entities from pr on: kept by name. */
+static void
+block_add(struct dxf *d, const struct ent *e, const struct pair *pr)
+{
+	struct block *b;
+
+	if (e->g2 == NULL || e->bad)
+		return;
+	if (loft__grow((void **)&d->blk, &d->blkcap, d->nblk + 1,
+	    sizeof *d->blk) != 0) {
+		d->oom = 1;
+		return;
+	}
+	b = &d->blk[d->nblk++];
+	b->name.s = e->g2;
+	b->name.n = e->n2;
+	memset(b->base, 0, sizeof b->base);
+	if (e->p10.n > 0)
+		vcopy(b->base, e->p10.p, 3);
+	b->at = pr->at;
+	b->line = pr->before;
+	d->blksorted = 0;
+}
+
+static const struct block *
+block_find(struct dxf *d, const char *s, size_t n)
+{
+	struct block key;
+
+	if (d->nblk == 0 || s == NULL)
+		return NULL;
+	if (!d->blksorted) {    /* stable for equal names: the first wins */
+		qsort(d->blk, d->nblk, sizeof *d->blk, block_cmp);
+		d->blksorted = 1;
+	}
+	key.name.s = s;
+	key.name.n = n;
+	return bsearch(&key, d->blk, d->nblk, sizeof *d->blk, block_cmp);
+}
+
+/* The largest factor by which the 3 by 3 matrix m (by rows) stretches a
+ * length: its largest column when the columns are orthogonal (rotations
+ * and scales, as INSERTs make), else its Frobenius norm (a bound). */
+static double
+stretch_of(const double *m)
+{
+	double c[3][3], big = 0, fro = 0;
+	int orth = 1;
+
+	for (int j = 0; j < 3; j++) {
+		for (int k = 0; k < 3; k++)
+			c[j][k] = m[3 * k + j];
+		big = fmax(big, vnorm(c[j], 3));
+		fro = hypot(fro, vnorm(c[j], 3));
+	}
+	for (int j = 0; j < 3; j++)
+		for (int k = j + 1; k < 3; k++)
+			if (fabs(vdot(c[j], c[k], 3)) > 1e-12 * fro * fro)
+				orth = 0;
+	return orth ? big : fro;
+}
+
+static void read_pairs(struct dxf *);
+
+/* The entities of block b once more, through the transform (L, t) of
+ * an INSERT (composed with those it is inside). */
+static void
+replay(struct dxf *d, const struct block *b, const double *L, const double *t)
+{
+	const char *p = d->p;
+	long line = d->line;
+	int sec = d->sec;
+	double old[12], st = d->stretch, m[12];
+
+	memcpy(old, d->xf, sizeof old);
+	for (int i = 0; i < 3; i++) {
+		for (int j = 0; j < 3; j++)
+			m[3 * i + j] = d->nins == 0 ? L[3 * i + j] :
+			    old[3 * i] * L[j] + old[3 * i + 1] * L[3 + j] +
+			    old[3 * i + 2] * L[6 + j];
+		m[9 + i] = t[i];
+	}
+	if (d->nins > 0)
+		xf_apply(old, t, m + 9, 0);
+	memcpy(d->xf, m, sizeof m);
+	d->stretch = stretch_of(m);
+	d->nins++;
+	d->p = b->at;
+	d->line = b->line;
+	d->sec = S_REPLAY;
+	d->in_ent = 0;
+	read_pairs(d);
+	poly_end(d, 0);
+	d->nins--;
+	d->eof = 0;
+	d->in_ent = 0;
+	d->p = p;
+	d->line = line;
+	d->sec = sec;
+	memcpy(d->xf, old, sizeof old);
+	d->stretch = st;
+}
+
+/*
+ * INSERT: block 2 drawn at 10/20/30 (in the OCS of 210/220/230), its
+ * base point there, scaled by 41, 42, 43 and turned by 50 degrees, as
+ * 70 columns and 71 rows spaced 44 and 45 (in the turned frame).
+ */
+static void
+do_insert(struct dxf *d, struct ent *e)
+{
+	double s[3] = { e->g41.n > 0 ? e->g41.v[0] : 1,
+	    e->has42 ? e->g42 : 1, e->has43 ? e->g43 : 1 };
+	double ro = e->a50 * M_PI / 180, cr = cos(ro), sr = sin(ro);
+	double ax[3] = { 1, 0, 0 }, ay[3] = { 0, 1, 0 }, az[3] = { 0, 0, 1 };
+	double L[9], t[3];
+	long cols = e->f70 > 1 ? e->f70 : 1, rows = e->f71 > 1 ? e->f71 : 1;
+	const struct block *b = block_find(d, e->g2, e->n2);
+	int top = d->nins == 0;
+	struct name lay = d->ins_layer;
+	/* what is needed of e, which drawing the block overwrites */
+	double at[3] = { 0, 0, 0 }, sp[2] = { e->g44, e->g45 };
+	struct ent me;
+
+	if (e->p10.n > 0)
+		vcopy(at, e->p10.p, 3);
+	memcpy(me.name, e->name, sizeof me.name);
+	me.line = e->line;
+	me.handle = e->handle;
+	me.nhandle = e->nhandle;
+
+	if (b == NULL)
+		return (void)refuse(d, e, "no block of its name (group 2) in "
+		    "the BLOCKS section");
+	if (d->nins >= INSERT_DEPTH)
+		return (void)refuse(d, e, "blocks nested deeper than 16 "
+		    "INSERTs (does a block insert itself?): not read");
+	if (!(e->ext[0] == 0 && e->ext[1] == 0 && e->ext[2] > 0) &&
+	    ocs_axes(e->ext, ax, ay, az) != 0)
+		return (void)refuse(d, e, "its extrusion direction "
+		    "(210/220/230) is zero");
+	/* L = A R S: columns of A the OCS axes, R the turn about z */
+	for (int k = 0; k < 3; k++) {
+		L[3 * k] = (ax[k] * cr + ay[k] * sr) * s[0];
+		L[3 * k + 1] = (-ax[k] * sr + ay[k] * cr) * s[1];
+		L[3 * k + 2] = az[k] * s[2];
+	}
+	if (top || !(e->nlayer == 1 && e->layer[0] == '0')) {
+		d->ins_layer.s = e->layer;      /* layer 0 takes the outer's */
+		d->ins_layer.n = e->nlayer;
+	}
+	if (top) {
+		d->ins_block.s = e->g2;
+		d->ins_block.n = e->n2;
+		d->grp++;
+	}
+	for (long r = 0; r < rows && d->budget > 0 && !d->oom; r++)
+		for (long c = 0; c < cols && d->budget > 0 && !d->oom; c++) {
+			/* the grid's offset, turned, in the OCS */
+			double ox = sp[0] * (double)c, oy = sp[1] * (double)r;
+			double o[3] = { at[0], at[1], at[2] };
+
+			o[0] += cr * ox - sr * oy;
+			o[1] += sr * ox + cr * oy;
+			for (int k = 0; k < 3; k++)
+				t[k] = o[0] * ax[k] + o[1] * ay[k] + o[2] *
+				    az[k] - (L[3 * k] * b->base[0] +
+				    L[3 * k + 1] * b->base[1] + L[3 * k + 2] *
+				    b->base[2]);
+			d->budget--;
+			replay(d, b, L, t);
+		}
+	if (d->budget <= 0 && d->budget-- == 0)
+		refuse(d, &me, "INSERTs draw more than 4,000,000 entities: "
+		    "the rest is not read");
+	d->ins_layer = lay;
+}
+
+/* ---- entities, by kind ------------------------------------------------ */
+
+/* Entities that annotate a drawing or fill an area: passed over and
+ * counted (-S: refused).  HATCH is a fill; XLINE and RAY are endless
+ * construction lines. */
+static const char *const annotation[] = { "TEXT", "MTEXT", "DIMENSION",
+	"ARC_DIMENSION", "LARGE_RADIAL_DIMENSION", "LEADER", "MLEADER",
+	"MULTILEADER", "TOLERANCE", "ATTRIB", "ATTDEF", "IMAGE", "WIPEOUT",
+	"OLE2FRAME", "OLEFRAME", "VIEWPORT", "ACAD_TABLE", "RTEXT",
+	"ARCALIGNEDTEXT", "XLINE", "RAY", "HATCH", "MPOLYGON", "SOLID",
+	"TRACE", "SHAPE", "UNDERLAY", "PDFUNDERLAY", "DWFUNDERLAY",
+	"DGNUNDERLAY", "LIGHT", "SUN", NULL };
+
+static const struct {
+	const char *name;
+	void (*read)(struct dxf *, struct ent *);
+} readers[] = {
+	{ "LINE", do_line }, { "POINT", do_point },
+	{ "LWPOLYLINE", do_lwpolyline }, { "SPLINE", do_spline },
+	{ "ARC", do_arc_only }, { "CIRCLE", do_circle },
+	{ "ELLIPSE", do_ellipse }, { "POLYLINE", poly_start },
+	{ "VERTEX", vertex }, { "INSERT", do_insert },
+};
+
+/* Whether the entity just ended is whole; if not, says why (once). */
+static int
+ent_whole(struct dxf *d, struct ent *e)
+{
+	char msg[240];
+
 	if (!e->bad && ((e->p10.n > 0 && !(e->m10 & 1)) ||
 	    (e->p11.n > 0 && !(e->m11 & 1)))) {
 		e->bad = 1;
 		snprintf(e->msg, sizeof e->msg, "its last point has no x "
 		    "(group 10 or 11)");
 	}
-	if (e->bad) {
-		char msg[240];
+	if (!e->bad)
+		return 1;
+	snprintf(msg, sizeof msg, "%s: not read", e->msg);
+	if (strcmp(e->name, "VERTEX") == 0 && d->pl.open && !d->pl.bad) {
+		d->pl.bad = 1;
+		snprintf(msg, sizeof msg, "%s: its POLYLINE is not read",
+		    e->msg);
+	}
+	refuse(d, e, msg);
+	return 0;
+}
 
-		snprintf(msg, sizeof msg, "%s: not read", e->msg);
-		if (strcmp(n, "VERTEX") == 0 && d->pl.open && !d->pl.bad) {
-			d->pl.bad = 1;
-			snprintf(msg, sizeof msg, "%s: its POLYLINE is not "
-			    "read", e->msg);
-		}
-		refuse(d, e, msg);
+/* The entity just ended: its record, or a message, or counted as an
+ * annotation or as hidden. */
+static void
+ent_end(struct dxf *d, struct ent *e)
+{
+	const char *n = e->name, *layer = e->layer;
+	size_t nlayer = e->nlayer, k;
+
+	if (strcmp(n, "VERTEX") != 0 && strcmp(n, "SEQEND") != 0)
+		poly_end(d, 0);
+	if (strcmp(n, "SEQEND") == 0) {
+		poly_end(d, 1);
 		return;
 	}
-	if (strcmp(n, "LINE") == 0)
-		do_line(d, e);
-	else if (strcmp(n, "POINT") == 0)
-		do_point(d, e);
-	else if (strcmp(n, "LWPOLYLINE") == 0)
-		do_lwpolyline(d, e);
-	else if (strcmp(n, "SPLINE") == 0)
-		do_spline(d, e);
-	else if (strcmp(n, "ARC") == 0)
-		do_arc(d, e, 0);
-	else if (strcmp(n, "CIRCLE") == 0)
-		do_arc(d, e, 1);
-	else if (strcmp(n, "POLYLINE") == 0)
-		poly_start(d, e);
-	else if (strcmp(n, "VERTEX") == 0)
-		vertex(d, e);
-	else if (strcmp(n, "SEQEND") == 0) {
-		poly_end(d, 1);
-		d->in_insert = 0;
-	} else if (strcmp(n, "ATTRIB") == 0 && d->in_insert)
-		;               /* said so at its INSERT */
-	else {
-		refuse(d, e, "not read: loft reads LINE, LWPOLYLINE, POLYLINE, "
-		    "SPLINE, ARC, CIRCLE and POINT entities");
-		d->in_insert = strcmp(n, "INSERT") == 0;
+	if (!ent_whole(d, e))
+		return;
+	if (d->nins > 0 && nlayer == 1 && layer[0] == '0') {
+		layer = d->ins_layer.s;
+		nlayer = d->ins_layer.n;
 	}
+	if (!d->c->hidden && strcmp(n, "VERTEX") != 0 &&
+	    layer_off(d, layer, nlayer)) {
+		loft__passed_add(&d->hidden, n, strlen(n));
+		if (strcmp(n, "POLYLINE") == 0) {
+			poly_start(d, e);
+			d->pl.refused = 1;      /* its vertices too */
+		}
+		return;
+	}
+	for (k = 0; annotation[k] != NULL; k++)
+		if (strcmp(n, annotation[k]) == 0) {
+			if (d->c->strict)
+				refuse(d, e, "an annotation or a fill: not "
+				    "read (-S)");
+			else
+				loft__passed_add(&d->passed, n, strlen(n));
+			return;
+		}
+	for (k = 0; k < sizeof readers / sizeof readers[0]; k++)
+		if (strcmp(n, readers[k].name) == 0) {
+			readers[k].read(d, e);
+			return;
+		}
+	refuse(d, e, "not read: loft reads LINE, LWPOLYLINE, POLYLINE, "
+	    "SPLINE, ARC, CIRCLE, ELLIPSE, POINT and INSERT entities");
 }
 
 /* $INSUNITS codes to millimetres (the DXF reference's table). */
@@ -1221,6 +1747,9 @@ match_turns(struct dxf *d, struct corner *cs)
 				    key.y; a++) {
 					double dd = vdist(v + 3 * g[a].v, x, 3);
 
+					if (d->kr[record_of(d, g[a].v)].grp !=
+					    d->tp[t].grp)
+						continue;       /* another piece */
 					if (dd <= bd && (best == (size_t)-1 ||
 					    dd < bd || g[a].v < best)) {
 						bd = dd;
@@ -1345,7 +1874,6 @@ find_word(const char *buf, size_t len, const char *word)
 	return 0;
 }
 
-enum { S_NONE, S_HEADER, S_ENTITIES, S_OTHER };
 
 static void
 dxf_free(struct dxf *d)
@@ -1366,6 +1894,8 @@ dxf_free(struct dxf *d)
 	free(d->tp);
 	free(d->seg.v);
 	free(d->echo);
+	free(d->off);
+	free(d->blk);
 }
 
 /* Skip to the next line that is a 0 group code; 1 if there is one. */
@@ -1389,113 +1919,195 @@ resync(struct dxf *d)
 	}
 }
 
+/* A line where a group code must be is no whole number: said (not
+ * again when a block is drawn once more), and reading goes on at the
+ * next 0 group; 0, or -1 at the end of the file. */
+static int
+bad_code(struct dxf *d, const struct pair *pr)
+{
+	char q[31];
+
+	if (d->nins == 0)
+		loft__cadin_say(d->c, pr->line, "'%s' is not a group code (a "
+		    "whole number)%s", loft__cadin_quote(q, sizeof q, pr->v,
+		    pr->n), d->in_ent ? "; the entity it is in is not read" :
+		    "");
+	if (d->in_ent)
+		d->e.bad = 2;   /* said */
+	return resync(d) ? 0 : -1;
+}
+
+/* A group of code other than 0. */
+static void
+on_group(struct dxf *d, const struct pair *pr)
+{
+	if (d->want_name) {
+		d->want_name = 0;
+		if (pr->code == 2) {
+			d->sec = loft__word_is(pr->v, pr->n, "HEADER") ? S_HEADER :
+			    loft__word_is(pr->v, pr->n, "TABLES") ? S_TABLES :
+			    loft__word_is(pr->v, pr->n, "BLOCKS") ? S_BLOCKS :
+			    loft__word_is(pr->v, pr->n, "ENTITIES") ? S_ENTITIES :
+			    S_OTHER;
+			return;
+		}
+		d->sec = S_OTHER;
+	}
+	if (d->in_ent)
+		ent_group(d, &d->e, pr);
+	else if (d->sec == S_TABLES)
+		table_group(d, pr);
+	else if (d->sec == S_HEADER && pr->code == 9) {
+		d->var = pr->v;
+		d->nvar = pr->n;
+	} else if (d->sec == S_HEADER && d->var != NULL)
+		header_var(d, d->var, d->nvar, pr);
+}
+
+/* The entity being read ends (at the 0 group pr). */
+static void
+ent_close(struct dxf *d, const struct pair *pr)
+{
+	d->in_ent = 0;
+	if (d->sec == S_BLOCKS)
+		block_add(d, &d->e, pr);
+	else if (d->e.bad == 2 && strcmp(d->e.name, "VERTEX") == 0)
+		d->pl.bad = 1;
+	else if (d->e.bad == 2)
+		poly_end(d, 0);
+	else
+		ent_end(d, &d->e);
+}
+
+/* A 0 group: an entity, a table entry or a section starts or ends. */
+static void
+on_zero(struct dxf *d, const struct pair *pr)
+{
+	int ends = loft__word_is(pr->v, pr->n, "ENDSEC") ||
+	    loft__word_is(pr->v, pr->n, "EOF");
+
+	if (d->in_ent)
+		ent_close(d, pr);
+	if (d->sec == S_TABLES) {
+		table_end(d);
+		d->in_lay = loft__word_is(pr->v, pr->n, "LAYER");
+		d->lay.g2 = NULL;
+		d->lay.f62 = d->lay.f70 = 0;
+	}
+	if (d->sec == S_REPLAY) {       /* a block's entities, once more */
+		if (ends || loft__word_is(pr->v, pr->n, "ENDBLK") ||
+		    loft__word_is(pr->v, pr->n, "SECTION")) {
+			d->eof = 1;
+			return;
+		}
+		if (d->budget-- <= 0) {
+			d->eof = 1;
+			return;
+		}
+	}
+	if (loft__word_is(pr->v, pr->n, "SECTION"))
+		d->want_name = 1;
+	else if (ends) {
+		poly_end(d, 0);
+		d->sec = S_NONE;
+		d->eof = loft__word_is(pr->v, pr->n, "EOF");
+	} else if (d->sec == S_ENTITIES || d->sec == S_REPLAY ||
+	    (d->sec == S_BLOCKS && loft__word_is(pr->v, pr->n, "BLOCK"))) {
+		ent_start(&d->e, pr);
+		d->in_ent = 1;
+	}
+}
+
+/* Read pairs to the end of the file (or, drawing a block, its ENDBLK). */
+static void
+read_pairs(struct dxf *d)
+{
+	struct pair pr;
+	int r;
+
+	while (!d->eof && !d->oom && (r = next_pair(d, &pr)) != 0) {
+		if (r == -2)
+			break;          /* truncated: said at the end */
+		if (r < 0) {
+			if (bad_code(d, &pr) != 0)
+				break;
+		} else if (pr.code != 0)
+			on_group(d, &pr);
+		else
+			on_zero(d, &pr);
+	}
+}
+
+/* The document is read: what was passed over is noted, a truncation
+ * said, the turn points applied. */
+static void
+dxf_finish(struct dxf *d, size_t base)
+{
+	struct loft_cadin *c = d->c;
+
+	if (!d->eof && !d->oom) {
+		if (d->in_ent) {
+			char nm[64];
+
+			loft__cadin_say(c, d->e.line, "%s: the file ends inside "
+			    "it (truncated?): not read", ent_name(&d->e, nm,
+			    sizeof nm));
+			d->pl.refused = 1;
+		}
+		poly_end(d, 0);
+		loft__cadin_say(c, d->line, "the file ends without an EOF "
+		    "group: truncated?");
+	}
+	if (!d->oom && apply_turns(d, base) != 0)
+		d->oom = 1;
+	loft__passed_say(c, &d->passed, "(annotations and fills; -S makes "
+	    "them errors)");
+	loft__passed_say(c, &d->hidden, "on layers off or frozen (-H reads "
+	    "them)");
+}
+
 int
 loft_dxf_read(const char *buf, size_t len, struct loft_cadin *c)
 {
 	static const char bin[] = "AutoCAD Binary DXF";
-	struct dxf d;
-	struct pair pr;
-	int sec = S_NONE, want_name = 0, in_ent = 0, eof = 0, r;
-	const char *var = NULL;
-	size_t nvar = 0, base = c->w->len;
+	struct dxf *d;
+	size_t base = c->w->len;
 	long nbad = c->nbad;
+	int oom;
 
 	if (len >= sizeof bin - 1 && memcmp(buf, bin, sizeof bin - 1) == 0) {
 		loft__cadin_say(c, 1, "a binary DXF: loft reads ASCII DXF (save "
 		    "the drawing as ASCII DXF)");
 		return LOFT_EINPUT;
 	}
-	memset(&d, 0, sizeof d);
-	d.p = buf;
-	d.end = buf + len;
-	d.c = c;
-	d.scale = 1;
-	if ((d.echo = calloc(1, sizeof *d.echo)) != NULL) {
-		d.echo->doc = buf;      /* none: every number formatted */
-		d.echo->len = len;
+	if ((d = calloc(1, sizeof *d)) == NULL) {
+		loft__cadin_say(c, 0, "out of memory");
+		return LOFT_ENOMEM;
+	}
+	d->p = buf;
+	d->end = buf + len;
+	d->c = c;
+	d->scale = 1;
+	d->stretch = 1;
+	d->budget = INSERT_BUDGET;
+	if ((d->echo = calloc(1, sizeof *d->echo)) != NULL) {
+		d->echo->doc = buf;     /* none: every number formatted */
+		d->echo->len = len;
 	}
 	/* the records are shorter than the groups they come from: room for
 	 * them at once saves copying the output as it grows (if there is
 	 * no such room, it grows as usual) */
 	loft__grow((void **)&c->w->buf, &c->w->cap, c->w->len + len + 1, 1);
 	/* no word POINT, no turn points: the knots need not be kept */
-	d.turns = find_word(buf, len, "POINT");
-	while (!eof && !d.oom && (r = next_pair(&d, &pr)) != 0) {
-		if (r < 0) {
-			char q[31];
-
-			if (r == -2)
-				break;  /* truncated: said below */
-			loft__cadin_say(c, pr.line, "'%s' is not a group code "
-			    "(a whole number)%s", loft__cadin_quote(q, sizeof q,
-			    pr.v, pr.n), in_ent ? "; the entity it is in is not "
-			    "read" : "");
-			if (in_ent)
-				d.e.bad = 2;    /* said */
-			if (!resync(&d))
-				break;
-			continue;
-		}
-		if (want_name) {
-			want_name = 0;
-			if (pr.code == 2) {
-				sec = loft__word_is(pr.v, pr.n, "HEADER") ?
-				    S_HEADER : loft__word_is(pr.v, pr.n,
-				    "ENTITIES") ? S_ENTITIES : S_OTHER;
-				continue;
-			}
-			sec = S_OTHER;
-		}
-		if (pr.code != 0) {
-			if (sec == S_ENTITIES && in_ent)
-				ent_group(&d, &d.e, &pr);
-			else if (sec == S_HEADER && pr.code == 9) {
-				var = pr.v;
-				nvar = pr.n;
-			} else if (sec == S_HEADER && var != NULL)
-				header_var(&d, var, nvar, &pr);
-			continue;
-		}
-		if (in_ent) {
-			in_ent = 0;
-			if (d.e.bad == 2 && strcmp(d.e.name, "VERTEX") == 0)
-				d.pl.bad = 1;
-			else if (d.e.bad == 2)
-				poly_end(&d, 0);
-			else
-				ent_end(&d, &d.e);
-		}
-		if (loft__word_is(pr.v, pr.n, "SECTION"))
-			want_name = 1;
-		else if (loft__word_is(pr.v, pr.n, "ENDSEC")) {
-			poly_end(&d, 0);
-			sec = S_NONE;
-		} else if (loft__word_is(pr.v, pr.n, "EOF"))
-			eof = 1;
-		else if (sec == S_ENTITIES) {
-			ent_start(&d.e, &pr);
-			in_ent = 1;
-		}
-	}
-	if (!eof && !d.oom) {
-		if (in_ent) {
-			char nm[64];
-
-			loft__cadin_say(c, d.e.line, "%s: the file ends inside it "
-			    "(truncated?): not read", ent_name(&d.e, nm,
-			    sizeof nm));
-			d.pl.refused = 1;
-		}
-		poly_end(&d, 0);
-		loft__cadin_say(c, d.line, "the file ends without an EOF group: "
-		    "truncated?");
-	}
-	if (!d.oom && apply_turns(&d, base) != 0)
-		d.oom = 1;
-	dxf_free(&d);
-	if (d.oom) {
-		loft__cadin_say(c, d.line, "out of memory");
+	d->turns = find_word(buf, len, "POINT");
+	read_pairs(d);
+	dxf_finish(d, base);
+	dxf_free(d);
+	oom = d->oom;
+	if (oom)
+		loft__cadin_say(c, d->line, "out of memory");
+	free(d);
+	if (oom)
 		return LOFT_ENOMEM;
-	}
 	return c->nbad > nbad ? LOFT_EINPUT : 0;
 }

@@ -487,14 +487,14 @@ static int
 arc_cubics(struct svg *s, const double *c, double rx, double ry, double phi,
     double t0, double dt, long n)
 {
-	double h = dt / (double)n, k = 4.0 / 3 * tan(h / 4);
+	double h = dt / (double)n;
 	double cp = cos(phi), sp = sin(phi);
 
 	for (long i = 0; i < n; i++) {
 		double a = t0 + h * (double)i, e = i + 1 == n ? t0 + dt : a + h;
-		double u[8] = { cos(a), sin(a), cos(a) - k * sin(a),
-		    sin(a) + k * cos(a), cos(e) + k * sin(e), sin(e) - k * cos(e),
-		    cos(e), sin(e) }, v[8];
+		double u[8], v[8];
+
+		loft__arc_unit(a, h, e, u);
 
 		for (int j = 0; j < 4; j++) {
 			double x = rx * u[2 * j], y = ry * u[2 * j + 1];
