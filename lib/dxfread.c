@@ -470,9 +470,12 @@ wcs_frame(const struct dxf *d, struct frame *f)
 static void
 xf_apply(const double *m, const double *o, double *w, int lin)
 {
+	double r[3];            /* o and w may be one */
+
 	for (int k = 0; k < 3; k++)
-		w[k] = m[3 * k] * o[0] + m[3 * k + 1] * o[1] + m[3 * k + 2] *
+		r[k] = m[3 * k] * o[0] + m[3 * k + 1] * o[1] + m[3 * k + 2] *
 		    o[2] + (lin ? 0 : m[9 + k]);
+	vcopy(w, r, 3);
 }
 
 static void
@@ -768,6 +771,11 @@ do_arc(struct dxf *d, struct ent *e, int circle)
 		return;
 	}
 	r = e->g40.v[0];
+	if (r == 0 && !d->c->strict) {  /* draws nothing: no error */
+		loft__passed_add(&d->passed, circle ? "CIRCLE of radius 0" :
+		    "ARC of radius 0", circle ? 18 : 15);
+		return;
+	}
 	if (!(r > 0)) {
 		refuse(d, e, "its radius is not above 0");
 		return;
@@ -2060,8 +2068,8 @@ dxf_finish(struct dxf *d, size_t base)
 	}
 	if (!d->oom && apply_turns(d, base) != 0)
 		d->oom = 1;
-	loft__passed_say(c, &d->passed, "(annotations and fills; -S makes "
-	    "them errors)");
+	loft__passed_say(c, &d->passed, "(annotations, fills and empty "
+	    "arcs; -S makes them errors)");
 	loft__passed_say(c, &d->hidden, "on layers off or frozen (-H reads "
 	    "them)");
 }

@@ -733,7 +733,7 @@ EOF
 run "$F $T/text.dxf"
 status 1
 says "text.dxf:21: INSERT (handle 3B): no block of its name"
-says "text.dxf: 1 TEXT, 1 ATTRIB, 1 HATCH passed over (annotations and fills; -S makes them errors)"
+says "text.dxf: 1 TEXT, 1 ATTRIB, 1 HATCH passed over (annotations, fills and empty arcs; -S makes them errors)"
 [ "$(wc -l <"$T/err")" = 2 ] && ok || no "text.dxf: want 2 messages: $(cat "$T/err")"
 run "$F -S $T/text.dxf"
 status 1

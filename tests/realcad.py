@@ -1,0 +1,372 @@
+"""realcad.py: fromcad against independent readers.
+
+  realcad.py gen DIR          write DIR/blocks.dxf (blocks, arrays,
+                              nesting, extrusions, ellipses, a layer off)
+                              and DIR/d6673.dxf (a pattern file in the
+                              style of ASTM D6673) with ezdxf
+  realcad.py dxf LIST         for each line "DOC<tab>LOFT" of LIST,
+                              compare the records LOFT (fromcad's output
+                              for DOC) with ezdxf's own geometry of DOC
+  realcad.py svg LIST         the same with svgelements for SVGs
+
+The references are ezdxf's and svgelements' own evaluation (their
+transforms of blocks and <use>, their ellipses and arcs, their Bezier
+decomposition of splines), never numbers taken from fromcad.  Prints
+one line "N records, M points compared, largest deviation D (of the
+tolerance)" of them all, and "FAIL DOC: why" for each document with a
+record that differs (then exits 1)."""
+import math
+import sys
+
+# Relative rounding: two readers' coordinates of one point agree to
+# this fraction of the drawing's size (doubles carry 1e-16; the
+# transforms of nested blocks cost a few roundings each).
+ROUND = 1e-9
+# fromcad's default arc tolerance (loftprog.h LOFT_CADIN_ARC_REL)
+ARC_REL = 1e-4
+
+
+class Unreadable(Exception):
+    """The reference reader cannot read the document: no comparison."""
+
+
+def records(path):
+    """fromcad's output as [(header words, rows of floats)]."""
+    out, cur = [], None
+    for line in open(path):
+        w = line.split()
+        if not w:
+            cur = None
+            continue
+        if cur is None:
+            cur = (w, [])
+            out.append(cur)
+        else:
+            cur[1].append([float(x) for x in w])
+    return out
+
+
+def attr(head, key):
+    for w in head[1:]:
+        if w.startswith(key + "="):
+            return w[len(key) + 1:]
+    return None
+
+
+def dist(a, b):
+    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)))
+
+
+def pt3(p):
+    p = list(p)
+    return p + [0.0] * (3 - len(p))
+
+
+class Check:
+    def __init__(self, size):
+        self.size = size        # the drawing's extent, for ROUND
+        self.points = 0
+        self.dev = 0.0          # largest deviation over its allowance
+
+    def near(self, what, got, want, tol=None):
+        tol = tol if tol is not None else ROUND * self.size
+        d = dist(pt3(got), pt3(want))
+        self.points += 1
+        self.dev = max(self.dev, d / tol if tol > 0 else 0)
+        if d > tol:
+            sys.exit("%s: %r, want %r (%.3g off)" % (what, got, want, d))
+
+
+# ---- DXF ---------------------------------------------------------------
+
+def gen(d):
+    import ezdxf
+    doc = ezdxf.new("R2018")
+    doc.header["$INSUNITS"] = 4
+    msp = doc.modelspace()
+    inner = doc.blocks.new("INNER", base_point=(1, 1))
+    inner.add_line((1, 1), (3, 2))
+    inner.add_circle((2, 2), 0.5)
+    inner.add_ellipse((0, 0), major_axis=(2, 1), ratio=0.4,
+                      start_param=0.3, end_param=2.5)
+    outer = doc.blocks.new("OUTER", base_point=(0, 0, 0))
+    outer.add_lwpolyline([(0, 0, 0), (4, 0, 0.5), (4, 3, 0), (0, 3, 0)],
+                         format="xyb", close=True)
+    outer.add_blockref("INNER", (5, 5), dxfattribs={
+        "xscale": 2, "yscale": 0.5, "rotation": 30})
+    outer.add_arc((1, 1), 2, 10, 200)
+    outer.add_spline([(0, 0), (1, 3), (3, 3), (4, 0), (6, 1)])
+    msp.add_blockref("OUTER", (10, 20), dxfattribs={"rotation": 45,
+                                                    "xscale": 1.5,
+                                                    "yscale": 1.5})
+    msp.add_blockref("INNER", (0, 0, 3), dxfattribs={
+        "extrusion": (0.3, -0.2, 0.9), "rotation": 10})
+    m = msp.add_blockref("INNER", (-50, 0), dxfattribs={"rotation": 15})
+    m.grid(size=(3, 4), spacing=(7, 11))
+    msp.add_ellipse((3, 4, 0), major_axis=(10, 2, 0), ratio=0.3)
+    msp.add_ellipse((1, 1, 1), major_axis=(0, 5, 1), ratio=0.7,
+                    start_param=1, end_param=5,
+                    dxfattribs={"extrusion": (1, 0, 0)})
+    doc.layers.add("OLD").off()
+    doc.layers.add("ICE").freeze()
+    msp.add_line((0, 0), (9, 9), dxfattribs={"layer": "OLD"})
+    msp.add_line((0, 0), (9, -9), dxfattribs={"layer": "ICE"})
+    msp.add_text("label", dxfattribs={"layer": "15"})
+    doc.saveas(d + "/blocks.dxf")
+
+    # ASTM D6673 style: one block per size, the boundary on layer 1, its
+    # turn points on layer 2, the size as TEXT on layer 15, each inserted;
+    # both sizes inserted at the same place (stacked, as graded nests are)
+    doc = ezdxf.new("R12")
+    for size, k in (("S7", 1.0), ("S8", 1.06)):
+        b = doc.blocks.new(size)
+        pts = [(0, 0), (100 * k, 0), (110 * k, 40 * k), (60 * k, 70 * k),
+               (0, 50 * k)]
+        b.add_polyline2d(pts, close=True, dxfattribs={"layer": "1"})
+        for p in (pts[1], pts[3]):
+            b.add_point(p, dxfattribs={"layer": "2"})
+        b.add_text(size, dxfattribs={"layer": "15"})
+        doc.modelspace().add_blockref(size, (0, 0))
+    doc.saveas(d + "/d6673.dxf")
+
+
+def dxf_expected(doc):
+    """ezdxf's entities of the model space, blocks exploded by ezdxf."""
+    def off(e):
+        name = e.dxf.get("layer", "0")
+        if not doc.layers.has_entry(name):
+            return False
+        lay = doc.layers.get(name)
+        return lay.is_off() or lay.is_frozen()
+
+    def walk(ents, depth):
+        for e in ents:
+            if depth == 0 and off(e):
+                continue
+            t = e.dxftype()
+            if t == "INSERT":
+                if e.mcount > 1:
+                    for v in e.multi_insert():
+                        yield from walk(v.virtual_entities(), depth + 1)
+                else:
+                    yield from walk(e.virtual_entities(), depth + 1)
+            elif t in ("ARC", "CIRCLE") and not e.dxf.radius > 0:
+                continue        # draws nothing: passed over
+            elif t in ("LINE", "POINT", "ARC", "CIRCLE", "ELLIPSE",
+                       "LWPOLYLINE", "POLYLINE", "SPLINE"):
+                yield e
+    return list(walk(doc.modelspace(), 0))
+
+
+def ellipse_dev(ce, p):
+    """How far p lies off the ellipse, as the radial error in the
+    ellipse's own unit-circle coordinates times the major radius."""
+    c, mj, mn = ce.center, ce.major_axis, ce.minor_axis
+    q = [p[k] - c[k] for k in range(3)]
+    x = sum(q[k] * mj[k] for k in range(3)) / mj.magnitude ** 2
+    y = sum(q[k] * mn[k] for k in range(3)) / mn.magnitude ** 2
+    z = q[0] * ce.extrusion[0] + q[1] * ce.extrusion[1] + q[2] * ce.extrusion[2]
+    return math.hypot(abs(math.hypot(x, y) - 1) * mj.magnitude, z)
+
+
+def bez(row, dim, t):
+    a, b = row[:dim], row[dim:2 * dim]
+    ta, tb = row[2 * dim:3 * dim], row[3 * dim:]
+    b1 = [a[k] + ta[k] / 3 for k in range(dim)]
+    b2 = [b[k] - tb[k] / 3 for k in range(dim)]
+    s = 1 - t
+    return [s ** 3 * a[k] + 3 * s * s * t * b1[k] + 3 * s * t * t * b2[k]
+            + t ** 3 * b[k] for k in range(dim)]
+
+
+def cmp_ellipse(ck, what, e, rec, mm):
+    ce = e.construction_tool()
+    ce = type(ce)(center=ce.center * mm, major_axis=ce.major_axis * mm,
+                  extrusion=ce.extrusion, ratio=ce.ratio,
+                  start_param=ce.start_param, end_param=ce.end_param)
+    tol = ARC_REL * ce.major_axis.magnitude * (1 + 1e-6) + ROUND * ck.size
+    rows = rec[1]
+    if rec[0][0] == "points":   # an ARC or CIRCLE stretched by a block
+        for p in rows:
+            d = ellipse_dev(ce, pt3(p))
+            ck.points += 1
+            ck.dev = max(ck.dev, d / (ROUND * ck.size))
+            if d > ROUND * ck.size:
+                sys.exit("%s: a knot %.3g off the ellipse" % (what, d))
+        return
+    if rec[0][0] != "cubic":
+        sys.exit("%s: a %s record, want cubic" % (what, rec[0][0]))
+    dim = len(rows[0]) // 4
+    ck.near(what + " start", rows[0][:dim], ce.start_point)
+    ck.near(what + " end", rows[-1][dim:2 * dim], ce.end_point)
+    for r in rows:
+        for t in (0, 0.25, 0.5, 0.75):
+            p = pt3(bez(r, dim, t))
+            d = ellipse_dev(ce, p)
+            ck.points += 1
+            ck.dev = max(ck.dev, d / tol)
+            if d > tol:
+                sys.exit("%s: a point %.3g off the ellipse (tolerance %.3g)"
+                         % (what, d, tol))
+
+
+def cmp_arc(ck, what, e, rec, mm):
+    from ezdxf.math import OCS
+    ocs = OCS(e.dxf.extrusion)
+    c, r = e.dxf.center, e.dxf.radius
+    tol = ROUND * ck.size
+    for p in rec[1]:
+        q = ocs.from_wcs([x / mm for x in pt3(p)])
+        d = abs(math.hypot(q[0] - c[0], q[1] - c[1]) - r) * mm
+        d = max(d, abs(q[2] - c[2]) * mm)
+        ck.points += 1
+        ck.dev = max(ck.dev, d / tol)
+        if d > tol:
+            sys.exit("%s: a knot %.3g off the circle" % (what, d))
+    if e.dxftype() == "ARC":
+        ck.near(what + " start", rec[1][0], e.start_point * mm)
+        ck.near(what + " end", rec[1][-1], e.end_point * mm)
+
+
+def cmp_vertices(ck, what, verts, rec, mm):
+    """Every vertex, in order, is a knot of the record."""
+    knots = [pt3(p) for p in rec[1]]
+    i = 0
+    for v in verts:
+        v = [x * mm for x in pt3(v)]
+        while i < len(knots) and dist(knots[i], v) > ROUND * ck.size:
+            i += 1
+        if i == len(knots):
+            sys.exit("%s: vertex %r is no knot of the record" % (what, v))
+        ck.points += 1
+
+
+def cmp_spline(ck, what, e, rec, mm):
+    if rec[0][0] == "points" and e.dxf.n_control_points == 0:
+        return cmp_vertices(ck, what, e.fit_points, rec, mm)
+    bs = e.construction_tool()
+    pieces = list(bs.bezier_decomposition())
+    if rec[0][0] == "cubic":
+        rows = rec[1]
+        dim = len(rows[0]) // 4
+        if len(rows) != len(pieces):
+            sys.exit("%s: %d pieces, want %d" % (what, len(rows),
+                                                  len(pieces)))
+        for r, b in zip(rows, pieces):
+            p = len(b) - 1
+            b = [[x * mm for x in pt3(q)] for q in b]
+            ck.near(what + " piece start", r[:dim], b[0])
+            ck.near(what + " piece end", r[dim:2 * dim], b[p])
+            ck.near(what + " start tangent", r[2 * dim:3 * dim],
+                    [p * (b[1][k] - b[0][k]) for k in range(3)])
+    else:
+        sys.exit("%s: a %s record" % (what, rec[0][0]))
+
+
+def cmp_dxf(path, loft):
+    import ezdxf
+    from ezdxf import units
+    try:
+        doc = ezdxf.readfile(path)
+    except (IOError, ezdxf.DXFError) as e:
+        raise Unreadable(str(e))
+    u = doc.header.get("$INSUNITS", 0)
+    mm = units.conversion_factor(u, units.MM) if u else 1.0
+    exp = dxf_expected(doc)
+    recs = records(loft)
+    ext = 0.0
+    for r in recs:
+        for p in r[1]:
+            ext = max([ext] + [abs(x) for x in p[:3]])
+    ck = Check(max(ext, 1e-300))
+    if len(exp) != len(recs):
+        sys.exit("%d records, want %d (ezdxf: %s)" % (
+            len(recs), len(exp), ", ".join(e.dxftype() for e in exp[:8])))
+    for i, (e, rec) in enumerate(zip(exp, recs)):
+        t = e.dxftype()
+        what = "record %d (%s)" % (i + 1, t)
+        if t == "LINE":
+            ck.near(what, rec[1][0], e.dxf.start * mm)
+            ck.near(what, rec[1][1], e.dxf.end * mm)
+        elif t == "POINT":
+            ck.near(what, rec[1][0], e.dxf.location * mm)
+        elif t in ("ARC", "CIRCLE"):
+            cmp_arc(ck, what, e, rec, mm)
+        elif t == "ELLIPSE":
+            cmp_ellipse(ck, what, e, rec, mm)
+        elif t == "LWPOLYLINE":
+            ocs = e.ocs()
+            z = e.dxf.elevation
+            cmp_vertices(ck, what, [ocs.to_wcs((p[0], p[1], z))
+                                    for p in e.get_points("xy")], rec, mm)
+        elif t == "POLYLINE":
+            cmp_vertices(ck, what, list(e.points_in_wcs())
+                         if hasattr(e, "points_in_wcs") else
+                         [v.dxf.location for v in e.vertices], rec, mm)
+        elif t == "SPLINE":
+            cmp_spline(ck, what, e, rec, mm)
+    return len(recs), ck
+
+
+# ---- SVG ---------------------------------------------------------------
+
+def cmp_svg(path, loft):
+    """svgelements' own parse (its <use>, transforms, arcs as cubics
+    within a tolerance of its own) against fromcad's records, compared
+    as point sets along the curves: each record's joints on svgelements'
+    segments' ends, in order."""
+    import svgelements as se
+    svg = se.SVG.parse(path, reify=True, ppi=96.0)
+    mm = 25.4 / 96
+    want = []
+    for el in svg.elements():
+        if not isinstance(el, se.Shape):
+            continue
+        if el.values.get("display") == "none" or el.values.get(
+                "visibility") == "hidden":
+            continue
+        p = se.Path(el)
+        for sub in p.as_subpaths():
+            sub = se.Path(sub)
+            pts = [(s.end.x * mm, -s.end.y * mm) for s in sub
+                   if not isinstance(s, (se.Move, se.Close))]
+            if pts:
+                want.append(pts)
+    recs = records(loft)
+    return want, recs
+
+
+def batch(kind, listfile):
+    """Each line of listfile "DOC LOFT": compared; a line per failure
+    "FAIL DOC: why", then the totals.  Exit status 1 when any failed."""
+    nf = nrec = npts = bad = unread = 0
+    dev = 0.0
+    for line in open(listfile):
+        doc, loft = line.rstrip("\n").split("\t")
+        try:
+            n, ck = (cmp_dxf if kind == "dxf" else cmp_svg)(doc, loft)
+        except SystemExit as e:
+            print("FAIL %s: %s" % (doc, e))
+            bad += 1
+            continue
+        except Unreadable as e:
+            unread += 1
+            continue
+        nf += 1
+        nrec += n
+        npts += ck.points
+        dev = max(dev, ck.dev)
+    print("%d files, %d records, %d points compared, largest deviation "
+          "%.3g of its tolerance; %d files the reference cannot read"
+          % (nf, nrec, npts, dev, unread))
+    return bad
+
+
+def main():
+    if sys.argv[1] == "gen":
+        gen(sys.argv[2])
+        return
+    sys.exit(1 if batch(sys.argv[1], sys.argv[2]) else 0)
+
+
+main()
