@@ -1472,16 +1472,22 @@ do_insert(struct dxf *d, struct ent *e)
 	me.handle = e->handle;
 	me.nhandle = e->nhandle;
 
-	if (b == NULL)
-		return (void)refuse(d, e, "no block of its name (group 2) in "
+	if (b == NULL) {
+		refuse(d, e, "no block of its name (group 2) in "
 		    "the BLOCKS section");
-	if (d->nins >= INSERT_DEPTH)
-		return (void)refuse(d, e, "blocks nested deeper than 16 "
+		return;
+	}
+	if (d->nins >= INSERT_DEPTH) {
+		refuse(d, e, "blocks nested deeper than 16 "
 		    "INSERTs (does a block insert itself?): not read");
+		return;
+	}
 	if (!(e->ext[0] == 0 && e->ext[1] == 0 && e->ext[2] > 0) &&
-	    ocs_axes(e->ext, ax, ay, az) != 0)
-		return (void)refuse(d, e, "its extrusion direction "
+	    ocs_axes(e->ext, ax, ay, az) != 0) {
+		refuse(d, e, "its extrusion direction "
 		    "(210/220/230) is zero");
+		return;
+	}
 	/* L = A R S: columns of A the OCS axes, R the turn about z */
 	for (int k = 0; k < 3; k++) {
 		L[3 * k] = (ax[k] * cr + ay[k] * sr) * s[0];

@@ -7,7 +7,8 @@
 # geometry by tests/realcad.py.  The real corpora are sampled (at most
 # REALCAD_FILES files each, 200 by default) so that make check stays
 # short.  Run from the top of the tree; the last line is "realcad: N
-# passed, M failed".
+# passed, M failed".  (svgelements reads the SVGs, ezdxf the DXFs; the
+# SVG part is skipped alone where ezdxf is missing and svgelements not.)
 
 T=bin/test/realcad
 . tests/lib.sh
@@ -80,6 +81,40 @@ else
 		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
 		    "$T/all" "$T/all" >"$T/list"
 		many dxf librecad
+	fi
+fi
+
+SPY=
+for p in ${PYTHON:-} /usr/bin/python3 python3; do
+	if "$p" -c 'import svgelements' >/dev/null 2>&1; then SPY=$p; break; fi
+done
+if [ -z "$SPY" ]; then
+	echo "realcad: SVG cases skipped: no python3 with svgelements (Debian python3-svgelements)"
+else
+	PY=$SPY
+	[ -s "$T/features.svg" ] || "$PY" tests/realcad.py gen "$T"
+	if [ -s "$T/features.svg" ]; then
+		echo "$T/features.svg" >"$T/list"
+		many svg generated
+		# the hidden two noted, the text noted, -H reads the hidden
+		run "$F $T/features.svg"
+		says "features.svg: 2 path passed over hidden (display:none, visibility:hidden; -H reads them)"
+		says "features.svg: 1 text passed over"
+		n0=$(grep -c '^[a-z]' "$T/out")
+		run "$F -H $T/features.svg"
+		[ "$(grep -c '^[a-z]' "$T/out")" = $((n0 + 2)) ] && ok || no "svg -H: $(grep -c '^[a-z]' "$T/out") records, want $((n0 + 2))"
+	fi
+	: >"$T/all"
+	for d in /usr/share/icons/breeze /usr/share/icons/Adwaita; do
+		[ -d "$d" ] && find "$d" -name '*.svg' -type f >>"$T/all"
+	done
+	if [ ! -s "$T/all" ]; then
+		echo "realcad: icon cases skipped: no breeze or Adwaita icons (Debian breeze-icon-theme, adwaita-icon-theme)"
+	else
+		LC_ALL=C sort -o "$T/all" "$T/all"
+		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
+		    "$T/all" "$T/all" >"$T/list"
+		many svg icons
 	fi
 fi
 
