@@ -40,6 +40,10 @@ struct nums {
 	size_t n, cap;
 };
 
+/* Attributes read back from a record's XDATA, at most (tocad writes a
+ * few: size=, offset=, name=, id=). */
+#define XATTR_MAX 16
+
 enum { S_NONE, S_HEADER, S_TABLES, S_BLOCKS, S_ENTITIES, S_REPLAY, S_OTHER };
 
 /* One entity: the groups loft uses, collected until the next 0 group. */
@@ -60,6 +64,12 @@ struct ent {
 	int has71, has73, has90, has62;
 	const char *g2;                 /* a BLOCK's or INSERT's block */
 	size_t n2;
+	struct xattrs {                 /* XDATA of LOFT: "key=value" */
+		const char *s[XATTR_MAX];
+		size_t n[XATTR_MAX];
+		int count;
+	} xa;
+	int in_loft;                    /* in XDATA of application LOFT */
 	int bad;                        /* a message is in msg */
 	char msg[200];
 };
@@ -74,6 +84,7 @@ struct poly {
 	double ext[3], elev;
 	struct loft__pts v;
 	struct nums bulge;
+	struct xattrs xa;
 };
 
 struct knotrec {                /* a knot record written: for corners= */
@@ -133,6 +144,7 @@ struct dxf {
 	struct name ins_layer, ins_block;       /* the outermost's */
 	long grp, budget;
 	struct loft__passed passed, hidden;
+	const struct xattrs *xa;        /* the entity's, for put_where */
 	int turns;              /* the document may hold turn points */
 	struct loft__pts verts, knots, work;
 	struct knotrec *kr;
@@ -293,6 +305,8 @@ ent_start(struct ent *e, const struct pair *pr)
 	e->has62 = 0;
 	e->g2 = NULL;
 	e->n2 = 0;
+	e->xa.count = 0;
+	e->in_loft = 0;
 	e->ext[0] = e->ext[1] = 0;
 	e->ext[2] = 1;
 	e->elev = e->a50 = e->a51 = 0;
@@ -335,6 +349,29 @@ coord(struct dxf *d, struct ent *e, struct loft__pts *s, unsigned *mask,
 	*mask = 1u << k;
 }
 
+/* A 1000 string of LOFT's XDATA: kept when it is "key=value" as
+ * loft.5 writes attributes (tocad's DXF; see dxf.c). */
+static void
+xattr_add(struct ent *e, const struct pair *pr)
+{
+	size_t k = 0;
+
+	if (!e->in_loft || e->xa.count == XATTR_MAX || pr->n < 3)
+		return;
+	/* a name (loft.5): a letter, then letters, digits, '-' or '_' */
+	while (k < pr->n && ((pr->v[k] | 0x20) >= 'a' && (pr->v[k] | 0x20) <=
+	    'z' ? 1 : k > 0 && ((pr->v[k] >= '0' && pr->v[k] <= '9') ||
+	    pr->v[k] == '-' || pr->v[k] == '_')))
+		k++;
+	if (k == 0 || k + 1 >= pr->n || pr->v[k] != '=')
+		return;
+	for (size_t i = k + 1; i < pr->n; i++)
+		if (pr->v[i] < 33 || pr->v[i] > 126 || pr->v[i] == '#')
+			return;
+	e->xa.s[e->xa.count] = pr->v;
+	e->xa.n[e->xa.count++] = pr->n;
+}
+
 static void
 ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 {
@@ -345,6 +382,8 @@ ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 	switch (pr->code) {
 	case 5: e->handle = pr->v; e->nhandle = pr->n; break;
 	case 2: e->g2 = pr->v; e->n2 = pr->n; break;
+	case 1001: e->in_loft = loft__word_is(pr->v, pr->n, "LOFT"); break;
+	case 1000: xattr_add(e, pr); break;
 	case 8: e->layer = pr->v; e->nlayer = pr->n; break;
 	case 43: e->has43 = pair_num(e, pr, &e->g43) == 0; break;
 	case 44: pair_num(e, pr, &e->g44); break;
@@ -615,6 +654,21 @@ keep_vertices(struct dxf *d, size_t hdr, const struct loft__pts *v)
 	d->verts.n += v->n;
 }
 
+#define XATTR_KEY 32     /* a key longer than this is no loft key */
+
+/* Whether fromcad writes key itself, from the entity (not from XDATA). */
+static int
+attr_own(const char *key)
+{
+	static const char *const own[] = { "layer", "block", "closed",
+	    "corners", "piece", "start", "end", NULL };
+
+	for (int i = 0; own[i] != NULL; i++)
+		if (strcmp(key, own[i]) == 0)
+			return 1;
+	return 0;
+}
+
 /* A record's layer= (the INSERT's for an entity of layer 0 in a
  * block, as CAD draws it) and block= (the outermost INSERT's). */
 static void
@@ -629,6 +683,18 @@ put_where(const struct dxf *d, struct loft_writer *w, const char *layer,
 	if (d->nins > 0)
 		loft__cadin_put_name(w, "block", d->ins_block.s,
 		    d->ins_block.n);
+	for (int i = 0; d->xa != NULL && i < d->xa->count; i++) {
+		const char *s = d->xa->s[i], *eq = memchr(s, '=', d->xa->n[i]);
+		char key[XATTR_KEY];
+
+		if (eq == NULL || (size_t)(eq - s) >= sizeof key)
+			continue;
+		memcpy(key, s, (size_t)(eq - s));
+		key[eq - s] = '\0';
+		if (!attr_own(key))
+			loft__cadin_put_name(w, key, eq + 1, d->xa->n[i] -
+			    (size_t)(eq - s) - 1);
+	}
 }
 
 /*
@@ -1121,6 +1187,7 @@ poly_end(struct dxf *d, int complete)
 			refuse(d, &tmp, msg);
 		return;
 	}
+	d->xa = &pl->xa;
 	put_knots(d, pl->layer, pl->nlayer, pl->line, pl->flags & 1, NULL,
 	    NULL);
 }
@@ -1138,6 +1205,7 @@ poly_start(struct dxf *d, struct ent *e)
 	pl->layer = e->layer;
 	pl->nlayer = e->nlayer;
 	pl->flags = e->f70;
+	pl->xa = e->xa;
 	memcpy(pl->ext, e->ext, sizeof pl->ext);
 	pl->elev = e->p10.n > 0 ? e->p10.p[2] : e->elev;
 	pl->v.n = pl->bulge.n = 0;
@@ -1589,6 +1657,7 @@ ent_end(struct dxf *d, struct ent *e)
 	}
 	if (!ent_whole(d, e))
 		return;
+	d->xa = &e->xa;
 	if (d->nins > 0 && nlayer == 1 && layer[0] == '0') {
 		layer = d->ins_layer.s;
 		nlayer = d->ins_layer.n;

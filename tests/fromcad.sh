@@ -976,6 +976,31 @@ run "$F $T/deg63.dxf"
 status 0
 [ "$(grep -c '^bezier' "$T/out")" = $((4000 - 63)) ] && ok || no "deg63: $(grep -c '^bezier' "$T/out") pieces"
 
+# ---- tocad's attributes come back (XDATA of application LOFT) ---------
+# size=, offset=, name= and id= of a plane curve (LWPOLYLINE), a space
+# curve (POLYLINE) and an exact one (SPLINE, tocad -s) come back on
+# fromcad's records; closed= and corners= are the entity's own.
+for s in "" -s; do
+	printf 'cubic size=4.5 offset=2 name=heel closed=0\n0 0 10 0 3 0 0 3\n\nbezier size=7 id=3\n0 0 0\n1 2 3\n3 3 3\n4 0 1\n' |
+	    $B/tocad $s -f dxf >"$T/attr.dxf"
+	run "$F $T/attr.dxf"
+	status 0
+	grep '^[a-z]' "$T/out" | grep -v '^points layer=[23]' >"$T/heads"
+	printf '%s\n' "size=4.5 offset=2 name=heel" "size=7 id=3" >"$T/want"
+	sed 's/.* layer=[^ ]* //' "$T/heads" | cmp -s - "$T/want" && ok ||
+	    no "tocad $s attributes: $(cat "$T/heads")"
+done
+# XDATA that is no loft attribute, or of another application, is not read
+printf '%s\n' '0 LINE' '8 0' '10 0' '20 0' '11 1' '21 0' '1001 ACAD' \
+    '1000 size=1' '1001 LOFT' '1000 not an attr' '1000 a=b#c' '1000 1Z=1' \
+    '1000 closed=1' '1000 ok=1' | dxf "$T/xd.dxf"
+run "$F $T/xd.dxf"
+status 0
+out_is "points closed=0 layer=0 ok=1
+0 0
+1 0
+"
+
 # ---- ezdxf, when installed ---------------------------------------------
 PY=
 for p in ${PYTHON:-} python3 /usr/bin/python3; do

@@ -70,6 +70,15 @@ else
 	printf '%s\n' "points closed=1 layer=1 block=S7 corners=2,4" \
 	    "points closed=1 layer=1 block=S8 corners=2,4" | cmp -s - "$T/heads" &&
 	    ok || no "d6673.dxf: records $(cat "$T/heads")"
+	# tocad's attributes as XDATA, as ezdxf reads them
+	printf 'cubic size=4.5 offset=2 name=heel\n0 0 10 0 3 0 0 3\n' |
+	    $B/tocad -f dxf >"$T/attr.dxf"
+	"$PY" -c 'import sys, ezdxf
+d = ezdxf.readfile(sys.argv[1])
+e = [e for e in d.modelspace() if e.dxftype() == "LWPOLYLINE"][0]
+x = [t.value for t in e.get_xdata("LOFT")]
+sys.exit(x != ["size=4.5", "offset=2", "name=heel"] or not d.appids.has_entry("LOFT"))' \
+	    "$T/attr.dxf" && ok || no "ezdxf does not find tocad's XDATA in $T/attr.dxf"
 	LIB=
 	for d in /usr/share/librecad/library /usr/share/librecad; do
 		[ -d "$d" ] && { LIB=$d; break; }
