@@ -33,6 +33,11 @@
  * is polynomial (the weights of non-rational splines are written 1). */
 #define WEIGHT_SAME 1e-12
 
+/* A clamped rational SPLINE whose ends are this near (relative to its
+ * first point's size) is closed: the ends of a NURBS circle or ellipse
+ * are cos and sin of 0 and 2 pi, a rounding apart. */
+#define ENDS_SAME 1e-12
+
 #define MAX_DEGREE 63           /* loft.5's bezier records */
 
 struct nums {
@@ -978,6 +983,18 @@ joint_add(struct dxf *d, const double *b, int dim)
 	return 0;
 }
 
+/* Whether a SPLINE's weights differ: a rational spline (those of a
+ * polynomial one are written 1, or all alike). */
+static int
+rational(const struct ent *e)
+{
+	for (size_t k = 1; k < e->g41.n; k++)
+		if (fabs(e->g41.v[k] - e->g41.v[0]) > WEIGHT_SAME *
+		    fabs(e->g41.v[0]))
+			return 1;
+	return 0;
+}
+
 /* Whether a SPLINE by control points is whole: degree, counts, knots
  * and weights; 0, or -1 after saying what is wrong. */
 static int
@@ -1015,18 +1032,182 @@ spline_check(struct dxf *d, struct ent *e)
 			refuse(d, e, msg);
 			return -1;
 		}
-	for (size_t k = 1; k < e->g41.n; k++)
-		if (fabs(e->g41.v[k] - e->g41.v[0]) > WEIGHT_SAME *
-		    fabs(e->g41.v[0])) {
-			refuse(d, e, "its weights differ: a rational spline, "
-			    "which loft's polynomial records cannot hold");
-			return -1;
-		}
-	if (e->g41.n > 0 && !(e->g41.v[0] > 0)) {
-		refuse(d, e, "its weights are not above 0");
+	if (rational(e) && e->g41.n != n) {
+		snprintf(msg, sizeof msg, "%zu control points need as many "
+		    "weights (group 41); it has %zu", n, e->g41.n);
+		refuse(d, e, msg);
 		return -1;
 	}
+	for (size_t k = 0; k < e->g41.n; k++)
+		if (!(e->g41.v[k] > 0) || !(e->g41.v[k] < 1e300)) {
+			refuse(d, e, "its weights are not all above 0 (and "
+			    "finite)");
+			return -1;
+		}
 	return 0;
+}
+
+/* ---- rational splines: cubic pieces within the tolerance ------------ */
+
+/* Samples inside each cubic piece at which a rational piece's error is
+ * measured: the error of a Hermite cubic through a smooth curve's ends
+ * and end tangents is a smooth function vanishing to second order at
+ * both ends, so 7 inner samples find its largest value to within a few
+ * per cent; the tolerance is then halved against that. */
+#define RAT_SAMPLES 8
+
+/* The point x and derivative dx (dim numbers each) at t of the rational
+ * Bezier h[0..p] (homogeneous: dim numbers times the weight, then the
+ * weight); work holds (p + 1) (dim + 1). */
+static void
+rat_eval(const double *h, int p, int dim, double t, double *x, double *dx,
+    double *work)
+{
+	int hd = dim + 1;
+	double a[4], da[4];
+
+	memcpy(work, h, (size_t)((p + 1) * hd) * sizeof *work);
+	for (int r = 1; r < p; r++)             /* de Casteljau to 2 left */
+		for (int k = 0; k <= p - r; k++)
+			for (int q = 0; q < hd; q++)
+				work[k * hd + q] += t * (work[(k + 1) * hd + q] -
+				    work[k * hd + q]);
+	for (int q = 0; q < hd; q++) {
+		a[q] = work[q] + t * (work[hd + q] - work[q]);
+		da[q] = p * (work[hd + q] - work[q]);
+	}
+	for (int q = 0; q < dim; q++) {         /* (A / w)' = (A' - C w') / w */
+		x[q] = a[q] / a[dim];
+		dx[q] = (da[q] - x[q] * da[dim]) / a[dim];
+	}
+}
+
+/* The Hermite rows of the rational piece h over [0, 1] cut into k
+ * equal parts, into rows (4 dim each); its largest sampled distance
+ * from the rational curve. */
+static double
+rat_rows(const double *h, int p, int dim, long k, double *rows, double *work)
+{
+	double err = 0, x[3], dx[3], y[3], dy[3];
+
+	for (long j = 0; j < k; j++) {
+		double t0 = (double)j / (double)k, t1 = (double)(j + 1) /
+		    (double)k, hl = t1 - t0, *r = rows + 4 * dim * j;
+
+		rat_eval(h, p, dim, t0, x, dx, work);
+		rat_eval(h, p, dim, t1, y, dy, work);
+		for (int q = 0; q < dim; q++) {
+			r[q] = x[q];
+			r[dim + q] = y[q];
+			r[2 * dim + q] = hl * dx[q];
+			r[3 * dim + q] = hl * dy[q];
+		}
+		for (int i = 1; i < RAT_SAMPLES; i++) {
+			double s = (double)i / RAT_SAMPLES, u = 1 - s;
+			double h0 = u * u * (1 + 2 * s), h1 = s * s * (3 - 2 * s);
+			double g0 = s * u * u, g1 = -s * s * u, c[3];
+
+			rat_eval(h, p, dim, t0 + s * hl, y, dy, work);
+			for (int q = 0; q < dim; q++)
+				c[q] = h0 * r[q] + h1 * r[dim + q] + g0 *
+				    r[2 * dim + q] + g1 * r[3 * dim + q] - y[q];
+			err = fmax(err, vnorm(c, dim));
+		}
+	}
+	return err;
+}
+
+/*
+ * A rational SPLINE (weights 41 that differ): each span's rational
+ * Bezier piece (by knot insertion on the homogeneous points) as cubic
+ * pieces within the tolerance, halved until they are: c->tol, or
+ * LOFT_CADIN_ARC_REL of half the extent of the piece's control points
+ * (of the radius, for a circle's quarter).  ctl: the control points in
+ * millimetres, dim each.
+ */
+static void
+spline_rational(struct dxf *d, struct ent *e, const double *ctl, int dim,
+    int closed)
+{
+	struct loft_writer *w = d->c->w;
+	size_t n = e->p10.n, mark = w->len;
+	const double *t = e->g40.v;
+	int p = (int)e->f71, hd = dim + 1;
+	double *hc, *rows = NULL, b[(MAX_DEGREE + 1) * 4];
+	double work[(MAX_DEGREE + 1) * 4], first[3];
+	long total = 0;
+	size_t last = n - 1;
+
+	while (last > (size_t)p && !(t[last] < t[last + 1]))
+		last--;         /* the last span that is not empty */
+
+	if ((hc = malloc(n * (size_t)hd * sizeof *hc)) == NULL) {
+		d->oom = 1;
+		return;
+	}
+	for (size_t k = 0; k < n; k++) {
+		for (int q = 0; q < dim; q++)
+			hc[k * (size_t)hd + (size_t)q] = ctl[k * (size_t)dim +
+			    (size_t)q] * e->g41.v[k];
+		hc[k * (size_t)hd + (size_t)dim] = e->g41.v[k];
+	}
+	loft_put_type(w, "cubic");
+	loft_put_attr(w, "closed", closed ? "1" : "0");
+	put_where(d, w, e->layer, e->nlayer);
+	loft_end_line(w);
+	for (size_t i = (size_t)p; i < n && !d->oom; i++) {
+		double lo[3], hi[3], ext = 0, tol, err;
+		long k = 1;
+		size_t cap = 0;
+
+		if (!(t[i] < t[i + 1]))
+			continue;
+		span_bezier(t, hc, p, i, hd, b, work);
+		for (int q = 0; q < dim; q++) {
+			lo[q] = hi[q] = b[q] / b[dim];
+			for (int j = 1; j <= p; j++) {
+				lo[q] = fmin(lo[q], b[j * hd + q] / b[j * hd + dim]);
+				hi[q] = fmax(hi[q], b[j * hd + q] / b[j * hd + dim]);
+			}
+			ext = hypot(ext, hi[q] - lo[q]);
+		}
+		tol = d->c->tol > 0 ? d->c->tol : LOFT_CADIN_ARC_REL * ext / 2;
+		for (;;) {
+			if (loft__grow((void **)&rows, &cap, (size_t)k * 4 *
+			    (size_t)dim, sizeof *rows) != 0) {
+				d->oom = 1;
+				break;
+			}
+			err = rat_rows(b, p, dim, k, rows, work);
+			if (err <= tol / 2 || !(err == err) || total + 2 * k >
+			    LOFT_CADIN_ARC_MAX)
+				break;
+			k *= 2;
+		}
+		if (d->oom || !(err <= tol / 2)) {
+			free(rows);
+			free(hc);
+			w->len = mark;
+			w->col = 0;
+			if (!d->oom)
+				refuse(d, e, "its rational pieces need more cubic "
+				    "pieces than the tolerance allows");
+			return;
+		}
+		if (total == 0)
+			memcpy(first, rows, (size_t)dim * sizeof *first);
+		total += k;
+		if (closed && i == last)        /* ends on its start exactly */
+			memcpy(rows + 4 * dim * (k - 1) + dim, first,
+			    (size_t)dim * sizeof *first);
+		for (long j = 0; j < k; j++)
+			loft__echo_row(d->echo, w, rows + 4 * dim * j, 4 * dim);
+		free(rows);
+		rows = NULL;
+	}
+	free(hc);
+	loft_end_record(w);
+	loft__cadin_done(d->c, mark, e->line);
 }
 
 /* A SPLINE by control points: its Bezier pieces, exactly. */
@@ -1057,6 +1238,12 @@ spline_ctl(struct dxf *d, struct ent *e)
 		}
 	cubic = p <= 3;
 	closed = e->f70 & 1 || ends_meet(t, ctl, p, n, dim);
+	if (rational(e)) {      /* closed: flagged, or clamped on one point */
+		spline_rational(d, e, ctl, dim, e->f70 & 1 || (t[0] == t[p] &&
+		    t[n] == t[n + (size_t)p] && vdist(ctl, ctl + (n - 1) *
+		    (size_t)dim, dim) <= ENDS_SAME * vmaxabs(ctl, dim)));
+		return;
+	}
 	d->knots.n = 0;         /* a cubic's joints, for turn points */
 	if (cubic) {
 		loft_put_type(w, "cubic");

@@ -534,24 +534,34 @@ out_is "points closed=0 layer=3 start=1,0 end=0,-1
 5 5
 10 0
 "
-# A rational SPLINE is refused, naming its handle and line
-dxf "$T/rat.dxf" <<'EOF'
-0 SPLINE
-5 BEEF
-71 1
-70 4
-40 0
-40 0
-40 1
-40 1
-41 1
-41 2
-10 0
-20 0
-10 1
-20 0
-EOF
-fails 1 "rat.dxf:15: SPLINE (handle BEEF): its weights differ" "$F $T/rat.dxf"
+# A rational SPLINE: the quarter of the unit circle, degree 2, weights
+# 1, sqrt(2)/2, 1 -- cubic pieces from (1,0) to (0,1) whose points are
+# within the tolerance of radius 1: by default 10^-4 of half the extent
+# of the control points (sqrt 2 / 2 * 10^-4), or -t
+printf '%s\n' '0 SPLINE' '5 BEEF' '8 0' '71 2' '40 0' '40 0' '40 0' '40 1' \
+    '40 1' '40 1' '41 1' '41 0.7071067811865476' '41 1' '10 1' '20 0' \
+    '10 1' '20 1' '10 0' '20 1' | dxf "$T/rat.dxf"
+for t in "" 1e-10; do
+	run "$F ${t:+-t $t} $T/rat.dxf"
+	status 0
+	awk -v tol="${t:-7.0711e-5}" -v what="rational $t" 'NR == 1 { next } NF == 8 {
+		if (NR == 2 && ($1 != 1 || $2 != 0)) bad = "start " $1 " " $2
+		ex = $3; ey = $4; n++
+		for (s = 0.125; s < 1; s += 0.125) {
+			u = 1 - s
+			x = u*u*(1+2*s)*$1 + s*s*(3-2*s)*$3 + s*u*u*$5 - s*s*u*$7
+			y = u*u*(1+2*s)*$2 + s*s*(3-2*s)*$4 + s*u*u*$6 - s*s*u*$8
+			d = sqrt(x*x + y*y) - 1; if (d < 0) d = -d; if (d > m) m = d
+		} }
+	END { if (ex != 0 || ey != 1) bad = "end " ex " " ey
+		if (m > tol) bad = sprintf("%g off the circle", m)
+		if (bad != "") { printf "%s: %s\n", what, bad; exit 1 } }' "$T/out" >"$T/near" &&
+	    ok || no "$(cat "$T/near")"
+done
+# weights of 0 are refused, with the handle and line
+printf '%s\n' '0 SPLINE' '5 BEEF' '71 1' '40 0' '40 0' '40 1' '40 1' \
+    '41 1' '41 0' '10 0' '20 0' '10 1' '20 0' | dxf "$T/rat0.dxf"
+fails 1 "rat0.dxf:15: SPLINE (handle BEEF): its weights are not all above 0" "$F $T/rat0.dxf"
 
 # An ASTM D6673 pattern: boundary on layer 1, turn points on layer 2 at
 # its vertices 2 and 4, one POINT on layer 2 at no vertex (kept), and a

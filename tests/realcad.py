@@ -115,6 +115,21 @@ def gen(d):
     msp.add_ellipse((1, 1, 1), major_axis=(0, 5, 1), ratio=0.7,
                     start_param=1, end_param=5,
                     dxfattribs={"extrusion": (1, 0, 0)})
+    # rational splines: a circle's arc and a whole ellipse, exact NURBS
+    from ezdxf.math import (rational_bspline_from_arc,
+                            rational_bspline_from_ellipse,
+                            ConstructionEllipse)
+    for bs in (rational_bspline_from_arc(center=(5, 5), radius=3,
+                                         start_angle=30, end_angle=300),
+               rational_bspline_from_ellipse(ConstructionEllipse(
+                   center=(1, 2, 3), major_axis=(4, 1, 0), ratio=0.5,
+                   extrusion=(0, 0.6, 0.8)))):
+        msp.add_rational_spline(bs.control_points, bs.weights(),
+                                degree=bs.degree, knots=bs.knots())
+    outer.add_rational_spline(*(lambda b: (b.control_points, b.weights(),
+                                           b.degree, b.knots()))(
+        rational_bspline_from_arc(center=(0, 0), radius=1, start_angle=0,
+                                  end_angle=90)))
     doc.layers.add("OLD").off()
     doc.layers.add("ICE").freeze()
     msp.add_line((0, 0), (9, 9), dxfattribs={"layer": "OLD"})
@@ -279,7 +294,45 @@ def cmp_vertices(ck, what, verts, rec, mm):
         ck.points += 1
 
 
+def seg_dist(p, a, b):
+    ab = [b[k] - a[k] for k in range(3)]
+    ap = [p[k] - a[k] for k in range(3)]
+    L = sum(x * x for x in ab)
+    t = 0 if L == 0 else max(0, min(1, sum(ap[k] * ab[k] for k in range(3)) / L))
+    return dist(p, [a[k] + t * ab[k] for k in range(3)])
+
+
+def cmp_rational(ck, what, e, rec, mm):
+    """fromcad's cubic pieces against ezdxf's own rational evaluation,
+    sampled densely enough (4000 chords) that the chords' own error is
+    1000 times below the tolerance of 10^-4 of half the extent."""
+    bs = e.construction_tool()
+    pts = [[x * mm for x in pt3(q)] for q in bs.approximate(4000)]
+    ext = max(dist(p, q) for p in pts[::50] for q in pts[::50])
+    tol = ARC_REL * ext / 2 + ROUND * ck.size
+    rows = rec[1]
+    dim = len(rows[0]) // 4
+    ck.near(what + " start", rows[0][:dim], pts[0])
+    ck.near(what + " end", rows[-1][dim:2 * dim], pts[-1])
+    j = 0
+    for r in rows:
+        for t in (0.25, 0.5, 0.75):
+            p = pt3(bez(r, dim, t))
+            best = min(range(len(pts)), key=lambda i: dist(p, pts[i]))
+            dd = min(seg_dist(p, pts[i], pts[i + 1])
+                     for i in range(max(0, best - 2), min(len(pts) - 1,
+                                                          best + 2)))
+            ck.points += 1
+            ck.dev = max(ck.dev, dd / tol)
+            if dd > tol:
+                sys.exit("%s: a point %.3g off the rational curve "
+                         "(tolerance %.3g)" % (what, dd, tol))
+
+
 def cmp_spline(ck, what, e, rec, mm):
+    w = list(e.weights)
+    if w and max(w) - min(w) > 1e-12 * max(w):
+        return cmp_rational(ck, what, e, rec, mm)
     if rec[0][0] == "points" and e.dxf.n_control_points == 0:
         return cmp_vertices(ck, what, e.fit_points, rec, mm)
     bs = e.construction_tool()
