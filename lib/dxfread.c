@@ -148,6 +148,7 @@ struct dxf {
 	double xf[12], stretch; /* their transform (see struct frame) */
 	struct name ins_layer, ins_block;       /* the outermost's */
 	long grp, budget;
+	int said_deep;          /* the depth was said */
 	struct loft__passed passed, hidden;
 	const struct xattrs *xa;        /* the entity's, for put_where */
 	int turns;              /* the document may hold turn points */
@@ -1732,9 +1733,10 @@ do_insert(struct dxf *d, struct ent *e)
 		    "the BLOCKS section");
 		return;
 	}
-	if (d->nins >= INSERT_DEPTH) {
-		refuse(d, e, "blocks nested deeper than 16 "
-		    "INSERTs (does a block insert itself?): not read");
+	if (d->nins >= INSERT_DEPTH) {  /* said once a document */
+		if (!d->said_deep++)
+			refuse(d, e, "blocks nested deeper than 16 INSERTs "
+			    "(does a block insert itself?): not read");
 		return;
 	}
 	if (!(e->ext[0] == 0 && e->ext[1] == 0 && e->ext[2] > 0) &&

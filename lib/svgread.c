@@ -65,6 +65,7 @@ struct svg {
 	int after;              /* elements after the root closed */
 	size_t base;            /* open elements below what a use draws */
 	int nuse, target;       /* uses being drawn; the next is one's */
+	int said_deep;          /* the depth was said */
 	long budget;            /* elements uses may still draw */
 	struct idref *ids;      /* every id, sorted (once a use asks) */
 	size_t nids, idcap;
@@ -1276,14 +1277,16 @@ do_use(struct svg *s, const struct elem *el, const double *m)
 		    "read");
 		return;
 	}
-	if (s->nuse >= USE_DEPTH) {
-		say_el(s, el, el->at, "uses nested deeper than 16 "
-		    "(does it use itself?): not read");
+	if (s->nuse >= USE_DEPTH) {     /* said once a document */
+		if (!s->said_deep++)
+			say_el(s, el, el->at, "uses nested deeper than 16 "
+			    "(does it use itself?): not read");
 		return;
 	}
 	if (s->budget-- <= 0) {
-		say_el(s, el, el->at, "uses draw more than 4,000,000 "
-		    "elements: not read");
+		if (s->budget == -1)
+			say_el(s, el, el->at, "uses draw more than 4,000,000 "
+			    "elements: the rest is not read");
 		return;
 	}
 	if ((r = id_find(s, h->v + 1, h->vn - 1)) == NULL) {

@@ -986,6 +986,26 @@ run "$F $T/deg63.dxf"
 status 0
 [ "$(grep -c '^bezier' "$T/out")" = $((4000 - 63)) ] && ok || no "deg63: $(grep -c '^bezier' "$T/out") pieces"
 
+# A block that inserts itself, and an element that uses itself: drawn
+# 16 deep, with one message each
+printf '%s\n' 0 SECTION 2 BLOCKS 0 BLOCK 2 A 0 LINE 10 0 20 0 11 1 21 0 \
+    0 INSERT 2 A 10 1 20 0 0 ENDBLK 0 ENDSEC 0 SECTION 2 ENTITIES \
+    0 INSERT 2 A 0 ENDSEC 0 EOF >"$T/self.dxf"
+run "$F $T/self.dxf"
+status 1
+says "self.dxf:19: INSERT: blocks nested deeper than 16 INSERTs (does a block insert itself?): not read"
+[ "$(wc -l <"$T/err")" = 1 ] && [ "$(grep -c '^points' "$T/out")" = 16 ] && ok ||
+    no "self.dxf: $(grep -c '^points' "$T/out") records; $(head -3 "$T/err")"
+printf '<svg><g id="a"><use href="#a" x="1"/><path d="M0 0L1 1"/></g></svg>' >"$T/self.svg"
+run "$F $T/self.svg"
+status 1
+says "use: uses nested deeper than 16 (does it use itself?): not read"
+[ "$(wc -l <"$T/err")" = 1 ] && [ "$(grep -c '^points' "$T/out")" = 17 ] && ok ||
+    no "self.svg: $(grep -c '^points' "$T/out") records; $(head -3 "$T/err")"
+# An INSERT of a block that is not there
+printf '%s\n' '0 INSERT' '2 NONE' '10 0' '20 0' | dxf "$T/none.dxf"
+fails 1 "INSERT: no block of its name (group 2) in the BLOCKS section" "$F $T/none.dxf"
+
 # ---- tocad's attributes come back (XDATA of application LOFT) ---------
 # size=, offset=, name= and id= of a plane curve (LWPOLYLINE), a space
 # curve (POLYLINE) and an exact one (SPLINE, tocad -s) come back on
