@@ -17,7 +17,7 @@ struct opts {
 };
 
 static const char usage_text[] =
-    "usage: fromcad [-HS] [-f dxf|svg|csv] [-t tolerance] [-p digits] "
+    "usage: fromcad [-FHS] [-f dxf|svg|csv] [-t tolerance] [-p digits] "
     "[file ...]\n";
 
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
@@ -132,8 +132,9 @@ main(int argc, char *argv[])
 
 	o.run = &run;
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "HSf:t:p:h")) != -1) {
+	while ((c = getopt(argc, argv, "FHSf:t:p:h")) != -1) {
 		switch (c) {
+		case 'F': cad.fills = 1; break;
 		case 'H': cad.hidden = 1; break;
 		case 'S': cad.strict = 1; break;
 		case 'f':

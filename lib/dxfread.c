@@ -149,6 +149,8 @@ struct dxf {
 	struct name ins_layer, ins_block;       /* the outermost's */
 	long grp, budget;
 	int said_deep;          /* the depth was said */
+	struct pair *hp;        /* a HATCH's groups (-F), in order */
+	size_t nhp, hpcap;
 	struct loft__passed passed, hidden;
 	const struct xattrs *xa;        /* the entity's, for put_where */
 	int turns;              /* the document may hold turn points */
@@ -299,8 +301,9 @@ pair_int(struct ent *e, const struct pair *pr, long *v)
 }
 
 static void
-ent_start(struct ent *e, const struct pair *pr)
+ent_start(struct dxf *d, struct ent *e, const struct pair *pr)
 {
+	d->nhp = 0;
 	loft__cadin_quote(e->name, sizeof e->name, pr->v, pr->n);
 	e->line = pr->line;
 	e->handle = e->layer = NULL;
@@ -381,6 +384,17 @@ xattr_add(struct ent *e, const struct pair *pr)
 static void
 ent_group(struct dxf *d, struct ent *e, const struct pair *pr)
 {
+	if (d->c->fills && strcmp(e->name, "HATCH") == 0) {
+		if (pr->code == 5 || pr->code == 8)
+			;               /* read below too */
+		else if (loft__grow((void **)&d->hp, &d->hpcap, d->nhp + 1,
+		    sizeof *d->hp) != 0)
+			d->oom = 1;
+		else {
+			d->hp[d->nhp++] = *pr;
+			return;
+		}
+	}
 	double x[3] = { 0, 0, 0 };
 	int poly = strcmp(e->name, "LWPOLYLINE") == 0 ||
 	    strcmp(e->name, "VERTEX") == 0;
@@ -1211,6 +1225,43 @@ spline_rational(struct dxf *d, struct ent *e, const double *ctl, int dim,
 	loft__cadin_done(d->c, mark, e->line);
 }
 
+/* The Bezier piece b[0..p] (dim each) of a SPLINE, number k: a row of
+ * the cubic record being written (degree 3 or less), or a bezier
+ * record of its own. */
+static void
+put_piece(struct dxf *d, const struct ent *e, const double *b, int p,
+    int dim, size_t k)
+{
+	struct loft_writer *w = d->c->w;
+	double row[12];
+	char num[24];
+
+	if (p <= 3) {
+		/* degree 1 and 2 raised to 3 exactly: the ends stay,
+		 * P'_A = p (b1 - b0), P'_B = p (b_p - b_{p-1}) */
+		if (p == 3)
+			loft__bezier_hermite(b, dim, row);
+		else
+			for (int q = 0; q < dim; q++) {
+				row[q] = b[q];
+				row[dim + q] = b[p * dim + q];
+				row[2 * dim + q] = p * (b[dim + q] - b[q]);
+				row[3 * dim + q] = p * (b[p * dim + q] -
+				    b[(p - 1) * dim + q]);
+			}
+		loft__echo_row(d->echo, w, row, 4 * dim);
+		return;
+	}
+	snprintf(num, sizeof num, "%zu", k);
+	loft_put_type(w, "bezier");
+	put_where(d, w, e->layer, e->nlayer);
+	loft_put_attr(w, "piece", num);
+	loft_end_line(w);
+	for (int j = 0; j <= p; j++)
+		loft__echo_row(d->echo, w, b + j * dim, dim);
+	loft_end_record(w);
+}
+
 /* A SPLINE by control points: its Bezier pieces, exactly. */
 static void
 spline_ctl(struct dxf *d, struct ent *e)
@@ -1221,7 +1272,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 	int p = (int)e->f71, dim, cubic, closed;
 	size_t hdr = mark;
 	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
-	double row[12], *ctl;
+	double *ctl;
 	struct frame f;
 
 	if (spline_check(d, e) != 0)
@@ -1263,33 +1314,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 			w->col = 0;
 			return;
 		}
-		if (cubic) {
-			/* degree 1 and 2 raised to 3 exactly: the ends stay,
-			 * P'_A = p (b1 - b0), P'_B = p (b_p - b_{p-1}) */
-			if (p == 3)
-				loft__bezier_hermite(b, dim, row);
-			else
-				for (int q = 0; q < dim; q++) {
-					row[q] = b[q];
-					row[dim + q] = b[p * dim + q];
-					row[2 * dim + q] = p * (b[dim + q] -
-					    b[q]);
-					row[3 * dim + q] = p * (b[p * dim + q] -
-					    b[(p - 1) * dim + q]);
-				}
-			loft__echo_row(d->echo, w, row, 4 * dim);
-		} else {
-			char num[24];
-
-			snprintf(num, sizeof num, "%zu", npieces);
-			loft_put_type(w, "bezier");
-			put_where(d, w, e->layer, e->nlayer);
-			loft_put_attr(w, "piece", num);
-			loft_end_line(w);
-			for (int j = 0; j <= p; j++)
-				loft__echo_row(d->echo, w, b + j * dim, dim);
-			loft_end_record(w);
-		}
+		put_piece(d, e, b, p, dim, npieces);
 	}
 	if (npieces == 0) {
 		w->len = mark;
@@ -1782,6 +1807,188 @@ do_insert(struct dxf *d, struct ent *e)
 	d->ins_layer = lay;
 }
 
+/* ---- HATCH boundaries (fromcad -F) ---------------------------------- */
+
+/* An edge whose end is this near the end of the edge before (relative
+ * to the coordinates' size) meets it there: it runs backwards, and is
+ * turned round.  An edge meeting at neither end is taken as written. */
+#define HATCH_MEET 1e-9
+
+/* The next group of the HATCH's groups h at *i: its number when it has
+ * the code, else -1 (the boundary is not as DXF writes it). */
+static int
+hnum(const struct dxf *d, size_t *i, int code, double *x)
+{
+	const struct pair *h = d->hp;
+
+	if (*i >= d->nhp || h[*i].code != code ||
+	    loft_parse_num(h[*i].v, h[*i].n, x, NULL) != 0)
+		return -1;
+	(*i)++;
+	return 0;
+}
+
+/* A whole-number group, 0 to max, as hnum. */
+static int
+hint(const struct dxf *d, size_t *i, int code, long max, long *v)
+{
+	double x;
+
+	if (hnum(d, i, code, &x) != 0 || x != floor(x) || x < 0 || x > max)
+		return -1;
+	*v = (long)x;
+	return 0;
+}
+
+/* A polyline boundary path (after its 92): vertices with bulges, into
+ * d->verts (x, y, bulge); -1 when malformed. */
+static int
+hatch_poly(struct dxf *d, size_t *i)
+{
+	long bulge, closed, n;
+
+	if (hint(d, i, 72, 1, &bulge) || hint(d, i, 73, 1, &closed) ||
+	    hint(d, i, 93, 10000000, &n))
+		return -1;
+	for (long k = 0; k < n; k++) {
+		double v[3] = { 0, 0, 0 };
+
+		if (hnum(d, i, 10, &v[0]) || hnum(d, i, 20, &v[1]) ||
+		    (bulge && hnum(d, i, 42, &v[2])))
+			return -1;
+		if (loft__pts_add(&d->work, v) != 0) {
+			d->oom = 1;
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* An edge boundary path (after its 92): lines and circular arcs as
+ * vertices with bulges (an arc's bulge is tan of a quarter of its
+ * sweep, negative clockwise), each edge turned where it runs from the
+ * end of the one before to its own start (writers do not orient them);
+ * ellipse and spline edges are not read (-2). */
+static int
+hatch_edges(struct dxf *d, size_t *i)
+{
+	long n, type, ccw;
+	double prev[2] = { 0, 0 }, r = 0;
+
+	if (hint(d, i, 93, 10000000, &n))
+		return -1;
+	for (long k = 0; k < n; k++) {
+		double a[3] = { 0, 0, 0 }, b[2], c[2], a0, a1, sw, s0, s1;
+
+		if (hint(d, i, 72, 4, &type))
+			return -1;
+		if (type == 1) {
+			if (hnum(d, i, 10, &a[0]) || hnum(d, i, 20, &a[1]) ||
+			    hnum(d, i, 11, &b[0]) || hnum(d, i, 21, &b[1]))
+				return -1;
+		} else if (type == 2) {
+			if (hnum(d, i, 10, &c[0]) || hnum(d, i, 20, &c[1]) ||
+			    hnum(d, i, 40, &r) || hnum(d, i, 50, &a0) ||
+			    hnum(d, i, 51, &a1) || hint(d, i, 73, 1, &ccw))
+				return -1;
+			/* a clockwise arc has its angles mirrored in the
+			 * x axis, and runs clockwise from -50 to -51 */
+			for (sw = a1 - a0; sw <= 0; sw += 360)
+				;
+			s0 = (ccw ? a0 : -a0) * M_PI / 180;
+			s1 = (ccw ? a1 : -a1) * M_PI / 180;
+			a[0] = c[0] + r * cos(s0);
+			a[1] = c[1] + r * sin(s0);
+			b[0] = c[0] + r * cos(s1);
+			b[1] = c[1] + r * sin(s1);
+			a[2] = (ccw ? 1 : -1) * tan(fmin(sw, 360) * M_PI / 720);
+		} else {
+			return -2;
+		}
+		if (k > 0 && hypot(b[0] - prev[0], b[1] - prev[1]) <
+		    hypot(a[0] - prev[0], a[1] - prev[1]) && hypot(b[0] -
+		    prev[0], b[1] - prev[1]) <= HATCH_MEET * (fabs(prev[0]) +
+		    fabs(prev[1]) + r)) {
+			double t0 = a[0], t1 = a[1];    /* turned round */
+
+			a[0] = b[0];
+			a[1] = b[1];
+			b[0] = t0;
+			b[1] = t1;
+			a[2] = -a[2];
+		}
+		prev[0] = b[0];
+		prev[1] = b[1];
+		if (loft__pts_add(&d->work, a) != 0) {
+			d->oom = 1;
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* The boundary paths of a HATCH (its groups in d->hp): each a closed
+ * knot record, arcs as chords within the tolerance. */
+static void
+do_hatch(struct dxf *d, struct ent *e)
+{
+	size_t i = 0;
+	long np, flags, ns;
+	double elev[3] = { 0, 0, 0 }, ext[3] = { 0, 0, 1 };
+	struct frame f;
+	char msg[160];
+
+	while (i < d->nhp && d->hp[i].code != 91) {     /* the head */
+		const struct pair *h = &d->hp[i++];
+		double x;
+
+		if (loft_parse_num(h->v, h->n, &x, NULL) != 0)
+			continue;
+		if (h->code == 30)
+			elev[2] = x;
+		else if (h->code >= 210 && h->code <= 230 && h->code % 10 == 0)
+			ext[h->code / 10 - 21] = x;
+	}
+	if (hint(d, &i, 91, 1000000, &np) != 0 || frame_of(d, ext, &f) != 0) {
+		refuse(d, e, "its boundary paths (group 91) are not as DXF "
+		    "writes them, or its extrusion is zero");
+		return;
+	}
+	for (long k = 0; k < np && !d->oom; k++) {
+		int r = -1;
+
+		d->work.n = 0;
+		if (hint(d, &i, 92, 1L << 30, &flags) == 0)
+			r = flags & 2 ? hatch_poly(d, &i) : hatch_edges(d, &i);
+		if (r == 0 && hint(d, &i, 97, 10000000, &ns) == 0)
+			i += (size_t)ns;        /* its source objects, 330 */
+		else if (r == 0)
+			r = -1;
+		if (r != 0) {
+			if (!d->oom)
+				refuse(d, e, r == -2 ? "a boundary path of "
+				    "ellipse or spline edges is not read" :
+				    "its boundary paths are not as DXF writes "
+				    "them");
+			return;
+		}
+		d->seg.n = 0;           /* the bulges, apart */
+		for (size_t q = 0; q < d->work.n; q++)
+			if (nums_add(&d->seg, d->work.p[3 * q + 2]) != 0) {
+				d->oom = 1;
+				return;
+			}
+		/* z from the elevation: the third numbers are not read */
+		if (polyline_knots(d, &f, d->work.p, d->seg.v, d->work.n, 1, 0,
+		    elev[2], msg, sizeof msg) != 0) {
+			if (!d->oom)
+				refuse(d, e, msg);
+			return;
+		}
+		put_knots(d, e->layer, e->nlayer, e->line, 1, NULL, NULL);
+	}
+}
+
 /* ---- entities, by kind ------------------------------------------------ */
 
 /* Entities that annotate a drawing or fill an area: passed over and
@@ -1858,6 +2065,10 @@ ent_end(struct dxf *d, struct ent *e)
 			poly_start(d, e);
 			d->pl.refused = 1;      /* its vertices too */
 		}
+		return;
+	}
+	if (d->c->fills && strcmp(n, "HATCH") == 0) {
+		do_hatch(d, e);
 		return;
 	}
 	for (k = 0; annotation[k] != NULL; k++)
@@ -2168,6 +2379,7 @@ dxf_free(struct dxf *d)
 	free(d->echo);
 	free(d->off);
 	free(d->blk);
+	free(d->hp);
 }
 
 /* Skip to the next line that is a 0 group code; 1 if there is one. */
@@ -2285,7 +2497,7 @@ on_zero(struct dxf *d, const struct pair *pr)
 		d->eof = loft__word_is(pr->v, pr->n, "EOF");
 	} else if (d->sec == S_ENTITIES || d->sec == S_REPLAY ||
 	    (d->sec == S_BLOCKS && loft__word_is(pr->v, pr->n, "BLOCK"))) {
-		ent_start(&d->e, pr);
+		ent_start(d, &d->e, pr);
 		d->in_ent = 1;
 	}
 }

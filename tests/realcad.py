@@ -135,6 +135,17 @@ def gen(d):
     msp.add_line((0, 0), (9, 9), dxfattribs={"layer": "OLD"})
     msp.add_line((0, 0), (9, -9), dxfattribs={"layer": "ICE"})
     msp.add_text("label", dxfattribs={"layer": "15"})
+    # a HATCH (fromcad -F): a polyline path with a bulge, and an edge
+    # path of lines and arcs turning both ways
+    h = msp.add_hatch(dxfattribs={"elevation": (0, 0, 2)})
+    h.paths.add_polyline_path([(0, 0, 0), (10, 0, 0.4), (10, 5, 0),
+                               (0, 5, 0)], is_closed=True)
+    e = h.paths.add_edge_path()
+    e.add_line((20, 0), (30, 0))
+    e.add_arc((30, 5), 5, -90, 90, ccw=True)
+    e.add_line((30, 10), (25, 10))
+    e.add_arc((22.5, 10), 2.5, 0, 180, ccw=False)
+    e.add_line((20, 10), (20, 0))
     doc.saveas(d + "/blocks.dxf")
 
     # ASTM D6673 style: one block per size, the boundary on layer 1, its
@@ -183,8 +194,9 @@ def gen_svg(d):
 """)
 
 
-def dxf_expected(doc):
-    """ezdxf's entities of the model space, blocks exploded by ezdxf."""
+def dxf_expected(doc, fills=False):
+    """ezdxf's entities of the model space, blocks exploded by ezdxf;
+    with fills, a HATCH's boundary paths too (as ("PATH", hatch, path))."""
     def off(e):
         name = e.dxf.get("layer", "0")
         if not doc.layers.has_entry(name):
@@ -203,6 +215,9 @@ def dxf_expected(doc):
                         yield from walk(v.virtual_entities(), depth + 1)
                 else:
                     yield from walk(e.virtual_entities(), depth + 1)
+            elif t == "HATCH" and fills:
+                for p in e.paths:
+                    yield ("PATH", e, p)
             elif t in ("ARC", "CIRCLE") and not e.dxf.radius > 0:
                 continue        # draws nothing: passed over
             elif t in ("LINE", "POINT", "ARC", "CIRCLE", "ELLIPSE",
@@ -354,7 +369,43 @@ def cmp_spline(ck, what, e, rec, mm):
         sys.exit("%s: a %s record" % (what, rec[0][0]))
 
 
-def cmp_dxf(path, loft):
+def cmp_path(ck, what, h, p, rec, mm):
+    """A HATCH path: its vertices, or its edges' starts, knots in order;
+    an arc edge's knots on its circle."""
+    ocs = h.ocs()
+    z = h.dxf.elevation[2]
+    if hasattr(p, "vertices"):
+        cmp_vertices(ck, what, [ocs.to_wcs((v[0], v[1], z))
+                                for v in p.vertices], rec, mm)
+        return
+    starts = []
+    for g in p.edges:
+        if g.EDGE_TYPE == "LineEdge":
+            starts.append(g.start)
+        else:
+            # ezdxf's clockwise arc: its angles mirrored, end first
+            a = g.start_angle if g.ccw else -g.end_angle
+            starts.append((g.center[0] + g.radius * math.cos(math.radians(a)),
+                           g.center[1] + g.radius * math.sin(math.radians(a))))
+    cmp_vertices(ck, what, [ocs.to_wcs((v[0], v[1], z)) for v in starts],
+                 rec, mm)
+    # every knot on ezdxf's own boundary, whose arcs are cubic Beziers
+    # (2.7e-4 of the radius off a quarter circle, so 3e-4 of the path's
+    # size is allowed): an arc drawn the other way round fails here
+    from ezdxf import path as ep
+    k = list(h.paths).index(p)
+    line = [[x * mm for x in pt3(q)] for q in
+            list(ep.from_hatch(h))[k].flattening(1e-7)]
+    size = max(dist(a, b) for a in line[::8] for b in line[::8])
+    for q in rec[1]:
+        dd = min(seg_dist(pt3(q), line[i], line[i + 1])
+                 for i in range(len(line) - 1))
+        ck.points += 1
+        if dd > 3e-4 * size:
+            sys.exit("%s: knot %r is %.3g off the boundary" % (what, q, dd))
+
+
+def cmp_dxf(path, loft, fills=False):
     import ezdxf
     from ezdxf import units
     try:
@@ -363,7 +414,7 @@ def cmp_dxf(path, loft):
         raise Unreadable(str(e))
     u = doc.header.get("$INSUNITS", 0)
     mm = units.conversion_factor(u, units.MM) if u else 1.0
-    exp = dxf_expected(doc)
+    exp = dxf_expected(doc, fills)
     recs = records(loft)
     ext = 0.0
     for r in recs:
@@ -372,8 +423,12 @@ def cmp_dxf(path, loft):
     ck = Check(max(ext, 1e-300))
     if len(exp) != len(recs):
         sys.exit("%d records, want %d (ezdxf: %s)" % (
-            len(recs), len(exp), ", ".join(e.dxftype() for e in exp[:8])))
+            len(recs), len(exp), ", ".join(str(e) for e in exp[:8])))
     for i, (e, rec) in enumerate(zip(exp, recs)):
+        if isinstance(e, tuple):
+            cmp_path(ck, "record %d (HATCH path)" % (i + 1), e[1], e[2],
+                     rec, mm)
+            continue
         t = e.dxftype()
         what = "record %d (%s)" % (i + 1, t)
         if t == "LINE":
@@ -557,7 +612,10 @@ def batch(kind, listfile):
     for line in open(listfile):
         doc, loft = line.rstrip("\n").split("\t")
         try:
-            n, ck = (cmp_dxf if kind == "dxf" else cmp_svg)(doc, loft)
+            if kind == "svg":
+                n, ck = cmp_svg(doc, loft)
+            else:
+                n, ck = cmp_dxf(doc, loft, kind == "dxf-F")
         except SystemExit as e:
             print("FAIL %s: %s" % (doc, e))
             bad += 1
