@@ -66,6 +66,7 @@ struct svg {
 	size_t base;            /* open elements below what a use draws */
 	int nuse, target;       /* uses being drawn; the next is one's */
 	int said_deep;          /* the depth was said */
+	double use_w, use_h;    /* the box of the use drawn (0: none) */
 	long budget;            /* elements uses may still draw */
 	struct idref *ids;      /* every id, sorted (once a use asks) */
 	size_t nids, idcap;
@@ -272,6 +273,22 @@ num_attr(struct svg *s, const struct elem *el, const char *key, double *x)
 		return -1;
 	}
 	return 0;
+}
+
+/* An attribute that is one number and nothing else, or 0. */
+static double
+plain_num(const struct attr *a)
+{
+	const char *p;
+	double x;
+
+	if (a == NULL)
+		return 0;
+	p = a->v;
+	if (svg_num(&p, a->v + a->vn, &x) != 0 || skip_sep(p, a->v + a->vn) !=
+	    a->v + a->vn)
+		return 0;
+	return x;
 }
 
 /* A length of the root svg in millimetres, or 0 when absent or in a
@@ -1294,6 +1311,10 @@ do_use(struct svg *s, const struct elem *el, const double *m)
 			say_el(s, el, h->v, "no element of that id: not read");
 		return;
 	}
+	/* a symbol's box; none (its own units) where they are absent or
+	 * relative, as width="100%" */
+	s->use_w = plain_num(attr_of(el, "width"));
+	s->use_h = plain_num(attr_of(el, "height"));
 	lv = s->st[s->depth - 1];
 	t[4] = x;
 	t[5] = y;
@@ -1403,12 +1424,17 @@ viewport(struct svg *s, const struct elem *el, double *t)
 
 	t[0] = t[3] = 1;
 	t[1] = t[2] = 0;
-	if (num_attr(s, el, "x", &x) < 0 || num_attr(s, el, "y", &y) < 0)
+	if (name_is(el, "symbol")) {    /* the use's box, at its x, y */
 		x = y = 0;
+		w = s->use_w;
+		h = s->use_h;
+	} else if (num_attr(s, el, "x", &x) < 0 || num_attr(s, el, "y", &y) <
+	    0 || num_attr(s, el, "width", &w) != 0 || num_attr(s, el,
+	    "height", &h) != 0)
+		x = y = w = h = 0;
 	t[4] = x;
 	t[5] = y;
-	if (vb == NULL || num_attr(s, el, "width", &w) != 0 ||
-	    num_attr(s, el, "height", &h) != 0 || !(w > 0) || !(h > 0))
+	if (vb == NULL || !(w > 0) || !(h > 0))
 		return;
 	for (p = vb->v; n < 4 && svg_num(&p, vb->v + vb->vn, &v[n]) == 0; n++)
 		;
@@ -1487,7 +1513,7 @@ level_of(struct svg *s, const struct elem *el, const struct level *up,
 	if (transform(s, el, t) != 0)
 		return -1;
 	mat_mul(up->m, t, lv->m);
-	if (name_is(el, "svg")) {
+	if (name_is(el, "svg") || name_is(el, "symbol")) {
 		viewport(s, el, t);
 		mat_mul(lv->m, t, lv->m);
 	}

@@ -1006,6 +1006,18 @@ says "use: uses nested deeper than 16 (does it use itself?): not read"
 printf '%s\n' '0 INSERT' '2 NONE' '10 0' '20 0' | dxf "$T/none.dxf"
 fails 1 "INSERT: no block of its name (group 2) in the BLOCKS section" "$F $T/none.dxf"
 
+# A symbol's viewBox (0 0 2 2) fitted to the use's box, x 10 y 10, 20
+# by 10: scale 5 (the smaller), centred across: (0,0) at (15,10) and
+# (2,2) at (25,20) user units, 25.4/96 mm each, y turned up; a use of
+# width 100% keeps the symbol's own units, at its x and y (3, 0).
+printf '<svg><defs><symbol id="s" viewBox="0 0 2 2"><path d="M0 0L2 2"/></symbol></defs><use href="#s" x="10" y="10" width="20" height="10"/><use href="#s" x="96" width="100%%" height="100%%"/></svg>' >"$T/sym.svg"
+printf '%s\n' "points closed=0" "3.96875 -2.6458333333333335" \
+    "6.614583333333334 -5.291666666666667" "" "points closed=0" "25.4 0" \
+    "25.929166666666667 -0.5291666666666667" "" >"$T/sym.want"
+run "$F $T/sym.svg"
+status 0
+near "$T/sym.want" 1e-15
+
 # ---- tocad's attributes come back (XDATA of application LOFT) ---------
 # size=, offset=, name= and id= of a plane curve (LWPOLYLINE), a space
 # curve (POLYLINE) and an exact one (SPLINE, tocad -s) come back on
