@@ -1032,15 +1032,23 @@ do_ellipse(struct svg *s, const struct elem *el, const double *m, int circle)
 {
 	double c[2], rx, ry;
 	long n;
+	int hx, hy;
 
 	if (num_attr(s, el, "cx", &c[0]) < 0 || num_attr(s, el, "cy", &c[1]) <
 	    0)
 		return;
 	if (circle ? num_attr(s, el, "r", &rx) < 0 :
-	    num_attr(s, el, "rx", &rx) < 0 || num_attr(s, el, "ry", &ry) < 0)
+	    (hx = num_attr(s, el, "rx", &rx)) < 0 ||
+	    (hy = num_attr(s, el, "ry", &ry)) < 0)
 		return;
 	if (circle)
 		ry = rx;
+	else if (hx == 1 && hy == 1) {  /* r, as Inkscape writes some */
+		if (num_attr(s, el, "r", &rx) < 0)
+			return;
+		ry = rx;
+	} else if (hx == 1 || hy == 1)  /* SVG 2's auto: the other one */
+		*(hx == 1 ? &rx : &ry) = hx == 1 ? ry : rx;
 	if (!(rx > 0) || !(ry > 0))
 		return;         /* not drawn */
 	if ((n = arc_pieces(s, m, rx, ry, 2 * M_PI)) < 0) {

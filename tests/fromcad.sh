@@ -1018,6 +1018,14 @@ run "$F $T/sym.svg"
 status 0
 near "$T/sym.want" 1e-15
 
+# An ellipse with only rx (SVG 2's auto ry), or with r (as Inkscape
+# writes some): the circle of that radius, as a circle element gives
+printf '<svg><circle r="96"/><ellipse rx="96"/><ellipse r="96"/></svg>' >"$T/auto.svg"
+run "$F $T/auto.svg"
+status 0
+awk 'BEGIN { RS = "" } { sub(/^[^\n]*\n/, ""); r[NR] = $0 } END { exit !(NR == 3 && r[1] == r[2] && r[2] == r[3] && r[1] ~ /^25.4 0 /) }' "$T/out" &&
+    ok || no "auto.svg: $(head -3 "$T/out")"
+
 # ---- tocad's attributes come back (XDATA of application LOFT) ---------
 # size=, offset=, name= and id= of a plane curve (LWPOLYLINE), a space
 # curve (POLYLINE) and an exact one (SPLINE, tocad -s) come back on
