@@ -17,7 +17,7 @@ struct opts {
 };
 
 static const char usage_text[] =
-    "usage: fromcad [-f dxf|svg|csv|step|iges] [-t tolerance] [-p digits] "
+    "usage: fromcad [-FHS] [-f dxf|svg|csv|step|iges] [-t tolerance] [-p digits] "
     "[file ...]\n";
 
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
@@ -32,6 +32,16 @@ complain(void *ctx, long line, const char *msg)
 	else
 		fprintf(o->run->msg, "fromcad: %s: %s\n", o->file, msg);
 	o->run->status = 1;
+}
+
+/* A reader's note of what it passed over: said, not an error. */
+static void
+note(void *ctx, long line, const char *msg)
+{
+	const struct opts *o = ctx;
+
+	(void)line;
+	fprintf(o->run->msg, "fromcad: %s: %s\n", o->file, msg);
 }
 
 /* All of fp into *buf (malloc'd); 0, or an errno value.  A file's own
@@ -115,15 +125,18 @@ main(int argc, char *argv[])
 	struct opts o = { -1, "", NULL };
 	struct loft_run run = { .prog = "fromcad", .out = stdout, .msg = stderr,
 	    .ctx = &o };
-	struct loft_cadin cad = { 0, &run.w, complain, &o, 0 };
+	struct loft_cadin cad = { 0, &run.w, complain, &o, 0, 0, 0, 0, note };
 	struct loft_error err;
 	char *stdin_only[] = { "-" };
 	int c;
 
 	o.run = &run;
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "f:t:p:h")) != -1) {
+	while ((c = getopt(argc, argv, "FHSf:t:p:h")) != -1) {
 		switch (c) {
+		case 'F': cad.fills = 1; break;
+		case 'H': cad.hidden = 1; break;
+		case 'S': cad.strict = 1; break;
 		case 'f':
 			if (loft_cadin_find(optarg, &o.format, &err))
 				loft_usage_error(usage_text, c, err.msg);

@@ -380,8 +380,12 @@ loft__arc_chords(const struct loft_cadin *c, double r, double a)
 	if (loft_tol_check(tol, r, 0, NULL) != 0)
 		return -1;      /* t = 0 below rounding: was a square */
 	a = fabs(a);
-	t = tol >= r ? M_PI / 2 : 2 * acos(1 - tol / r);
-	if (!(t > 0) || t > M_PI / 2)
+	/* 1 - cos(t/2) = 2 sin^2(t/4) = tol/r, solved without forming
+	 * 1 - tol/r, which rounds to 1 below tol/r ~ 1e-16 (a square) */
+	t = tol >= r ? M_PI / 2 : 4 * asin(sqrt(tol / (2 * r)));
+	if (!(t > 0))
+		return -1;      /* tol/r underflowed: endless chords */
+	if (t > M_PI / 2)
 		t = M_PI / 2;
 	n = ceil(a / t - 1e-12);
 	if (!(n <= LOFT_CADIN_ARC_MAX))
@@ -429,4 +433,62 @@ loft__bezier_hermite(const double *b, int dim, double *row)
 		row[2 * dim + k] = 3 * (b[dim + k] - b[k]);
 		row[3 * dim + k] = 3 * (b[3 * dim + k] - b[2 * dim + k]);
 	}
+}
+
+void
+loft__passed_add(struct loft__passed *p, const char *s, size_t n)
+{
+	int i;
+
+	for (i = 0; i < p->nk; i++)
+		if (loft__word_is(s, n, p->k[i].name))
+			break;
+	if (i == p->nk) {
+		if (p->nk == LOFT__PASSED_KINDS) {
+			p->other++;
+			return;
+		}
+		loft__cadin_quote(p->k[i].name, sizeof p->k[i].name, s, n);
+		if (strlen(p->k[i].name) != n) {        /* too long to keep */
+			p->other++;
+			return;
+		}
+		p->k[i].n = 0;
+		p->nk++;
+	}
+	p->k[i].n++;
+}
+
+void
+loft__passed_say(struct loft_cadin *c, const struct loft__passed *p,
+    const char *why)
+{
+	char msg[1024];
+	size_t k = 0;
+
+	if ((p->nk == 0 && p->other == 0) || c->note == NULL)
+		return;
+	for (int i = 0; i < p->nk && k < sizeof msg - 200; i++)
+		k += (size_t)snprintf(msg + k, sizeof msg - k, "%s%ld %s",
+		    i > 0 ? ", " : "", p->k[i].n, p->k[i].name);
+	if (p->other > 0)
+		k += (size_t)snprintf(msg + k, sizeof msg - k, "%s%ld other",
+		    k > 0 ? ", " : "", p->other);
+	snprintf(msg + k, sizeof msg - k, " passed over %s", why);
+	c->note(c->ctx, 0, msg);
+}
+
+void
+loft__arc_unit(double a, double h, double e, double *u)
+{
+	double k = 4.0 / 3 * tan(h / 4);
+
+	u[0] = cos(a);
+	u[1] = sin(a);
+	u[2] = cos(a) - k * sin(a);
+	u[3] = sin(a) + k * cos(a);
+	u[4] = cos(e) + k * sin(e);
+	u[5] = sin(e) - k * cos(e);
+	u[6] = cos(e);
+	u[7] = sin(e);
 }

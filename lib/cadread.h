@@ -82,6 +82,11 @@ void loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
  * c->tol: chords, or cubic pieces; -1 when more than LOFT_CADIN_ARC_MAX. */
 long loft__arc_chords(const struct loft_cadin *c, double r, double a);
 long loft__arc_cubics(const struct loft_cadin *c, double r, double a);
+/* The control points u[0..8) (x, y each) of the cubic piece of the unit
+ * circle from angle a to a + h (radians): its inner control points
+ * (4/3) tan(h/4) along the end tangents (the error of loft__arc_cubics);
+ * the last is at angle e (a + h, or the arc's exact end). */
+void loft__arc_unit(double a, double h, double e, double *u);
 /* The cubic row P_A P_B P'_A P'_B of the Bezier b[0..4) (dim each). */
 void loft__bezier_hermite(const double *b, int dim, double *row);
 /* s[0..n) for a message: at most size - 1 bytes of it into buf, each
@@ -132,5 +137,26 @@ int loft__bs_knots(const double *val, const long *mult, size_t nval,
 /* Whether buf[0..len) begins as an IGES file: a line of 80 columns
  * whose 73rd is S (igesread.c). */
 int loft__iges_sniff(const char *buf, size_t len);
+/*
+ * What a reader passed over by design (annotations, fills, hidden
+ * geometry), counted by kind, for one note per document: "12 TEXT, 3
+ * DIMENSION passed over".  Kinds beyond LOFT__PASSED_KINDS are counted
+ * together as "other".
+ */
+#define LOFT__PASSED_KINDS 24
+struct loft__passed {
+	struct {
+		char name[24];
+		long n;
+	} k[LOFT__PASSED_KINDS];
+	int nk;
+	long other;
+};
+/* Count one of kind s[0..n) (compared ignoring ASCII case). */
+void loft__passed_add(struct loft__passed *p, const char *s, size_t n);
+/* The note "N KIND, ... passed over" and why (e.g. "(annotations; -S
+ * makes them errors)") through c->note; nothing when none was counted. */
+void loft__passed_say(struct loft_cadin *c, const struct loft__passed *p,
+    const char *why);
 
 #endif

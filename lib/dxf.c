@@ -7,7 +7,10 @@
  * goes on a layer named by its size= and id= ("size_4.5"), or on layer
  * 1, D6673's boundary layer, when it has neither; the layer table lists
  * the layers in the order they first appear, so a graded set keeps its
- * order.  Units: $INSUNITS from tocad -u.
+ * order.  Units: $INSUNITS from tocad -u.  A curve's other attributes
+ * (size=, offset=, name=, id=, ...) go with its entity as XDATA of the
+ * application LOFT, one 1000 string "key=value" each, which fromcad
+ * reads back onto its record.
  * Program layer (loftcad.h, on loftprog.h): a CAD format.
  */
 #include <stdlib.h>
@@ -23,7 +26,9 @@ struct dxf {
 	size_t *hash;           /* open addressing: index + 1, or 0 */
 	size_t hashcap;
 	const char *cur;        /* the current record's layer */
+	const struct loft_record *rec;  /* the current record */
 };
+
 
 /* A group's code line, right-justified in 3 columns as AutoCAD writes it
  * (by hand: snprintf here was most of the time of a large DXF). */
@@ -74,6 +79,37 @@ group_handle(struct loft_cad_doc *d, unsigned long h)
 
 	snprintf(buf, sizeof buf, "%lX", h);
 	group(d, 5, buf);
+}
+
+/* Attributes the entity itself holds, or fromcad finds again: not in
+ * the XDATA. */
+static const char *const own_attr[] = { "closed", "corners", "layer",
+	"block", "piece", NULL };
+
+/* The current record's attributes as XDATA (the entity's last groups). */
+static void
+xdata(struct loft_cad_doc *d)
+{
+	const struct loft_record *r = ((struct dxf *)d->state)->rec;
+	int first = 1;
+
+	for (size_t i = 0; r != NULL && i < r->nattr; i++) {
+		const char *k = r->attr[i].key;
+		int own = 0;
+
+		for (int j = 0; own_attr[j] != NULL; j++)
+			own |= strcmp(k, own_attr[j]) == 0;
+		if (own || r->attr[i].val == NULL)
+			continue;
+		if (first)
+			group(d, 1001, "LOFT");
+		first = 0;
+		code(d, 1000);
+		loft_cad_puts(d, k);
+		loft_cad_put(d, "=", 1);
+		loft_cad_puts(d, r->attr[i].val);
+		loft_cad_put(d, "\n", 1);
+	}
 }
 
 /* An entity's start: type, handle, layer. */
@@ -170,6 +206,7 @@ dxf_begin_record(struct loft_cad_doc *d, const struct loft_cad_item *it)
 	struct dxf *x = d->state;
 
 	x->cur = layer(x, it->name[0] ? it->name : "1");
+	x->rec = it->rec;
 	return x->cur == NULL ? LOFT_ENOMEM : 0;
 }
 
@@ -221,6 +258,7 @@ dxf_polyline(struct loft_cad_doc *d, const double *p, size_t n, int dim,
 		group_int(d, 70, closed);
 		for (size_t i = 0; i < n; i++)
 			point(d, p + 2 * i, 2);
+		xdata(d);
 		return 0;
 	}
 	entity(d, "POLYLINE", "AcDb3dPolyline");
@@ -229,6 +267,7 @@ dxf_polyline(struct loft_cad_doc *d, const double *p, size_t n, int dim,
 	group_num(d, 20, 0);
 	group_num(d, 30, 0);
 	group_int(d, 70, 8 | closed);
+	xdata(d);
 	for (size_t i = 0; i < n; i++) {
 		entity(d, "VERTEX", "AcDbVertex");
 		group(d, 100, "AcDb3dPolylineVertex");
@@ -265,6 +304,7 @@ dxf_curve(struct loft_cad_doc *d, const struct loft_bcurve *c)
 		if (c->dim == 2)
 			group_num(d, 30, 0);
 	}
+	xdata(d);
 	return 0;
 }
 
@@ -290,7 +330,7 @@ dxf_end(struct loft_cad_doc *d)
 	group(d, 9, "$ACADVER");
 	group(d, 1, "AC1015");
 	group(d, 9, "$HANDSEED");
-	group_handle(d, x->handle + x->nlayer + 1);
+	group_handle(d, x->handle + x->nlayer + 2);
 	group(d, 9, "$INSUNITS");
 	group_int(d, 70, unit);
 	group(d, 9, "$MEASUREMENT");
@@ -313,6 +353,18 @@ dxf_end(struct loft_cad_doc *d)
 		group_int(d, 62, 7);
 		group(d, 6, "CONTINUOUS");
 	}
+	group(d, 0, "ENDTAB");
+	group(d, 0, "TABLE");           /* LOFT, the XDATA's application */
+	group(d, 2, "APPID");
+	group_handle(d, 3);
+	group(d, 100, "AcDbSymbolTable");
+	group_int(d, 70, 1);
+	group(d, 0, "APPID");
+	group_handle(d, ++x->handle);
+	group(d, 100, "AcDbSymbolTableRecord");
+	group(d, 100, "AcDbRegAppTableRecord");
+	group(d, 2, "LOFT");
+	group_int(d, 70, 0);
 	group(d, 0, "ENDTAB");
 	group(d, 0, "ENDSEC");
 	loft_cad_to_head(d, 0);

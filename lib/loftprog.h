@@ -311,6 +311,17 @@ struct loft_cadin {
 	void (*complain)(void *ctx, long line, const char *msg);
 	void *ctx;
 	long nbad;
+	/* fromcad -S: an annotation (text, dimension, image...) or a fill
+	 * is a complaint too; 0: they are passed over, counted in a note */
+	int strict;
+	/* fromcad -H: geometry hidden (DXF layers off or frozen, SVG
+	 * display:none, visibility:hidden) is read; 0: passed over */
+	int hidden;
+	/* fromcad -F: DXF HATCH boundaries are read as closed curves */
+	int fills;
+	/* Where notes go (what was passed over; line 0): NULL, nowhere.
+	 * A note is no complaint: it is not counted in nbad. */
+	void (*note)(void *ctx, long line, const char *msg);
 };
 
 /*

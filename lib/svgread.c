@@ -38,6 +38,14 @@ struct level {
 	const char *layer;
 	size_t nlayer;
 	int inklayer;           /* layer named by an Inkscape layer */
+	int hidden;             /* visibility hidden (inherited) */
+};
+
+struct idref {                  /* an id="..." of the document */
+	const char *s;
+	size_t n;
+	const char *at;         /* the '<' of its element */
+	long line;
 };
 
 struct svg {
@@ -45,8 +53,25 @@ struct svg {
 	const char *buf, *p, *end;
 	long line;              /* of p */
 	struct level st[SVG_DEPTH];
-	int depth;              /* open elements read */
-	long skip;              /* open elements below one not read */
+	int depth;              /* levels of open elements read */
+	long skip;              /* open elements passed over */
+	struct open {           /* every open element, innermost last */
+		const char *name;
+		size_t nn;
+		long line;
+		int kind;       /* 0: a level of st, 1: passed over */
+	} *open;
+	size_t nopen, opencap;
+	int after;              /* elements after the root closed */
+	size_t base;            /* open elements below what a use draws */
+	int nuse, target;       /* uses being drawn; the next is one's */
+	int said_deep;          /* the depth was said */
+	double use_w, use_h;    /* the box of the use drawn (0: none) */
+	long budget;            /* elements uses may still draw */
+	struct idref *ids;      /* every id, sorted (once a use asks) */
+	size_t nids, idcap;
+	int indexed;
+	struct loft__passed passed, hide;
 	int root;               /* the root svg was seen */
 	struct nums { double *v; size_t n, cap; } seg;  /* a subpath */
 	int oom;
@@ -248,6 +273,22 @@ num_attr(struct svg *s, const struct elem *el, const char *key, double *x)
 		return -1;
 	}
 	return 0;
+}
+
+/* An attribute that is one number and nothing else, or 0. */
+static double
+plain_num(const struct attr *a)
+{
+	const char *p;
+	double x;
+
+	if (a == NULL)
+		return 0;
+	p = a->v;
+	if (svg_num(&p, a->v + a->vn, &x) != 0 || skip_sep(p, a->v + a->vn) !=
+	    a->v + a->vn)
+		return 0;
+	return x;
 }
 
 /* A length of the root svg in millimetres, or 0 when absent or in a
@@ -479,14 +520,14 @@ static int
 arc_cubics(struct svg *s, const double *c, double rx, double ry, double phi,
     double t0, double dt, long n)
 {
-	double h = dt / (double)n, k = 4.0 / 3 * tan(h / 4);
+	double h = dt / (double)n;
 	double cp = cos(phi), sp = sin(phi);
 
 	for (long i = 0; i < n; i++) {
 		double a = t0 + h * (double)i, e = i + 1 == n ? t0 + dt : a + h;
-		double u[8] = { cos(a), sin(a), cos(a) - k * sin(a),
-		    sin(a) + k * cos(a), cos(e) + k * sin(e), sin(e) - k * cos(e),
-		    cos(e), sin(e) }, v[8];
+		double u[8], v[8];
+
+		loft__arc_unit(a, h, e, u);
 
 		for (int j = 0; j < 4; j++) {
 			double x = rx * u[2 * j], y = ry * u[2 * j + 1];
@@ -586,6 +627,175 @@ curve_end(double *ctl, const double *c, double *cur, const double *e,
 	*straight = 0;
 }
 
+/* A path being read: the current point, the subpath's start, the last
+ * control point (for S and T), the command before, whether the subpath
+ * is straight so far. */
+struct pen {
+	double cur[2], start[2], ctl[2];
+	int prev, straight;
+};
+
+/*
+ * Two points of path data this near (relative to their size) are one:
+ * a path whose relative commands come back to its start, or ends on it
+ * in rounded decimals, ends there, not a rounding's length off it (a
+ * closing side of 1e-15 would be a knot on top of another).
+ */
+#define PATH_SAME 1e-12
+
+static int
+same_point(const double *a, const double *b)
+{
+	double d = fmax(fabs(a[0] - b[0]), fabs(a[1] - b[1]));
+
+	return d <= PATH_SAME * fmax(fmax(fabs(a[0]), fabs(a[1])),
+	    fmax(fabs(b[0]), fabs(b[1])));
+}
+
+/* Z: the closing side where the path is not back at its start (its
+ * last point put exactly on the start where it nearly is), the subpath
+ * written; 0, or -1 when out of memory. */
+static int
+close_subpath(struct svg *s, const struct elem *el, const double *m,
+    struct pen *pn)
+{
+	if (s->seg.n > 0 && same_point(pn->cur, pn->start)) {
+		s->seg.v[s->seg.n - 6] = pn->start[0];
+		s->seg.v[s->seg.n - 5] = pn->start[1];
+	} else if (s->seg.n > 0 && line_to(s, pn->cur, pn->start) != 0)
+		return -1;
+	put_subpath(s, el, m, 1, pn->straight);
+	s->seg.n = 0;
+	pn->straight = 1;
+	pn->cur[0] = pn->start[0];
+	pn->cur[1] = pn->start[1];
+	pn->prev = 'Z';
+	return 0;
+}
+
+/* Q and T, v their numbers (absolute): exactly the cubic with P'_A = 2
+ * (control - start), P'_B = 2 (end - control). */
+static int
+quad_to(struct svg *s, struct pen *pn, int up, const double *v, int n)
+{
+	double qc[2], q[8];
+
+	if (up == 'Q') {
+		qc[0] = v[0];
+		qc[1] = v[1];
+	} else {
+		reflect(pn->prev == 'Q' || pn->prev == 'T', pn->cur, pn->ctl,
+		    qc);
+	}
+	q[0] = pn->cur[0];
+	q[1] = pn->cur[1];
+	q[2] = v[n - 2];
+	q[3] = v[n - 1];
+	for (int k = 0; k < 2; k++) {
+		q[4 + k] = 2 * (qc[k] - q[k]);
+		q[6 + k] = 2 * (q[2 + k] - qc[k]);
+	}
+	if (seg_row(s, q, q + 2, q + 4, q + 6) != 0)
+		return -1;
+	curve_end(pn->ctl, qc, pn->cur, q + 2, &pn->straight);
+	return 0;
+}
+
+/* One segment of command up (not M or Z) with its numbers v (absolute);
+ * 0, -1 when out of memory, -2 when an arc needs too many pieces. */
+static int
+segment(struct svg *s, const double *m, struct pen *pn, int up,
+    const double *v, int n, int f1, int f2)
+{
+	double q[8];
+	int rc;
+
+	switch (up) {
+	case 'L':
+	case 'H':
+	case 'V':
+		q[0] = up == 'V' ? pn->cur[0] : v[0];
+		q[1] = up == 'H' ? pn->cur[1] : up == 'V' ? v[0] : v[1];
+		if (line_to(s, pn->cur, q) != 0)
+			return -1;
+		pn->cur[0] = q[0];
+		pn->cur[1] = q[1];
+		return 0;
+	case 'C':
+	case 'S':
+		q[0] = pn->cur[0];
+		q[1] = pn->cur[1];
+		if (up == 'C')
+			memcpy(q + 2, v, 6 * sizeof *v);
+		else {          /* the reflection of the last control */
+			reflect(pn->prev == 'C' || pn->prev == 'S', pn->cur,
+			    pn->ctl, q + 2);
+			memcpy(q + 4, v, 4 * sizeof *v);
+		}
+		if (seg_bezier(s, q) != 0)
+			return -1;
+		curve_end(pn->ctl, q + 4, pn->cur, q + 6, &pn->straight);
+		return 0;
+	case 'Q':
+	case 'T':
+		return quad_to(s, pn, up, v, n);
+	default:                /* A */
+		q[0] = v[5];
+		q[1] = v[6];
+		if ((rc = arc_to(s, m, pn->cur, v[0], v[1], v[2], f1, f2, q)) !=
+		    0)
+			return rc;
+		pn->cur[0] = q[0];
+		pn->cur[1] = q[1];
+		pn->straight = 0;
+		return 0;
+	}
+}
+
+/* The numbers of command up at *p into v (arc flags as 0 and 1 in f1,
+ * f2), made absolute from the current point where rel; the count, or
+ * -1 when they are not there. */
+static int
+path_numbers(const char **p, const char *e, int up, int rel,
+    const double *cur, double *v, int *f1, int *f2)
+{
+	int n = up == 'M' || up == 'L' || up == 'T' ? 2 : up == 'H' ||
+	    up == 'V' ? 1 : up == 'C' ? 6 : up == 'A' ? 7 : 4;
+
+	for (int k = 0; k < n; k++) {
+		if (up == 'A' && (k == 3 || k == 4)) {
+			if (svg_flag(p, e, k == 3 ? f1 : f2) != 0)
+				return -1;
+			v[k] = 0;
+		} else if (svg_num(p, e, &v[k]) != 0) {
+			return -1;
+		}
+	}
+	if (up == 'H')
+		v[0] += rel ? cur[0] : 0;
+	else if (up == 'V')
+		v[0] += rel ? cur[1] : 0;
+	else if (rel)
+		for (int k = up == 'A' ? 5 : 0; k < n; k += 2) {
+			v[k] += cur[0];
+			v[k + 1] += cur[1];
+		}
+	return n;
+}
+
+/* Say what is wrong at p in path data ending at e. */
+static void
+path_bad(struct svg *s, const struct elem *el, const char *why,
+    const char *p, const char *e)
+{
+	char msg[160], q[13];
+
+	p = skip_sep(p, e);
+	snprintf(msg, sizeof msg, "%s at '%s': not read", why,
+	    loft__cadin_quote(q, sizeof q, p, (size_t)(e - p)));
+	say_el(s, el, p, msg);
+}
+
 /* Path data: every subpath a record.  The element is read whole or, on
  * an error, not at all. */
 static void
@@ -595,8 +805,8 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 	struct loft_writer *w = s->c->w;
 	size_t mark = w->len;
 	const char *p, *e, *why = "bad path data";
-	double cur[2] = { 0, 0 }, start[2] = { 0, 0 }, ctl[2] = { 0, 0 };
-	int cmd = 0, prev = 0, straight = 1, rc;
+	struct pen pn = { { 0, 0 }, { 0, 0 }, { 0, 0 }, 0, 1 };
+	int cmd = 0, rc = 0;
 	long nbad = s->c->nbad;
 
 	if (d == NULL)
@@ -604,151 +814,56 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 	p = d->v;
 	e = d->v + d->vn;
 	s->seg.n = 0;
-	for (;;) {
-		double v[7], q[8];
-		int rel, n, k, up, f1, f2;
+	while ((p = skip_sep(p, e)) != e && rc == 0) {
+		double v[7];
+		int n, up, f1 = 0, f2 = 0;
 
-		p = skip_sep(p, e);
-		if (p == e)
-			break;
-		if (strchr("MmLlHhVvCcSsQqTtAaZz", *p) != NULL && *p != '\0') {
+		if (strchr("MmLlHhVvCcSsQqTtAaZz", *p) != NULL && *p != '\0')
 			cmd = (unsigned char)*p++;
-		} else if (cmd == 0 || cmd == 'Z' || cmd == 'z') {
-			goto bad;       /* numbers where a command must be */
-		}
-		/* an M's further pairs are L's */
-		rel = cmd >= 'a';
+		else if (cmd == 0 || cmd == 'Z' || cmd == 'z')
+			break;          /* numbers where a command must be */
 		up = cmd & ~0x20;
+		if (pn.prev == 0 && up != 'M') {
+			why = "path data must start with a moveto (M or m)";
+			p--;
+			break;
+		}
 		if (up == 'Z') {
-			if (s->seg.n > 0 && (cur[0] != start[0] ||
-			    cur[1] != start[1]))
-				if (line_to(s, cur, start) != 0)
-					goto oom;
-			put_subpath(s, el, m, 1, straight);
-			s->seg.n = 0;
-			straight = 1;
-			cur[0] = start[0];
-			cur[1] = start[1];
-			prev = 'Z';
+			rc = close_subpath(s, el, m, &pn);
 			continue;
 		}
-		n = up == 'M' || up == 'L' || up == 'T' ? 2 : up == 'H' ||
-		    up == 'V' ? 1 : up == 'C' ? 6 : up == 'A' ? 7 : 4;
-		for (k = 0; k < n; k++) {
-			if (up == 'A' && (k == 3 || k == 4)) {
-				if (svg_flag(&p, e, k == 3 ? &f1 : &f2) != 0)
-					goto bad;
-				v[k] = 0;
-			} else if (svg_num(&p, e, &v[k]) != 0) {
-				goto bad;
-			}
-		}
-		/* to absolute coordinates */
-		if (up == 'H')
-			v[0] += rel ? cur[0] : 0;
-		else if (up == 'V')
-			v[0] += rel ? cur[1] : 0;
-		else if (rel)
-			for (k = up == 'A' ? 5 : 0; k < n; k += 2) {
-				v[k] += cur[0];
-				v[k + 1] += cur[1];
-			}
-		switch (up) {
-		case 'M':
-			put_subpath(s, el, m, 0, straight);
+		if ((n = path_numbers(&p, e, up, cmd >= 'a', pn.cur, v, &f1,
+		    &f2)) < 0)
+			break;
+		if (up == 'M') {
+			put_subpath(s, el, m, 0, pn.straight);
 			s->seg.n = 0;
-			straight = 1;
-			start[0] = cur[0] = v[0];
-			start[1] = cur[1] = v[1];
-			cmd = rel ? 'l' : 'L';
-			prev = 'M';
+			pn.straight = 1;
+			pn.start[0] = pn.cur[0] = v[0];
+			pn.start[1] = pn.cur[1] = v[1];
+			cmd = cmd == 'm' ? 'l' : 'L';   /* further pairs */
+			pn.prev = 'M';
 			continue;
-		case 'L':
-		case 'H':
-		case 'V':
-			q[0] = up == 'V' ? cur[0] : v[0];
-			q[1] = up == 'H' ? cur[1] : up == 'V' ? v[0] : v[1];
-			if (line_to(s, cur, q) != 0)
-				goto oom;
-			cur[0] = q[0];
-			cur[1] = q[1];
-			break;
-		case 'C':
-		case 'S':
-			q[0] = cur[0];
-			q[1] = cur[1];
-			if (up == 'C') {
-				memcpy(q + 2, v, 6 * sizeof *v);
-			} else {        /* the reflection of the last control */
-				reflect(prev == 'C' || prev == 'S', cur, ctl, q + 2);
-				memcpy(q + 4, v, 4 * sizeof *v);
-			}
-			if (seg_bezier(s, q) != 0)
-				goto oom;
-			curve_end(ctl, q + 4, cur, q + 6, &straight);
-			break;
-		case 'Q':
-		case 'T': {
-			double qc[2];
-
-			if (up == 'Q') {
-				qc[0] = v[0];
-				qc[1] = v[1];
-			} else {
-				reflect(prev == 'Q' || prev == 'T', cur, ctl, qc);
-			}
-			/* P'_A = 2 (control - start), P'_B = 2 (end -
-			 * control): the cubic it is, exactly */
-			q[0] = cur[0];
-			q[1] = cur[1];
-			q[2] = v[n - 2];
-			q[3] = v[n - 1];
-			for (k = 0; k < 2; k++) {
-				q[4 + k] = 2 * (qc[k] - q[k]);
-				q[6 + k] = 2 * (q[2 + k] - qc[k]);
-			}
-			if (seg_row(s, q, q + 2, q + 4, q + 6) != 0)
-				goto oom;
-			curve_end(ctl, qc, cur, q + 2, &straight);
-			break;
 		}
-		case 'A':
-			q[0] = v[5];
-			q[1] = v[6];
-			rc = arc_to(s, m, cur, v[0], v[1], v[2], f1, f2, q);
-			if (rc == -1)
-				goto oom;
-			if (rc == -2) {
-				why = "an arc needs more cubic pieces than "
-				    "the tolerance allows";
-				goto bad;
-			}
-			cur[0] = q[0];
-			cur[1] = q[1];
-			straight = 0;
-			break;
-		}
-		prev = up;
+		rc = segment(s, m, &pn, up, v, n, f1, f2);
+		pn.prev = up;
 	}
-	put_subpath(s, el, m, 0, straight);
+	if (rc == -2)
+		why = "an arc needs more cubic pieces than the tolerance allows";
+	if (rc == -1 || s->oom) {
+		w->len = mark;
+		s->oom = 1;
+		return;
+	}
+	if (p != e || rc != 0) {
+		w->len = mark;
+		w->col = 0;
+		path_bad(s, el, why, p, e);
+		return;
+	}
+	put_subpath(s, el, m, 0, pn.straight);
 	if (s->c->nbad > nbad)
 		w->len = mark;  /* a record of it failed: none of it */
-	return;
-bad:
-	w->len = mark;
-	w->col = 0;
-	p = skip_sep(p, e);
-	{
-		char msg[160], q[13];
-
-		snprintf(msg, sizeof msg, "%s at '%s': not read", why,
-		    loft__cadin_quote(q, sizeof q, p, (size_t)(e - p)));
-		say_el(s, el, p, msg);
-	}
-	return;
-oom:
-	w->len = mark;
-	s->oom = 1;
 }
 
 /* polyline and polygon: their points as a knot record. */
@@ -781,6 +896,8 @@ do_poly(struct svg *s, const struct elem *el, const double *m, int closed)
 		v[0] = x[0];
 		v[1] = x[1];
 	}
+	if (s->seg.n == 0)
+		return;         /* no points: nothing drawn */
 	if (s->seg.n == 2) {    /* one point: a knot record of one knot */
 		size_t mark = s->c->w->len;
 		double y[2];
@@ -817,21 +934,73 @@ do_line(struct svg *s, const struct elem *el, const double *m)
 		put_subpath(s, el, m, 0, 1);
 }
 
+/* A rect with rounded corners: a closed cubic record, its sides
+ * straight segments and its corners quarter ellipses of radii rx, ry
+ * (cubic pieces within the tolerance), clockwise in user space from
+ * (x + rx, y), as SVG draws it. */
+static void
+round_rect(struct svg *s, const struct elem *el, const double *m, double x,
+    double y, double wd, double ht, double rx, double ry)
+{
+	/* the ends of the straight sides, equal where a radius is half
+	 * the side (not a rounding apart); the corners' centres */
+	double xl = x + rx, xr = 2 * rx == wd ? xl : x + wd - rx;
+	double yt = y + ry, yb = 2 * ry == ht ? yt : y + ht - ry;
+	double c[4][2] = { { xr, yt }, { xr, yb }, { xl, yb }, { xl, yt } };
+	double se[4][4] = {     /* each corner's start and end */
+		{ xr, y, x + wd, yt }, { x + wd, yb, xr, y + ht },
+		{ xl, y + ht, x, yb }, { x, yt, xl, y } };
+	long n = arc_pieces(s, m, rx, ry, M_PI / 2);
+
+	if (n < 0) {
+		say_el(s, el, el->at, "its corners need more cubic pieces than "
+		    "the tolerance allows");
+		return;
+	}
+	s->seg.n = 0;
+	for (int k = 0; k < 4; k++) {   /* a side, then a corner */
+		const double *a = se[(k + 3) % 4] + 2, *b = se[k];
+		size_t first = s->seg.n;
+
+		if ((a[0] != b[0] || a[1] != b[1]) && line_to(s, a, b) != 0)
+			return;
+		first = s->seg.n;
+		if (arc_cubics(s, c[k], rx, ry, 0, -M_PI / 2 + k * M_PI / 2,
+		    M_PI / 2, n) != 0)
+			return;
+		s->seg.v[first] = b[0];         /* the corner's ends exactly */
+		s->seg.v[first + 1] = b[1];
+		s->seg.v[s->seg.n - 6] = se[k][2];
+		s->seg.v[s->seg.n - 5] = se[k][3];
+	}
+	put_subpath(s, el, m, 1, 0);
+}
+
+/* rect: a closed knot record of its corners, or with rx or ry a cubic
+ * record of its sides and rounded corners (SVG's rules: one radius
+ * given is both; each at most half the side). */
 static void
 do_rect(struct svg *s, const struct elem *el, const double *m)
 {
 	double x, y, wd, ht, rx, ry, p[8];
+	int hx, hy;
 
 	if (num_attr(s, el, "x", &x) < 0 || num_attr(s, el, "y", &y) < 0 ||
 	    num_attr(s, el, "width", &wd) < 0 ||
 	    num_attr(s, el, "height", &ht) < 0 ||
-	    num_attr(s, el, "rx", &rx) < 0 || num_attr(s, el, "ry", &ry) < 0)
+	    (hx = num_attr(s, el, "rx", &rx)) < 0 ||
+	    (hy = num_attr(s, el, "ry", &ry)) < 0)
 		return;
 	if (!(wd > 0) || !(ht > 0))
 		return;         /* not drawn */
-	if (rx != 0 || ry != 0) {
-		say_el(s, el, el->at, "a rect with rounded corners is not read "
-		    "(draw it as a path)");
+	if (hx != 0 || !(rx >= 0))
+		rx = hy == 0 && ry > 0 ? ry : 0;
+	if (hy != 0 || !(ry >= 0))
+		ry = rx;
+	rx = fmin(rx, wd / 2);
+	ry = fmin(ry, ht / 2);
+	if (rx > 0 && ry > 0) {
+		round_rect(s, el, m, x, y, wd, ht, rx, ry);
 		return;
 	}
 	p[0] = x;
@@ -842,10 +1011,6 @@ do_rect(struct svg *s, const struct elem *el, const double *m)
 	p[5] = y + ht;
 	p[6] = x;
 	p[7] = y + ht;
-	s->seg.n = 0;
-	for (int k = 0; k < 4; k++)
-		if (line_to(s, p + 2 * k, p + 2 * ((k + 1) % 4)) != 0)
-			return;
 	{
 		struct loft_writer *w = s->c->w;
 		size_t mark = w->len;
@@ -867,15 +1032,23 @@ do_ellipse(struct svg *s, const struct elem *el, const double *m, int circle)
 {
 	double c[2], rx, ry;
 	long n;
+	int hx, hy;
 
 	if (num_attr(s, el, "cx", &c[0]) < 0 || num_attr(s, el, "cy", &c[1]) <
 	    0)
 		return;
 	if (circle ? num_attr(s, el, "r", &rx) < 0 :
-	    num_attr(s, el, "rx", &rx) < 0 || num_attr(s, el, "ry", &ry) < 0)
+	    (hx = num_attr(s, el, "rx", &rx)) < 0 ||
+	    (hy = num_attr(s, el, "ry", &ry)) < 0)
 		return;
 	if (circle)
 		ry = rx;
+	else if (hx == 1 && hy == 1) {  /* r, as Inkscape writes some */
+		if (num_attr(s, el, "r", &rx) < 0)
+			return;
+		ry = rx;
+	} else if (hx == 1 || hy == 1)  /* SVG 2's auto: the other one */
+		*(hx == 1 ? &rx : &ry) = hx == 1 ? ry : rx;
 	if (!(rx > 0) || !(ry > 0))
 		return;         /* not drawn */
 	if ((n = arc_pieces(s, m, rx, ry, 2 * M_PI)) < 0) {
@@ -1009,12 +1182,175 @@ out:
 	return r;
 }
 
+static void open_pop(struct svg *);
+
+/* ---- use: another element drawn again ------------------------------- */
+
+/* Uses inside what a use draws, at most: real documents nest a few, and
+ * an element that uses itself stops here. */
+#define USE_DEPTH 16
+
+/* Elements drawn by uses, at most, per document: uses of groups of uses
+ * multiply, and a few hostile lines would otherwise ask for 10^20
+ * records.  Four million is far above any real drawing. */
+#define USE_BUDGET 4000000L
+
+static int
+id_cmp(const void *a, const void *b)
+{
+	const struct idref *p = a, *q = b;
+	int c;
+
+	if (p->n != q->n)
+		return p->n < q->n ? -1 : 1;
+	if ((c = memcmp(p->s, q->s, p->n)) != 0)
+		return c;
+	return p->at < q->at ? -1 : p->at > q->at;
+}
+
+/* The index of every id="..." in the document, by value: the tag it is
+ * in (the '<' before it) and that tag's line; one pass, sorted. */
+static int
+id_index(struct svg *s)
+{
+	const char *lt = NULL;
+	long line = 1, ltline = 1;
+
+	s->indexed = 1;
+	for (const char *p = s->buf; p + 4 < s->end; p++) {
+		const char *v, *q;
+
+		if (*p == '\n')
+			line++;
+		else if (*p == '<') {
+			lt = p;
+			ltline = line;
+		}
+		if (p[0] != 'i' || p[1] != 'd' || p[2] != '=' || (p[3] != '"' &&
+		    p[3] != '\'') || p == s->buf || !is_wsp((unsigned char)p[-1]) ||
+		    lt == NULL)
+			continue;
+		v = p + 4;
+		if ((q = memchr(v, p[3], (size_t)(s->end - v))) == NULL)
+			break;
+		if (loft__grow((void **)&s->ids, &s->idcap, s->nids + 1,
+		    sizeof *s->ids) != 0) {
+			s->oom = 1;
+			return -1;
+		}
+		s->ids[s->nids].s = v;
+		s->ids[s->nids].n = (size_t)(q - v);
+		s->ids[s->nids].at = lt;
+		s->ids[s->nids].line = ltline;
+		s->nids++;
+	}
+	qsort(s->ids, s->nids, sizeof *s->ids, id_cmp);
+	return 0;
+}
+
+/* The first element of id v[0..n); NULL when there is none. */
+static const struct idref *
+id_find(struct svg *s, const char *v, size_t n)
+{
+	size_t lo = 0, hi;
+
+	if (!s->indexed && id_index(s) != 0)
+		return NULL;
+	hi = s->nids;
+	while (lo < hi) {               /* the first not below v */
+		size_t m = (lo + hi) / 2;
+		const struct idref *r = &s->ids[m];
+
+		if (r->n < n || (r->n == n && memcmp(r->s, v, n) < 0))
+			lo = m + 1;
+		else
+			hi = m;
+	}
+	if (lo < s->nids && s->ids[lo].n == n && memcmp(s->ids[lo].s, v, n) ==
+	    0 && lo < s->nids)
+		return &s->ids[lo];
+	return NULL;
+}
+
+static void parse(struct svg *s, int sub);
+
+/*
+ * use: the element its href names ("#id", in this document) drawn
+ * again, translated by x and y under the use's transform; a symbol is
+ * drawn as a group there.  It keeps its own id as name= and the use's
+ * layer.
+ */
+static void
+do_use(struct svg *s, const struct elem *el, const double *m)
+{
+	const struct attr *h = attr_of(el, "href");
+	const struct idref *r;
+	const char *p = s->p;
+	long line = s->line;
+	size_t base = s->base;
+	int depth = s->depth;
+	double x, y, t[6] = { 1, 0, 0, 1, 0, 0 };
+	struct level lv;
+
+	if (h == NULL)
+		h = attr_of(el, "xlink:href");
+	if (h == NULL || num_attr(s, el, "x", &x) < 0 ||
+	    num_attr(s, el, "y", &y) < 0)
+		return;         /* nothing to draw, or said */
+	if (h->vn < 2 || h->v[0] != '#') {
+		say_el(s, el, h->v, "a use of another document: not "
+		    "read");
+		return;
+	}
+	if (s->nuse >= USE_DEPTH) {     /* said once a document */
+		if (!s->said_deep++)
+			say_el(s, el, el->at, "uses nested deeper than 16 "
+			    "(does it use itself?): not read");
+		return;
+	}
+	if (s->budget-- <= 0) {
+		if (s->budget == -1)
+			say_el(s, el, el->at, "uses draw more than 4,000,000 "
+			    "elements: the rest is not read");
+		return;
+	}
+	if ((r = id_find(s, h->v + 1, h->vn - 1)) == NULL) {
+		if (!s->oom)
+			say_el(s, el, h->v, "no element of that id: not read");
+		return;
+	}
+	/* a symbol's box; none (its own units) where they are absent or
+	 * relative, as width="100%" */
+	s->use_w = plain_num(attr_of(el, "width"));
+	s->use_h = plain_num(attr_of(el, "height"));
+	lv = s->st[s->depth - 1];
+	t[4] = x;
+	t[5] = y;
+	mat_mul(m, t, lv.m);
+	s->st[s->depth++] = lv;
+	s->p = r->at;
+	s->line = r->line;
+	s->base = s->nopen;
+	s->nuse++;
+	s->target = 1;
+	parse(s, 1);
+	s->target = 0;
+	while (s->nopen > s->base)
+		open_pop(s);
+	s->nuse--;
+	s->depth = depth;
+	s->base = base;
+	s->p = p;
+	s->line = line;
+}
+
 /* Elements that draw nothing themselves, passed over with what is in
- * them; and those that draw what loft cannot hold. */
+ * them (a symbol is drawn only by a use); and those that draw what loft
+ * cannot hold: annotations, passed over and counted (-S: refused). */
 static const char *const quiet[] = { "defs", "title", "desc", "metadata",
 	"style", "script", "symbol", "clipPath", "mask", "marker", "pattern",
 	"linearGradient", "radialGradient", "filter", NULL };
-static const char *const refused[] = { "text", "image", "use",
+static const char *const annotation[] = { "text", "image",
 	"foreignObject", "video", "audio", "canvas", "iframe", NULL };
 
 static int
@@ -1026,14 +1362,192 @@ in_list(const struct elem *el, const char *const *list)
 	return 0;
 }
 
+/*
+ * A presentation property of el: from its style attribute (which wins)
+ * or the attribute of that name; 1 when it is value, else 0.
+ */
+static int
+prop_is(const struct elem *el, const char *prop, const char *value)
+{
+	const struct attr *st = attr_of(el, "style"), *a = attr_of(el, prop);
+	size_t n = strlen(prop);
+	const char *v = a ? a->v : NULL, *e;
+	size_t vn = a ? a->vn : 0;
+
+	for (const char *p = st ? st->v : NULL, *end = st ? st->v + st->vn :
+	    NULL; p != NULL && p < end; p++) {
+		const char *q = p;
+
+		while (q < end && is_wsp((unsigned char)*q))
+			q++;
+		if ((size_t)(end - q) > n && memcmp(q, prop, n) == 0) {
+			for (q += n; q < end && is_wsp((unsigned char)*q); q++)
+				;
+			if (q < end && *q == ':') {
+				for (q++; q < end && is_wsp((unsigned char)*q);
+				    q++)
+					;
+				for (e = q; e < end && *e != ';'; e++)
+					;
+				v = q;
+				vn = (size_t)(e - q);
+			}
+		}
+		p = memchr(p, ';', (size_t)(end - p));
+		if (p == NULL)
+			break;
+	}
+	while (vn > 0 && is_wsp((unsigned char)v[vn - 1]))
+		vn--;
+	if (vn > 10 && memcmp(v + vn - 10, "!important", 10) == 0)
+		for (vn -= 10; vn > 0 && is_wsp((unsigned char)v[vn - 1]); vn--)
+			;
+	return v != NULL && loft__word_is(v, vn, value);
+}
+
+/* Whether el is hidden: display:none (it and all in it), or under
+ * visibility hidden or collapse (inherited; visible undoes it). */
+static int
+hidden(const struct elem *el, struct level *lv)
+{
+	if (prop_is(el, "visibility", "hidden") ||
+	    prop_is(el, "visibility", "collapse"))
+		lv->hidden = 1;
+	else if (prop_is(el, "visibility", "visible"))
+		lv->hidden = 0;
+	return prop_is(el, "display", "none");
+}
+
+/* A nested svg's viewport: translate(x, y), then its viewBox fitted to
+ * its width and height as preserveAspectRatio says (xMidYMid meet by
+ * default); without width and height, user units are kept. */
+static void
+viewport(struct svg *s, const struct elem *el, double *t)
+{
+	const struct attr *vb = attr_of(el, "viewBox");
+	const struct attr *par = attr_of(el, "preserveAspectRatio");
+	double x, y, w, h, v[4], sx, sy;
+	const char *p;
+	int n = 0;
+
+	t[0] = t[3] = 1;
+	t[1] = t[2] = 0;
+	if (name_is(el, "symbol")) {    /* the use's box, at its x, y */
+		x = y = 0;
+		w = s->use_w;
+		h = s->use_h;
+	} else if (num_attr(s, el, "x", &x) < 0 || num_attr(s, el, "y", &y) <
+	    0 || num_attr(s, el, "width", &w) != 0 || num_attr(s, el,
+	    "height", &h) != 0)
+		x = y = w = h = 0;
+	t[4] = x;
+	t[5] = y;
+	if (vb == NULL || !(w > 0) || !(h > 0))
+		return;
+	for (p = vb->v; n < 4 && svg_num(&p, vb->v + vb->vn, &v[n]) == 0; n++)
+		;
+	if (n != 4 || !(v[2] > 0) || !(v[3] > 0))
+		return;
+	sx = w / v[2];
+	sy = h / v[3];
+	if (par == NULL || find(par->v, par->vn, "none", 4) == NULL) {
+		int slice = par != NULL && find(par->v, par->vn, "slice", 5);
+		double k = slice ? fmax(sx, sy) : fmin(sx, sy);
+		double ax = par && find(par->v, par->vn, "xMin", 4) ? 0 :
+		    par && find(par->v, par->vn, "xMax", 4) ? 1 : 0.5;
+		double ay = par && find(par->v, par->vn, "YMin", 4) ? 0 :
+		    par && find(par->v, par->vn, "YMax", 4) ? 1 : 0.5;
+
+		sx = sy = k;
+		t[4] += ax * (w - v[2] * k);
+		t[5] += ay * (h - v[3] * k);
+	}
+	t[0] = sx;
+	t[3] = sy;
+	t[4] -= v[0] * sx;
+	t[5] -= v[1] * sy;
+}
+
+/* A drawing element (not a group): its records. */
+static int
+draw(struct svg *s, const struct elem *el, const double *m)
+{
+	if (name_is(el, "path"))
+		do_path(s, el, m);
+	else if (name_is(el, "polyline"))
+		do_poly(s, el, m, 0);
+	else if (name_is(el, "polygon"))
+		do_poly(s, el, m, 1);
+	else if (name_is(el, "line"))
+		do_line(s, el, m);
+	else if (name_is(el, "rect"))
+		do_rect(s, el, m);
+	else if (name_is(el, "circle"))
+		do_ellipse(s, el, m, 1);
+	else if (name_is(el, "ellipse"))
+		do_ellipse(s, el, m, 0);
+	else if (name_is(el, "use"))
+		do_use(s, el, m);
+	else
+		return -1;
+	return 0;
+}
+
+/* An element passed over by design: counted for the note (-S: an
+ * error); returns 1 (passed over). */
+static int
+pass_over(struct svg *s, const struct elem *el, struct loft__passed *p)
+{
+	if (s->c->strict && p == &s->passed)
+		say_el(s, el, el->at, "an annotation or an element loft does "
+		    "not know: not read (-S)");
+	else
+		loft__passed_add(p, el->name, el->nn);
+	return 1;
+}
+
+/* The level of an element inside up: its transform, layer, hidden. */
+static int
+level_of(struct svg *s, const struct elem *el, const struct level *up,
+    struct level *lv)
+{
+	int g = name_is(el, "g") || name_is(el, "a") || name_is(el, "switch");
+	const struct attr *mode = attr_of(el, "inkscape:groupmode");
+	const struct attr *label = attr_of(el, "inkscape:label");
+	const struct attr *id = attr_of(el, "id");
+	double t[6];
+
+	*lv = *up;
+	if (transform(s, el, t) != 0)
+		return -1;
+	mat_mul(up->m, t, lv->m);
+	if (name_is(el, "svg") || name_is(el, "symbol")) {
+		viewport(s, el, t);
+		mat_mul(lv->m, t, lv->m);
+	}
+	if (g && mode != NULL && mode->vn == 5 &&
+	    memcmp(mode->v, "layer", 5) == 0 && (label || id)) {
+		lv->layer = label ? label->v : id->v;
+		lv->nlayer = label ? label->vn : id->vn;
+		lv->inklayer = 1;
+	} else if (g && id != NULL && !lv->inklayer) {
+		lv->layer = id->v;
+		lv->nlayer = id->vn;
+	}
+	return 0;
+}
+
 /* An element opened: 0 when it is read (and, if it opens, pushed), 1
- * when it and what is in it are passed over. */
+ * when it and what is in it are passed over, -1 when the document is
+ * no SVG. */
 static int
 element(struct svg *s, const struct elem *el, int opens)
 {
 	struct level *up = s->depth > 0 ? &s->st[s->depth - 1] : NULL, lv;
+	int target = s->target;
 	double t[6];
 
+	s->target = 0;
 	if (s->depth >= SVG_DEPTH - 1) {
 		say_el(s, el, el->at, "nested deeper than 256 elements: not "
 		    "read, nor what is in it");
@@ -1050,57 +1564,27 @@ element(struct svg *s, const struct elem *el, int opens)
 		root_map(s, el, lv.m);
 		if (transform(s, el, t) == 0)
 			mat_mul(lv.m, t, lv.m);
-	} else if (up == NULL) {
-		return 1;       /* never: the read ends when the root closes */
-	} else if (memchr(el->name, ':', el->nn) != NULL ||
-	    in_list(el, quiet)) {
+	} else if (up == NULL || memchr(el->name, ':', el->nn) != NULL ||
+	    (in_list(el, quiet) && !(target && name_is(el, "symbol")))) {
 		return 1;
-	} else if (in_list(el, refused) || name_is(el, "svg")) {
-		say_el(s, el, el->at, "not read: loft reads path, polyline, "
-		    "polygon, line, rect, circle and ellipse elements");
-		return 1;
+	} else if (in_list(el, annotation)) {
+		return pass_over(s, el, &s->passed);
 	} else {
 		int g = name_is(el, "g") || name_is(el, "a") ||
-		    name_is(el, "switch");
-		const struct attr *mode = attr_of(el, "inkscape:groupmode");
-		const struct attr *label = attr_of(el, "inkscape:label");
-		const struct attr *id = attr_of(el, "id");
+		    name_is(el, "switch") || name_is(el, "svg") ||
+		    name_is(el, "symbol");
 
-		lv = *up;
-		if (transform(s, el, t) != 0)
+		if (level_of(s, el, up, &lv) != 0)
 			return 1;
-		mat_mul(up->m, t, lv.m);
-		if (g && mode != NULL && mode->vn == 5 &&
-		    memcmp(mode->v, "layer", 5) == 0 && (label || id)) {
-			lv.layer = label ? label->v : id->v;
-			lv.nlayer = label ? label->vn : id->vn;
-			lv.inklayer = 1;
-		} else if (g && id != NULL && !lv.inklayer) {
-			lv.layer = id->v;
-			lv.nlayer = id->vn;
-		}
+		if (hidden(el, &lv) && !s->c->hidden)
+			return pass_over(s, el, &s->hide);
 		if (!g) {
-			s->st[s->depth] = lv;   /* for put_header */
-			s->depth++;
-			if (name_is(el, "path"))
-				do_path(s, el, lv.m);
-			else if (name_is(el, "polyline"))
-				do_poly(s, el, lv.m, 0);
-			else if (name_is(el, "polygon"))
-				do_poly(s, el, lv.m, 1);
-			else if (name_is(el, "line"))
-				do_line(s, el, lv.m);
-			else if (name_is(el, "rect"))
-				do_rect(s, el, lv.m);
-			else if (name_is(el, "circle"))
-				do_ellipse(s, el, lv.m, 1);
-			else if (name_is(el, "ellipse"))
-				do_ellipse(s, el, lv.m, 0);
-			else {
+			if (lv.hidden && !s->c->hidden)
+				return pass_over(s, el, &s->hide);
+			s->st[s->depth++] = lv; /* for put_header */
+			if (draw(s, el, lv.m) != 0) {
 				s->depth--;
-				say_el(s, el, el->at, "an element loft does "
-				    "not know: not read");
-				return 1;
+				return pass_over(s, el, &s->passed);
 			}
 			s->depth--;
 		}
@@ -1110,11 +1594,176 @@ element(struct svg *s, const struct elem *el, int opens)
 	return 0;
 }
 
+/* ---- the XML stream: every element's open tag matched to its close -- */
+
+/* Push an open element on s->open; kind 0: it pushed a level, 1: it
+ * is passed over with what is in it (or inside one that is). */
+static int
+open_push(struct svg *s, const struct elem *el, int kind)
+{
+	struct open *o;
+
+	if (loft__grow((void **)&s->open, &s->opencap, s->nopen + 1,
+	    sizeof *s->open) != 0) {
+		s->oom = 1;
+		return -1;
+	}
+	o = &s->open[s->nopen++];
+	o->name = el->name;
+	o->nn = el->nn;
+	o->line = el->line;
+	o->kind = kind;
+	s->skip += kind;
+	return 0;
+}
+
+static void
+open_pop(struct svg *s)
+{
+	const struct open *o = &s->open[--s->nopen];
+
+	if (o->kind)
+		s->skip--;
+	else if (s->depth > 0)
+		s->depth--;
+}
+
+/*
+ * A closing tag at s->p (past "</"): it closes the innermost open
+ * element of its name, and any opened inside that one and left open
+ * (said so); one that closes nothing is said and passed over.  The
+ * document is never cut short by it.
+ */
+static void
+close_tag(struct svg *s, long line)
+{
+	const char *nm = s->p;
+	size_t nn, i;
+	char q[41], q2[41];
+
+	while (s->p < s->end && is_name_char((unsigned char)*s->p))
+		s->p++;
+	nn = (size_t)(s->p - nm);
+	if (skip_past(s, ">") != 0) {
+		loft__cadin_say(s->c, line, "the document ends inside a tag: "
+		    "truncated?");
+		s->p = s->end;
+		return;
+	}
+	loft__cadin_quote(q, sizeof q, nm, nn);
+	for (i = s->nopen; i > s->base; i--)
+		if (s->open[i - 1].nn == nn && memcmp(s->open[i - 1].name, nm,
+		    nn) == 0)
+			break;
+	if (i == s->base) {
+		loft__cadin_say(s->c, line, "</%s> closes no open element: "
+		    "passed over", q);
+		return;
+	}
+	if (i < s->nopen) {
+		const struct open *o = &s->open[s->nopen - 1];
+
+		loft__cadin_say(s->c, line, "</%s> comes while <%s> of line "
+		    "%ld is open: it closes that too", q, loft__cadin_quote(q2,
+		    sizeof q2, o->name, o->nn), o->line);
+	}
+	while (s->nopen >= i)
+		open_pop(s);
+}
+
+/* A start tag at s->p (past '<'): the element read, or passed over. */
+static void
+open_tag(struct svg *s, struct elem *el)
+{
+	int r = start_tag(s, el), e;
+
+	if (r < 0) {
+		if (s->p >= s->end) {
+			loft__cadin_say(s->c, el->line, "the document ends "
+			    "inside a tag: truncated?");
+			return;
+		}
+		loft__cadin_say(s->c, el->line, "malformed XML tag: passed over");
+		skip_past(s, ">");
+		return;
+	}
+	if (s->root && s->nopen == 0) {
+		if (!s->after++)
+			say_el(s, el, el->at, "after the root svg element "
+			    "closed: not read");
+		e = 1;
+	} else if (s->skip > 0) {
+		e = 1;
+	} else if ((e = element(s, el, r == 0)) < 0) {
+		s->p = s->end;  /* not an SVG document */
+		return;
+	}
+	if (r == 0)
+		open_push(s, el, e);
+}
+
+/* Comments, CDATA, processing instructions and DOCTYPE at s->p (past
+ * '<'); 1 when it is one of them (passed over), else 0. */
+static int
+other_markup(struct svg *s, long line)
+{
+	int r;
+
+	if (s->end - s->p >= 3 && memcmp(s->p, "!--", 3) == 0)
+		r = skip_past(s, "-->");
+	else if (s->end - s->p >= 8 && memcmp(s->p, "![CDATA[", 8) == 0)
+		r = skip_past(s, "]]>");
+	else if (s->p < s->end && *s->p == '?')
+		r = skip_past(s, "?>");
+	else if (s->p < s->end && *s->p == '!') {
+		/* a DOCTYPE, maybe with an internal subset */
+		const char *br = memchr(s->p, '[', (size_t)(s->end - s->p));
+		const char *gt = memchr(s->p, '>', (size_t)(s->end - s->p));
+
+		r = br != NULL && gt != NULL && br < gt ?
+		    skip_past(s, "]") | skip_past(s, ">") : skip_past(s, ">");
+	} else
+		return 0;
+	if (r != 0) {
+		loft__cadin_say(s->c, line, "the document ends inside a "
+		    "comment or declaration: truncated?");
+		s->p = s->end;
+	}
+	return 1;
+}
+
+/* Read tags from s->p on, to the end; or (sub) those of the one
+ * element there, which a use draws. */
+static void
+parse(struct svg *s, int sub)
+{
+	struct elem el;
+
+	while (s->p < s->end && !s->oom) {
+		const char *lt = memchr(s->p, '<', (size_t)(s->end - s->p));
+
+		if (lt == NULL)
+			break;
+		for (; s->p < lt; s->p++)
+			s->line += *s->p == '\n';
+		el.at = s->p++;
+		el.line = s->line;
+		if (other_markup(s, el.line))
+			continue;
+		if (s->p < s->end && *s->p == '/') {
+			s->p++;
+			close_tag(s, el.line);
+		} else
+			open_tag(s, &el);
+		if (sub && s->nopen <= s->base)
+			break;
+	}
+}
+
 int
 loft_svg_read(const char *buf, size_t len, struct loft_cadin *c)
 {
 	struct svg *s = calloc(1, sizeof *s);
-	struct elem el;
 	long nbad = c->nbad;
 	int r;
 
@@ -1126,71 +1775,28 @@ loft_svg_read(const char *buf, size_t len, struct loft_cadin *c)
 	s->buf = s->p = buf;
 	s->end = buf + len;
 	s->line = 1;
-	while (s->p < s->end && !s->oom) {
-		const char *lt = memchr(s->p, '<', (size_t)(s->end - s->p));
+	s->budget = USE_BUDGET;
+	parse(s, 0);
+	if (!s->oom && s->nopen > 0) {
+		char q[41];
 
-		if (lt == NULL)
-			break;
-		for (; s->p < lt; s->p++)
-			s->line += *s->p == '\n';
-		el.at = s->p++;
-		el.line = s->line;
-		if (s->end - s->p >= 3 && memcmp(s->p, "!--", 3) == 0)
-			r = skip_past(s, "-->");
-		else if (s->end - s->p >= 8 && memcmp(s->p, "![CDATA[", 8) == 0)
-			r = skip_past(s, "]]>");
-		else if (s->p < s->end && *s->p == '?')
-			r = skip_past(s, "?>");
-		else if (s->p < s->end && *s->p == '!') {
-			/* a DOCTYPE, maybe with an internal subset */
-			const char *br = memchr(s->p, '[', (size_t)(s->end -
-			    s->p)), *gt = memchr(s->p, '>', (size_t)(s->end -
-			    s->p));
-
-			r = br != NULL && gt != NULL && br < gt ?
-			    skip_past(s, "]") | skip_past(s, ">") :
-			    skip_past(s, ">");
-		} else if (s->p < s->end && *s->p == '/') {
-			if ((r = skip_past(s, ">")) == 0) {
-				if (s->skip > 0)
-					s->skip--;
-				else if (s->depth > 0)
-					s->depth--;
-			}
-		} else {
-			r = start_tag(s, &el);
-			if (r >= 0 && s->skip > 0)
-				s->skip += r == 0;
-			else if (r >= 0) {
-				int e = element(s, &el, r == 0);
-
-				if (e < 0)
-					break;
-				if (e == 1 && r == 0)
-					s->skip = 1;
-			}
-		}
-		if (r < 0) {
-			loft__cadin_say(c, el.line, "%s", s->p >= s->end ? "the "
-			    "document ends inside a tag: truncated?" :
-			    "malformed XML here: the rest of the document is "
-			    "not read");
-			break;
-		}
-		if (s->root && s->depth == 0 && s->skip == 0)
-			break;  /* the root element closed */
-	}
-	if (!s->oom && s->root && (s->depth > 0 || s->skip > 0) &&
-	    c->nbad == nbad)
-		loft__cadin_say(c, s->line, "the document ends inside an "
-		    "element: truncated?");
-	else if (!s->oom && !s->root && c->nbad == nbad)
+		loft__cadin_say(c, s->line, "the document ends inside <%s> of "
+		    "line %ld: truncated?", loft__cadin_quote(q, sizeof q,
+		    s->open[s->nopen - 1].name, s->open[s->nopen - 1].nn),
+		    s->open[s->nopen - 1].line);
+	} else if (!s->oom && !s->root && c->nbad == nbad)
 		loft__cadin_say(c, s->line, "no svg element: not an SVG "
 		    "document");
 	if (s->oom)
 		loft__cadin_say(c, s->line, "out of memory");
+	loft__passed_say(c, &s->passed, "(annotations and elements loft "
+	    "does not know; -S makes them errors)");
+	loft__passed_say(c, &s->hide, "hidden (display:none, "
+	    "visibility:hidden; -H reads them)");
 	r = s->oom ? LOFT_ENOMEM : c->nbad > nbad ? LOFT_EINPUT : 0;
 	free(s->seg.v);
+	free(s->open);
+	free(s->ids);
 	free(s);
 	return r;
 }

@@ -49,6 +49,7 @@ slow sh tests/tocad.sh
 suite sh tests/loftcut.sh
 slow sh tests/fromcad.sh
 slow sh tests/stepiges.sh
+slow sh tests/realcad.sh
 slow sh tests/roundtrip.sh
 slow sh tests/bad.sh
 suite bin/test/hostile

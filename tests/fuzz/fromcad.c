@@ -33,7 +33,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		return 0;
 	for (int pass = 0; pass < 2; pass++) {
 		struct loft_cadin c = { data[0] & 4 ? 1e-3 : 0, &w[pass],
-		    complain, NULL, 0 };
+		    complain, NULL, 0, data[0] & 8, data[0] & 16, 0, NULL };
 
 		rc[pass] = loft_cadin_read(format, (const char *)data + 1,
 		    size - 1, &c);
