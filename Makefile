@@ -14,6 +14,7 @@ DESTDIR =
 
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
           loftplot grade offset measure tocad patchloft patchcut fromcad
+PROGS  += hydro
 LIBOBJ  = bin/obj/num.o bin/obj/stream.o bin/obj/run.o bin/obj/cubic.o \
           bin/obj/fit.o bin/obj/cspline.o bin/obj/curve.o \
           bin/obj/expr.o bin/obj/bezier.o bin/obj/normal.o \
@@ -34,6 +35,9 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
 LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
+LIBOBJ += bin/obj/waterline.o bin/obj/hydro.o
+LIBOBJ += bin/obj/surfrecs.o bin/obj/optrange.o
+PROGOBJ += bin/obj/surfrecs.o bin/obj/optrange.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
           bin/obj/svgplot.o

@@ -1,0 +1,420 @@
+/*
+ * waterline.c: a surface clipped by planes p[k] = level (a waterline, a
+ * station), and integrals over the part below them.
+ *
+ * The part of the parameter square where every clip holds has a curved
+ * edge, the level curve of a polynomial.  Integrating over it, one
+ * parameter (t) is the inner: at each node of the outer one (s) the
+ * inner polynomial's roots are found to rounding, and the inner integral
+ * runs over the pieces between them where the clips hold, by
+ * Gauss-Legendre quadrature, so a polynomial integrand of degree below
+ * 2 GAUSS_N is exact there.  The outer integral is split where the curve
+ * meets the edges t = 0 and t = 1 (there the inner integral has a kink)
+ * and integrated adaptively: on a piece where the curve is a graph of s
+ * the inner integral is smooth in s.  The roles of u and v are chosen
+ * per surface so that the curve is as near as can be to a graph of s.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+#define GAUSS_N 10
+
+/* Gauss-Legendre nodes and weights of 10 points on [-1, 1], the positive
+ * half (the rule is symmetric): exact for degree 19. */
+static const double gauss_x[5] = {
+	0.1488743389816312108848260, 0.4333953941292471907992659,
+	0.6794095682990244062343274, 0.8650633666889845107320967,
+	0.9739065285171717200779640
+};
+static const double gauss_w[5] = {
+	0.2955242247147528701738930, 0.2692667193099963550912269,
+	0.2190863625159820439955349, 0.1494513491505805931457763,
+	0.0666713443086881375935688
+};
+
+/* Halvings of an outer (inner) piece before its estimate is taken as it
+ * is: 2^-40 of the parameter is far below what the tolerances ask on
+ * any integrand that is not singular; the cap only bounds the work. */
+#define OUTER_DEPTH 40
+#define INNER_DEPTH 24
+
+/* Samples per degree when looking for roots along a parameter line: a
+ * sign change between samples brackets a root; two roots closer than
+ * 1/(ROOT_SAMPLES deg) are a near-tangency whose sliver is below the
+ * tolerances. */
+#define ROOT_SAMPLES 4
+
+/* Bisection steps after the bracket: 2^-60 of the parameter is below
+ * rounding. */
+#define ROOT_STEPS 60
+
+#define MAXROOTS (4 * LOFT_BEZIER_MAXPTS + 8)
+
+struct ctx {
+	const struct loft_surface *s;
+	const struct loft_clip *c;
+	loft_clip_fn f;
+	void *fctx;
+	int nval, swap, tdeg, sdeg;
+};
+
+/* The surface at outer s, inner t. */
+static void
+ev(const struct ctx *x, double s, double t, double *p, double *pu,
+    double *pv)
+{
+	if (x->swap)
+		loft_surface_eval(x->s, t, s, p, pu, pv);
+	else
+		loft_surface_eval(x->s, s, t, p, pu, pv);
+}
+
+/* Clip k's function at (s, t): negative where the part is kept. */
+static double
+gclip(const struct ctx *x, int k, double s, double t)
+{
+	double p[3];
+
+	ev(x, s, t, p, NULL, NULL);
+	return p[x->c->axis[k]] - x->c->level[k];
+}
+
+/* The root of clip k along the line (inner: s fixed; else t fixed at
+ * `fixed`) between a and b where the sign changes, by bisection. */
+static double
+bisect(const struct ctx *x, int k, int inner, double fixed, double a,
+    double b, double ga)
+{
+	for (int i = 0; i < ROOT_STEPS; i++) {
+		double m = 0.5 * (a + b);
+		double gm = inner ? gclip(x, k, fixed, m) : gclip(x, k, m, fixed);
+
+		if (m <= a || m >= b)
+			break;
+		if ((gm < 0) == (ga < 0)) {
+			a = m;
+			ga = gm;
+		} else {
+			b = m;
+		}
+	}
+	return 0.5 * (a + b);
+}
+
+/* Append to r the roots of every clip along a line (see bisect). */
+static int
+line_roots(const struct ctx *x, int inner, double fixed, double *r, int nr)
+{
+	int deg = inner ? x->tdeg : x->sdeg;
+	int ns = ROOT_SAMPLES * deg + 4;
+
+	for (int k = 0; k < x->c->n; k++) {
+		double a = 0, ga = inner ? gclip(x, k, fixed, 0) :
+		    gclip(x, k, 0, fixed);
+
+		for (int i = 1; i <= ns && nr < MAXROOTS; i++) {
+			double b = (double)i / ns;
+			double gb = inner ? gclip(x, k, fixed, b) :
+			    gclip(x, k, b, fixed);
+
+			if ((ga < 0) != (gb < 0))
+				r[nr++] = bisect(x, k, inner, fixed, a, b, ga);
+			a = b;
+			ga = gb;
+		}
+	}
+	return nr;
+}
+
+static int
+dcmp(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+/* Whether (s, t) is kept by every clip. */
+static int
+kept(const struct ctx *x, double s, double t)
+{
+	double p[3];
+
+	ev(x, s, t, p, NULL, NULL);
+	for (int k = 0; k < x->c->n; k++)
+		if (!(p[x->c->axis[k]] <= x->c->level[k]))
+			return 0;
+	return 1;
+}
+
+typedef void (*line_fn)(const struct ctx *x, double fixed, double a,
+    double *out);
+
+/* The inner integrand at (s, t), times w, added to out. */
+static void
+inner_point(const struct ctx *x, double s, double t, double *out)
+{
+	double p[3], pu[3], pv[3];
+
+	ev(x, s, t, p, pu, pv);
+	x->f(x->fctx, p, pu, pv, 1.0, out);
+}
+
+static void
+outer_point(const struct ctx *x, double unused, double s, double *out);
+
+/* The 10-point rule of the inner (outer) integrand over [a, b]. */
+static void
+gauss(const struct ctx *x, int inner, double fixed, double a, double b,
+    double *out)
+{
+	double h = 0.5 * (b - a), m = 0.5 * (a + b);
+
+	memset(out, 0, (size_t)x->nval * sizeof *out);
+	for (int i = 0; i < GAUSS_N; i++) {
+		double tmp[LOFT_CLIP_MAXVAL] = { 0 };
+		double q = i < 5 ? m - h * gauss_x[4 - i] : m + h * gauss_x[i - 5];
+		double w = h * gauss_w[i < 5 ? 4 - i : i - 5];
+
+		if (inner)
+			inner_point(x, fixed, q, tmp);
+		else
+			outer_point(x, fixed, q, tmp);
+		for (int k = 0; k < x->nval; k++)
+			out[k] += w * tmp[k];
+	}
+}
+
+/* Adaptive: the rule over [a, b] (whole) against the sum of its halves;
+ * the halves are kept when they agree within tol, else each is halved. */
+static void
+adapt(const struct ctx *x, int inner, double fixed, double a, double b,
+    const double *whole, int depth, double *acc)
+{
+	double l[LOFT_CLIP_MAXVAL], r[LOFT_CLIP_MAXVAL], m = 0.5 * (a + b);
+	int ok = 1;
+
+	gauss(x, inner, fixed, a, m, l);
+	gauss(x, inner, fixed, m, b, r);
+	for (int k = 0; k < x->nval; k++)
+		if (!(fabs(l[k] + r[k] - whole[k]) <= x->c->tol[k]))
+			ok = 0;
+	if (ok || depth == 0 || !(m > a && m < b)) {
+		for (int k = 0; k < x->nval; k++)
+			acc[k] += l[k] + r[k];
+		return;
+	}
+	adapt(x, inner, fixed, a, m, l, depth - 1, acc);
+	adapt(x, inner, fixed, m, b, r, depth - 1, acc);
+}
+
+/* The integral over [a, b], adaptively, added to acc. */
+static void
+integrate(const struct ctx *x, int inner, double fixed, double a, double b,
+    double *acc)
+{
+	double whole[LOFT_CLIP_MAXVAL];
+
+	if (!(b > a))
+		return;
+	gauss(x, inner, fixed, a, b, whole);
+	adapt(x, inner, fixed, a, b, whole, inner ? INNER_DEPTH : OUTER_DEPTH,
+	    acc);
+}
+
+/* The inner integral at s: over the pieces of t in [0, 1] between the
+ * clips' roots where the clips hold. */
+static void
+outer_point(const struct ctx *x, double unused, double s, double *out)
+{
+	double r[MAXROOTS + 2];
+	int nr = 0;
+
+	(void)unused;
+	r[nr++] = 0;
+	nr = line_roots(x, 1, s, r, nr);
+	r[nr++] = 1;
+	qsort(r, (size_t)nr, sizeof *r, dcmp);
+	for (int i = 0; i + 1 < nr; i++)
+		if (r[i + 1] > r[i] && kept(x, s, 0.5 * (r[i] + r[i + 1])))
+			integrate(x, 1, s, r[i], r[i + 1], out);
+}
+
+/* Which parameter is the outer: the one along which the first clip's
+ * coordinate changes least, so its level curves are nearest to graphs
+ * of it. */
+static int
+choose_swap(const struct loft_surface *s, int axis)
+{
+	double su = 0, sv = 0;
+
+	for (int i = 0; i <= 4; i++)
+		for (int j = 0; j <= 4; j++) {
+			double p[3], pu[3], pv[3];
+
+			loft_surface_eval(s, i / 4.0, j / 4.0, p, pu, pv);
+			su += fabs(pu[axis]);
+			sv += fabs(pv[axis]);
+		}
+	return su > sv;
+}
+
+int
+loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
+    loft_clip_fn f, void *fctx, int nval, double *acc,
+    struct loft_error *err)
+{
+	struct ctx x;
+	double r[2 * MAXROOTS + 2];
+	int nr = 0;
+
+	if (s->dim != 3 || c->n < 1 || c->n > LOFT_CLIP_MAX || nval < 1 ||
+	    nval > LOFT_CLIP_MAXVAL)
+		return loft_fail(err, LOFT_EINPUT, -1, "a clip needs a surface "
+		    "in space, 1 to %d planes and 1 to %d integrands",
+		    LOFT_CLIP_MAX, LOFT_CLIP_MAXVAL);
+	x.s = s;
+	x.c = c;
+	x.f = f;
+	x.fctx = fctx;
+	x.nval = nval;
+	x.swap = choose_swap(s, c->axis[0]);
+	x.sdeg = x.swap ? s->n : s->m;
+	x.tdeg = x.swap ? s->m : s->n;
+	/* the outer pieces: split where a clip's curve meets t = 0 or 1 */
+	r[nr++] = 0;
+	nr = line_roots(&x, 0, 0.0, r, nr);
+	nr = line_roots(&x, 0, 1.0, r, nr);
+	r[nr++] = 1;
+	qsort(r, (size_t)nr, sizeof *r, dcmp);
+	for (int i = 0; i + 1 < nr; i++)
+		integrate(&x, 0, 0.0, r[i], r[i + 1], acc);
+	return 0;
+}
+
+/* The point of clip 0's curve on the line of outer s nearest to t0 (or
+ * any, t0 < 0), into p; 0 when the line has none. */
+static int
+curve_point(const struct ctx *x, double s, double t0, double *t, double *p)
+{
+	double r[MAXROOTS];
+	int nr = line_roots(x, 1, s, r, 0), best = -1;
+
+	for (int i = 0; i < nr; i++)
+		if (best < 0 || (t0 >= 0 && fabs(r[i] - t0) < fabs(r[best] - t0)))
+			best = i;
+	if (best < 0)
+		return 0;
+	*t = r[best];
+	ev(x, s, *t, p, NULL, NULL);
+	return 1;
+}
+
+/* Samples of the outer parameter when looking for a curve's extremes. */
+#define EXT_SAMPLES 32
+
+/* Golden-section steps refining an extreme: 0.618^60 of a sample step
+ * is below rounding in the parameter, and an extreme's value is then
+ * right to rounding (it is flat there). */
+#define EXT_STEPS 60
+
+/* Refine the largest of sg * p[k] along the curve near outer s0, t0. */
+static double
+refine_extreme(const struct ctx *x, int k, double sg, double s0, double t0,
+    double best)
+{
+	const double g = 0.6180339887498949;
+	double a = fmax(0, s0 - 1.0 / EXT_SAMPLES);
+	double b = fmin(1, s0 + 1.0 / EXT_SAMPLES);
+	double t = t0, p[3];
+
+	for (int i = 0; i < EXT_STEPS; i++) {
+		double s1 = b - g * (b - a), s2 = a + g * (b - a), f1, f2, t1, t2;
+
+		if (!curve_point(x, s1, t, &t1, p))
+			break;
+		f1 = sg * p[k];
+		if (!curve_point(x, s2, t, &t2, p))
+			break;
+		f2 = sg * p[k];
+		best = fmax(best, fmax(f1, f2));
+		if (f1 > f2) {
+			b = s2;
+			t = t1;
+		} else {
+			a = s1;
+			t = t2;
+		}
+	}
+	return best;
+}
+
+/* The extremes found so far along a curve: best[0] the largest of
+ * -p[k], best[1] of p[k], at outer s, inner t. */
+struct ext {
+	double best[2][3], s[2][3], t[2][3];
+	int found;
+};
+
+static void
+consider(const struct ctx *x, struct ext *e, double s, double t)
+{
+	double p[3];
+
+	ev(x, s, t, p, NULL, NULL);
+	for (int k = 0; k < 3; k++)
+		for (int g = 0; g < 2; g++) {
+			double v = g ? p[k] : -p[k];
+
+			if (!e->found || v > e->best[g][k]) {
+				e->best[g][k] = v;
+				e->s[g][k] = s;
+				e->t[g][k] = t;
+			}
+		}
+	e->found = 1;
+}
+
+int
+loft_clip_extremes(const struct loft_surface *s, int axis, double level,
+    double *lo, double *hi)
+{
+	struct loft_clip c = { 1, { axis, 0 }, { level, 0 }, { 0 } };
+	struct ctx x = { s, &c, NULL, NULL, 0, 0, 0, 0 };
+	struct ext e;
+
+	e.found = 0;
+
+	x.swap = choose_swap(s, axis);
+	x.sdeg = x.swap ? s->n : s->m;
+	x.tdeg = x.swap ? s->m : s->n;
+	for (int i = 0; i <= EXT_SAMPLES; i++) {
+		double sv = (double)i / EXT_SAMPLES, r[MAXROOTS];
+		int nr = line_roots(&x, 1, sv, r, 0);
+
+		for (int j = 0; j < nr; j++)
+			consider(&x, &e, sv, r[j]);
+	}
+	/* where the curve meets the edges t = 0 and t = 1 */
+	for (int side = 0; side < 2; side++) {
+		double r[MAXROOTS];
+		int nr = line_roots(&x, 0, (double)side, r, 0);
+
+		for (int j = 0; j < nr; j++)
+			consider(&x, &e, r[j], (double)side);
+	}
+	if (!e.found)
+		return LOFT_EGEOM;
+	for (int k = 0; k < 3; k++)
+		for (int g = 0; g < 2; g++)
+			e.best[g][k] = refine_extreme(&x, k, g ? 1 : -1,
+			    e.s[g][k], e.t[g][k], e.best[g][k]);
+	for (int k = 0; k < 3; k++) {
+		lo[k] = -e.best[0][k];
+		hi[k] = e.best[1][k];
+	}
+	return 0;
+}
