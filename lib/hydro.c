@@ -60,6 +60,12 @@ enum {
 /* Grid and golden-section steps of a surface's extreme point: the grid
  * finds the basin, and 0.618^60 of its step is below rounding. */
 #define EXT_GRID 8
+
+/* The waterline's samples on a surface that come within this part of
+ * the surface's size of the sampled extremes make it worth refining:
+ * samples 1/32 apart (waterline.c's) miss an extreme by at most 1/8 of
+ * their step squared times the second derivative, about the size. */
+#define EXT_MARGIN 1e-3
 #define EXT_STEPS 60
 
 struct frame {
@@ -334,17 +340,27 @@ below(const struct loft_hydro *h, double wl, double *m, double *zn,
 	return 0;
 }
 
-/* The waterline's ends and breadth (inside units: none). */
+/* The extremes along the waterline of the surfaces that reach it, into
+ * lo, hi (coarse: not refined); 0 when there are none. */
 static int
-waterline_box(const struct loft_hydro *h, double wl, double *lo, double *hi)
+waterline_pass(const struct loft_hydro *h, double wl, const double *clo,
+    const double *chi, double *lo, double *hi)
 {
 	int found = 0;
 
 	for (size_t i = 0; i < h->ns; i++) {
-		double a[3], b[3];
+		const double *bx = h->box + 6 * i;
+		double a[3], b[3], margin = EXT_MARGIN * (fabs(bx[3] - bx[0]) +
+		    fabs(bx[4] - bx[1]) + fabs(bx[5] - bx[2]));
+		int refine = clo != NULL;
 
-		if (h->box[6 * i + 2] > wl || h->box[6 * i + 5] < wl ||
-		    loft_clip_extremes(&h->s[i], 2, wl, a, b) != 0)
+		if (h->box[6 * i + 2] > wl || h->box[6 * i + 5] < wl)
+			continue;
+		if (refine && loft_clip_extremes(&h->s[i], 2, wl, 0, a, b) == 0 &&
+		    a[0] > clo[0] + margin && b[0] < chi[0] - margin &&
+		    a[1] > clo[1] + margin && b[1] < chi[1] - margin)
+			refine = 0;     /* far from the extremes */
+		if (loft_clip_extremes(&h->s[i], 2, wl, refine, a, b) != 0)
 			continue;
 		for (int k = 0; k < 3; k++) {
 			lo[k] = found ? fmin(lo[k], a[k]) : a[k];
@@ -354,6 +370,20 @@ waterline_box(const struct loft_hydro *h, double wl, double *lo, double *hi)
 	}
 	return found;
 }
+
+/* The waterline's ends and breadth: the surfaces near the extremes of
+ * the samples refined. */
+static int
+waterline_box(const struct loft_hydro *h, double wl, double *lo, double *hi)
+{
+	double clo[3], chi[3];
+
+	return waterline_pass(h, wl, NULL, NULL, clo, chi) &&
+	    waterline_pass(h, wl, clo, chi, lo, hi);
+}
+
+static double section_area(const struct loft_hydro *h, double wl, double xs,
+    double sg);
 
 /* The hydrostatics from the moments m below the waterline zn (inside). */
 static void
@@ -395,8 +425,7 @@ loft_hydro_at(const struct loft_hydro *h, double wl,
 		    "no surface", wl);
 	o->lwl = hi[0] - lo[0];
 	o->bwl = h->whole ? hi[1] - lo[1] : 2 * hi[1];
-	if (loft_hydro_section(h, wl, lo[0] / 2 + hi[0] / 2, &o->am, err) != 0)
-		return LOFT_EGEOM;
+	o->am = section_area(h, wl, lo[0] / 2 + hi[0] / 2, sg);
 	o->cb = o->volume / (o->lwl * o->bwl * o->t);
 	o->cp = o->volume / (o->am * o->lwl);
 	o->cm = o->am / (o->bwl * o->t);
@@ -404,17 +433,26 @@ loft_hydro_at(const struct loft_hydro *h, double wl,
 	return 0;
 }
 
+/* The section's area, the normals' sense sg known. */
+static double
+section_area(const struct loft_hydro *h, double wl, double xs, double sg)
+{
+	double m[NM], lv[2] = { wl, xs };
+	int axis[2] = { 2, 0 };
+
+	hull_moments(h, 2, axis, lv, m);
+	return -sg * (h->whole ? 1 : 2) * m[M_NX] * h->scale * h->scale;
+}
+
 int
 loft_hydro_section(const struct loft_hydro *h, double wl, double xs,
     double *area, struct loft_error *err)
 {
-	double m[NM], zn, lv[2] = { wl, xs }, sg;
-	int axis[2] = { 2, 0 };
+	double m[NM], zn, sg;
 
 	if (below(h, wl, m, &zn, &sg, err) != 0)
 		return LOFT_EGEOM;
-	hull_moments(h, 2, axis, lv, m);
-	*area = -sg * (h->whole ? 1 : 2) * m[M_NX] * h->scale * h->scale;
+	*area = section_area(h, wl, xs, sg);
 	return 0;
 }
 

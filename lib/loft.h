@@ -1370,11 +1370,13 @@ int loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
 
 /*
  * The extremes lo[k], hi[k] (k < 3) of the points of s on the plane
- * p[axis] = level (a waterline's ends and breadth), found to rounding.
- * Returns 0, or LOFT_EGEOM when the plane misses s.
+ * p[axis] = level (a waterline's ends and breadth): with refine, found
+ * to rounding; without, the best of samples along the curve (cheaper,
+ * to choose the surfaces worth refining).  Returns 0, or LOFT_EGEOM
+ * when the plane misses s.
  */
 int loft_clip_extremes(const struct loft_surface *s, int axis, double level,
-    double *lo, double *hi);
+    int refine, double *lo, double *hi);
 
 /* ------------------------------------------------------------------ */
 /* Hydrostatics of a hull of surfaces (hydro.c)                        */

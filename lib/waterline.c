@@ -14,6 +14,7 @@
  * the inner integral is smooth in s.  The roles of u and v are chosen
  * per surface so that the curve is as near as can be to a graph of s.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,21 +36,23 @@ static const double gauss_w[5] = {
 	0.0666713443086881375935688
 };
 
-/* Halvings of an outer (inner) piece before its estimate is taken as it
- * is: 2^-40 of the parameter is far below what the tolerances ask on
- * any integrand that is not singular; the cap only bounds the work. */
+/* Halvings of an outer piece before its estimate is taken as it is:
+ * 2^-40 of the parameter is far below what the tolerances ask on any
+ * integrand that is not singular; the cap only bounds the work.  The
+ * inner integrand is smooth between the roots found, and one rule of
+ * GAUSS_N points is exact there on polynomials. */
 #define OUTER_DEPTH 40
-#define INNER_DEPTH 24
 
 /* Samples per degree when looking for roots along a parameter line: a
  * sign change between samples brackets a root; two roots closer than
  * 1/(ROOT_SAMPLES deg) are a near-tangency whose sliver is below the
  * tolerances. */
-#define ROOT_SAMPLES 4
+#define ROOT_SAMPLES 2
 
-/* Bisection steps after the bracket: 2^-60 of the parameter is below
- * rounding. */
-#define ROOT_STEPS 60
+/* Steps of the root finder after the bracket (it takes about ten), and
+ * the width of bracket that is the root: a parameter's rounding. */
+#define ROOT_STEPS 100
+#define ROOT_WIDTH (4 * DBL_EPSILON)
 
 #define MAXROOTS (4 * LOFT_BEZIER_MAXPTS + 8)
 
@@ -59,6 +62,7 @@ struct ctx {
 	loft_clip_fn f;
 	void *fctx;
 	int nval, swap, tdeg, sdeg;
+	int live[LOFT_CLIP_MAX];        /* the plane crosses the net's box */
 };
 
 /* The surface at outer s, inner t. */
@@ -82,26 +86,46 @@ gclip(const struct ctx *x, int k, double s, double t)
 	return p[x->c->axis[k]] - x->c->level[k];
 }
 
-/* The root of clip k along the line (inner: s fixed; else t fixed at
- * `fixed`) between a and b where the sign changes, by bisection. */
+/* Clip k's function along a line: inner (s fixed at `fixed`, q is t)
+ * or outer (t fixed, q is s). */
 static double
-bisect(const struct ctx *x, int k, int inner, double fixed, double a,
-    double b, double ga)
+gline(const struct ctx *x, int k, int inner, double fixed, double q)
 {
-	for (int i = 0; i < ROOT_STEPS; i++) {
-		double m = 0.5 * (a + b);
-		double gm = inner ? gclip(x, k, fixed, m) : gclip(x, k, m, fixed);
+	return inner ? gclip(x, k, fixed, q) : gclip(x, k, q, fixed);
+}
 
-		if (m <= a || m >= b)
-			break;
-		if ((gm < 0) == (ga < 0)) {
-			a = m;
-			ga = gm;
+/* The root of clip k along a line between a and b where the sign
+ * changes (ga, gb the values there), by the Illinois variant of regula
+ * falsi: the bracket always holds the root, and shrinks superlinearly. */
+static double
+bracket_root(const struct ctx *x, int k, int inner, double fixed, double a,
+    double b, double ga, double gb)
+{
+	int side = 0;
+
+	for (int i = 0; i < ROOT_STEPS && b - a > ROOT_WIDTH; i++) {
+		double c = (a * gb - b * ga) / (gb - ga), gc;
+
+		if (!(c > a && c < b))
+			c = 0.5 * (a + b);
+		gc = gline(x, k, inner, fixed, c);
+		if (gc == 0)
+			return c;
+		if ((gc < 0) == (gb < 0)) {
+			b = c;
+			gb = gc;
+			if (side == -1)
+				ga *= 0.5;
+			side = -1;
 		} else {
-			b = m;
+			a = c;
+			ga = gc;
+			if (side == 1)
+				gb *= 0.5;
+			side = 1;
 		}
 	}
-	return 0.5 * (a + b);
+	return fabs(ga) < fabs(gb) ? a : b;
 }
 
 /* Append to r the roots of every clip along a line (see bisect). */
@@ -112,16 +136,19 @@ line_roots(const struct ctx *x, int inner, double fixed, double *r, int nr)
 	int ns = ROOT_SAMPLES * deg + 4;
 
 	for (int k = 0; k < x->c->n; k++) {
-		double a = 0, ga = inner ? gclip(x, k, fixed, 0) :
-		    gclip(x, k, 0, fixed);
+		double a = 0, ga;
+
+		if (!x->live[k])
+			continue;
+		ga = gline(x, k, inner, fixed, 0);
 
 		for (int i = 1; i <= ns && nr < MAXROOTS; i++) {
 			double b = (double)i / ns;
-			double gb = inner ? gclip(x, k, fixed, b) :
-			    gclip(x, k, b, fixed);
+			double gb = gline(x, k, inner, fixed, b);
 
 			if ((ga < 0) != (gb < 0))
-				r[nr++] = bisect(x, k, inner, fixed, a, b, ga);
+				r[nr++] = bracket_root(x, k, inner, fixed, a, b,
+				    ga, gb);
 			a = b;
 			ga = gb;
 		}
@@ -188,7 +215,7 @@ gauss(const struct ctx *x, int inner, double fixed, double a, double b,
 	}
 }
 
-/* Adaptive: the rule over [a, b] (whole) against the sum of its halves;
+/* Adaptive (outer): the rule over [a, b] (whole) against the sum of its halves;
  * the halves are kept when they agree within tol, else each is halved. */
 static void
 adapt(const struct ctx *x, int inner, double fixed, double a, double b,
@@ -221,8 +248,12 @@ integrate(const struct ctx *x, int inner, double fixed, double a, double b,
 	if (!(b > a))
 		return;
 	gauss(x, inner, fixed, a, b, whole);
-	adapt(x, inner, fixed, a, b, whole, inner ? INNER_DEPTH : OUTER_DEPTH,
-	    acc);
+	if (inner) {            /* smooth between the roots: one rule */
+		for (int k = 0; k < x->nval; k++)
+			acc[k] += whole[k];
+		return;
+	}
+	adapt(x, inner, fixed, a, b, whole, OUTER_DEPTH, acc);
 }
 
 /* The inner integral at s: over the pieces of t in [0, 1] between the
@@ -268,13 +299,18 @@ loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
     struct loft_error *err)
 {
 	struct ctx x;
-	double r[2 * MAXROOTS + 2];
+	double r[2 * MAXROOTS + 2], lo[3], hi[3];
 	int nr = 0;
 
-	if (s->dim != 3 || c->n < 1 || c->n > LOFT_CLIP_MAX || nval < 1 ||
-	    nval > LOFT_CLIP_MAXVAL)
+	int bad = s->dim != 3 || c->n < 1 || c->n > LOFT_CLIP_MAX ||
+	    nval < 1 || nval > LOFT_CLIP_MAXVAL;
+
+	for (int k = 0; !bad && k < c->n; k++)
+		bad = c->axis[k] < 0 || c->axis[k] > 2;
+	if (bad)
 		return loft_fail(err, LOFT_EINPUT, -1, "a clip needs a surface "
-		    "in space, 1 to %d planes and 1 to %d integrands",
+		    "in space, 1 to %d planes of x, y or z and 1 to %d "
+		    "integrands",
 		    LOFT_CLIP_MAX, LOFT_CLIP_MAXVAL);
 	x.s = s;
 	x.c = c;
@@ -284,6 +320,12 @@ loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
 	x.swap = choose_swap(s, c->axis[0]);
 	x.sdeg = x.swap ? s->n : s->m;
 	x.tdeg = x.swap ? s->m : s->n;
+	loft_surface_box(s, lo, hi);
+	for (int k = 0; k < c->n; k++) {
+		if (lo[c->axis[k]] >= c->level[k])
+			return 0;       /* nothing kept */
+		x.live[k] = hi[c->axis[k]] > c->level[k];
+	}
 	/* the outer pieces: split where a clip's curve meets t = 0 or 1 */
 	r[nr++] = 0;
 	nr = line_roots(&x, 0, 0.0, r, nr);
@@ -295,31 +337,39 @@ loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
 	return 0;
 }
 
-/* The point of clip 0's curve on the line of outer s nearest to t0 (or
- * any, t0 < 0), into p; 0 when the line has none. */
+/* The point of clip 0's curve on the line of outer s nearest to t0,
+ * into p: a bracket widened from t0 until the sign changes, then its
+ * root.  0 when none is found within the line. */
 static int
 curve_point(const struct ctx *x, double s, double t0, double *t, double *p)
 {
-	double r[MAXROOTS];
-	int nr = line_roots(x, 1, s, r, 0), best = -1;
+	double g0 = gline(x, 0, 1, s, t0);
 
-	for (int i = 0; i < nr; i++)
-		if (best < 0 || (t0 >= 0 && fabs(r[i] - t0) < fabs(r[best] - t0)))
-			best = i;
-	if (best < 0)
-		return 0;
-	*t = r[best];
-	ev(x, s, *t, p, NULL, NULL);
-	return 1;
+	for (double d = 1.0 / 256; d < 2; d *= 2) {
+		double a = fmax(0, t0 - d), b = fmin(1, t0 + d);
+		double ga = gline(x, 0, 1, s, a), gb = gline(x, 0, 1, s, b);
+
+		if ((ga < 0) != (g0 < 0) || (gb < 0) != (g0 < 0)) {
+			int left = (ga < 0) != (g0 < 0);
+
+			*t = left ? bracket_root(x, 0, 1, s, a, t0, ga, g0) :
+			    bracket_root(x, 0, 1, s, t0, b, g0, gb);
+			ev(x, s, *t, p, NULL, NULL);
+			return 1;
+		}
+		if (a == 0 && b == 1)
+			break;
+	}
+	return 0;
 }
 
 /* Samples of the outer parameter when looking for a curve's extremes. */
 #define EXT_SAMPLES 32
 
-/* Golden-section steps refining an extreme: 0.618^60 of a sample step
+/* Golden-section steps refining an extreme: 0.618^40 of a sample step
  * is below rounding in the parameter, and an extreme's value is then
  * right to rounding (it is flat there). */
-#define EXT_STEPS 60
+#define EXT_STEPS 40
 
 /* Refine the largest of sg * p[k] along the curve near outer s0, t0. */
 static double
@@ -380,10 +430,10 @@ consider(const struct ctx *x, struct ext *e, double s, double t)
 
 int
 loft_clip_extremes(const struct loft_surface *s, int axis, double level,
-    double *lo, double *hi)
+    int refine, double *lo, double *hi)
 {
 	struct loft_clip c = { 1, { axis, 0 }, { level, 0 }, { 0 } };
-	struct ctx x = { s, &c, NULL, NULL, 0, 0, 0, 0 };
+	struct ctx x = { s, &c, NULL, NULL, 0, 0, 0, 0, { 1, 0 } };
 	struct ext e;
 
 	e.found = 0;
@@ -408,8 +458,8 @@ loft_clip_extremes(const struct loft_surface *s, int axis, double level,
 	}
 	if (!e.found)
 		return LOFT_EGEOM;
-	for (int k = 0; k < 3; k++)
-		for (int g = 0; g < 2; g++)
+	for (int k = 0; refine && k < 3; k++)
+		for (int g = 0; k != axis && g < 2; g++)
 			e.best[g][k] = refine_extreme(&x, k, g ? 1 : -1,
 			    e.s[g][k], e.t[g][k], e.best[g][k]);
 	for (int k = 0; k < 3; k++) {
