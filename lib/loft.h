@@ -1378,6 +1378,16 @@ int loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
 int loft_clip_extremes(const struct loft_surface *s, int axis, double level,
     int refine, double *lo, double *hi);
 
+/*
+ * The largest p[k] over the points of s on both planes p[a] = la and
+ * p[b] = lb (a half-breadth at a station and waterline: a = 0, b = 2,
+ * k = 1), by Newton's method from a grid of seeds, to rounding.  a, b,
+ * k in 0..2, a != b.  Returns 0 and *best, or LOFT_EGEOM when no point
+ * of s is on both.
+ */
+int loft_surface_meet(const struct loft_surface *s, int a, double la, int b,
+    double lb, int k, double *best);
+
 /* ------------------------------------------------------------------ */
 /* Hydrostatics of a hull of surfaces (hydro.c)                        */
 

@@ -165,7 +165,7 @@ int loft_opt_digits(const char *arg, struct loft_writer *w,
 /*
  * An option's levels: "v", or "from:to:step" (from <= to, step > 0; the
  * steps in 15 decimal digits, to itself included where they reach it
- * within rounding), appended to the malloc'd *v of *n (capacity *cap).
+ * within rounding), or a comma-separated list of those, appended to the malloc'd *v of *n (capacity *cap).
  * Returns 0, or LOFT_EINPUT / LOFT_ENOMEM with err saying why.
  * (optrange.c)
  */

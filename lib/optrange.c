@@ -1,5 +1,6 @@
 /*
- * optrange.c: an option's list of levels, "v" or "from:to:step", as
+ * optrange.c: an option's list of levels, "v" or "from:to:step", or a
+ * comma-separated list of those, as
  * hydro -z and offsets -x and -z take them.
  */
 #include <stdlib.h>
@@ -19,23 +20,26 @@ push(double **v, size_t *n, size_t *cap, double x, struct loft_error *err)
 	return 0;
 }
 
-int
-loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
+/* One item of the list: v or from:to:step, ending at end. */
+static int
+item(const char *s, const char *end, double **v, size_t *n, size_t *cap,
     struct loft_error *err)
 {
 	double a[3];
-	const char *s = arg;
 	int k = 0;
 	long count;
 
 	for (;;) {
-		size_t len = strcspn(s, ":");
+		size_t len = strcspn(s, ":,");
+
+		if (s + len > end)
+			len = (size_t)(end - s);
 
 		if (k == 3 || loft_parse_num(s, len, &a[k], err) != 0)
 			return loft_fail(err, LOFT_EINPUT, -1, "want a value or "
 			    "from:to:step");
 		k++;
-		if (s[len] == '\0')
+		if (s + len >= end)
 			break;
 		s += len + 1;
 	}
@@ -62,4 +66,21 @@ loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
 			return LOFT_ENOMEM;
 	}
 	return 0;
+}
+
+int
+loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
+    struct loft_error *err)
+{
+	for (const char *s = arg;; ) {
+		const char *end = s + strcspn(s, ",");
+
+		int rc = item(s, end, v, n, cap, err);
+
+		if (rc != 0)
+			return rc;
+		if (*end == '\0')
+			return 0;
+		s = end + 1;
+	}
 }

@@ -468,3 +468,66 @@ loft_clip_extremes(const struct loft_surface *s, int axis, double level,
 	}
 	return 0;
 }
+
+/* Seeds per direction of loft_surface_meet's Newton iterations, and its
+ * steps: Newton from the nearest seed converges in a few; the rest of
+ * the steps polish to rounding or give up on a seed that wanders. */
+#define MEET_SEEDS 6
+#define MEET_STEPS 40
+
+/* A point meets both planes when it is off them by at most this part
+ * of the surface's size: rounding of its coordinates. */
+#define MEET_TOL 1e-12
+
+/* Newton's iterations from (u, v) on the two planes' residuals, the
+ * parameters kept in [0, 1]; 0 and the point in p when it converged. */
+static int
+meet_newton(const struct loft_surface *s, int a, double la, int b,
+    double lb, double u, double v, double size, double *p)
+{
+	for (int i = 0; i < MEET_STEPS; i++) {
+		double pu[3], pv[3], fa, fb, det, du, dv;
+
+		loft_surface_eval(s, u, v, p, pu, pv);
+		fa = p[a] - la;
+		fb = p[b] - lb;
+		det = pu[a] * pv[b] - pv[a] * pu[b];
+		if (!(fabs(det) > 0))
+			return -1;
+		du = (fa * pv[b] - fb * pv[a]) / det;
+		dv = (pu[a] * fb - pu[b] * fa) / det;
+		u = fmin(1, fmax(0, u - du));
+		v = fmin(1, fmax(0, v - dv));
+		if (fabs(du) + fabs(dv) <= 4 * DBL_EPSILON)
+			break;
+	}
+	loft_surface_eval(s, u, v, p, NULL, NULL);
+	return fabs(p[a] - la) <= MEET_TOL * size &&
+	    fabs(p[b] - lb) <= MEET_TOL * size ? 0 : -1;
+}
+
+int
+loft_surface_meet(const struct loft_surface *s, int a, double la, int b,
+    double lb, int k, double *best)
+{
+	double lo[3], hi[3], size = 0;
+	int found = 0;
+
+	loft_surface_box(s, lo, hi);
+	for (int i = 0; i < 3; i++)
+		size = fmax(size, hi[i] - lo[i]);
+	if (la < lo[a] || la > hi[a] || lb < lo[b] || lb > hi[b])
+		return LOFT_EGEOM;
+	for (int i = 0; i < MEET_SEEDS; i++)
+		for (int j = 0; j < MEET_SEEDS; j++) {
+			double p[3];
+
+			if (meet_newton(s, a, la, b, lb, (i + 0.5) / MEET_SEEDS,
+			    (j + 0.5) / MEET_SEEDS, size, p) != 0)
+				continue;
+			if (!found || p[k] > *best)
+				*best = p[k];
+			found = 1;
+		}
+	return found ? 0 : LOFT_EGEOM;
+}
