@@ -61,7 +61,7 @@ MAN7    = man/loft.7
 EXAMPLES = $(addprefix man/examples/,README knots toe.knots insole.knots \
           arc.knots hull.knots seam.knots insole.dxf many-insoles.knots \
           v0.knots v1.knots u0.knots u1.knots hull.patch split.patch \
-          pieces.patch hull.design noisy-insole.pts)
+          pieces.patch hull.design noisy-insole.pts hull.offsets)
 EXDIR   = $(DESTDIR)$(PREFIX)/share/loft/examples
 
 all: $(BINS) $(LIB)

@@ -98,7 +98,7 @@ read_levels(const struct loft_record *rec, double *z, struct loft_error *err)
 		    "its waterlines z=");
 	if (loft_parse_list(a, z, rec->ncols - 1, &n, err) != 0 ||
 	    n != rec->ncols - 1)
-		return loft_fail(err, LOFT_EINPUT, -1, "z=%s: want %d "
+		return loft_fail(err, LOFT_EINPUT, 0, "z=%s: want %d "
 		    "waterline heights, one per half-breadth column", a,
 		    rec->ncols - 1);
 	for (int i = 1; i < n; i++)

@@ -441,7 +441,9 @@ section_area(const struct loft_hydro *h, double wl, double xs, double sg)
 	int axis[2] = { 2, 0 };
 
 	hull_moments(h, 2, axis, lv, m);
-	return -sg * (h->whole ? 1 : 2) * m[M_NX] * h->scale * h->scale;
+	/* at the ends the area is 0 but for rounding, of either sign */
+	return fmax(0, -sg * (h->whole ? 1 : 2) * m[M_NX] * h->scale *
+	    h->scale);
 }
 
 int

@@ -54,6 +54,8 @@ slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh
 slow sh tests/approx.sh
+suite sh tests/hydro.sh
+suite sh tests/offsets.sh
 suite sh tests/synopsis.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
