@@ -255,6 +255,7 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
           patchjoin loftplot grade offset measure patchloft patchcut fromcad
+FUZZERS += hydro offsets
 LIBSRC  = $(LIBOBJ:bin/obj/%.o=lib/%.c)
 
 bin/fuzz/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(LIBSRC) lib/loft.h \
