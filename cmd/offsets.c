@@ -20,6 +20,27 @@ struct opts {
 /* A half-breadth the table lacks: no point of the hull there. */
 #define NONE (-1.0)
 
+/* A half-breadth within this part of the hull's size of 0 is a point on
+ * the centreplane, off it by the rounding of the surfaces' evaluation
+ * (a stem or keel station lofted through y = 0). */
+#define CENTRE_TOL 1e-12
+
+/* The largest extent of the surfaces' boxes. */
+static double
+hull_size(const struct loft_surface *s, size_t ns)
+{
+	double size = 0;
+
+	for (size_t k = 0; k < ns; k++) {
+		double lo[3], hi[3];
+
+		loft_surface_box(&s[k], lo, hi);
+		for (int i = 0; i < 3; i++)
+			size = fmax(size, hi[i] - lo[i]);
+	}
+	return size;
+}
+
 static const char usage_text[] =
     "usage: offsets -x x|from:to:step -z z|from:to:step [-p digits] "
     "[file ...]\n"
@@ -51,12 +72,13 @@ tabulate(struct loft_run *run, const struct loft_record *recs, size_t n)
 	const struct opts *o = run->ctx;
 	struct loft_surface *s;
 	size_t ns;
-	double *row;
+	double *row, size;
 
 	if (n == 0)
 		return 0;
 	if (loft_surfaces_from_records(run, recs, n, &s, &ns) != 0)
 		return 1;
+	size = hull_size(s, ns);
 	if ((row = malloc((o->nz + 1) * sizeof *row)) == NULL) {
 		fputs("offsets: out of memory\n", run->msg);
 		free(s);
@@ -77,6 +99,8 @@ tabulate(struct loft_run *run, const struct loft_record *recs, size_t n)
 				    1, &y) == 0 && y > row[j + 1])
 					row[j + 1] = fmax(0, y);
 			}
+			if (row[j + 1] >= 0 && row[j + 1] <= CENTRE_TOL * size)
+				row[j + 1] = 0;
 		}
 		loft_put_row(&run->w, row, (int)o->nz + 1);
 	}
