@@ -63,8 +63,9 @@ enum {
 
 /* The waterline's samples on a surface that come within this part of
  * the surface's size of the sampled extremes make it worth refining:
- * samples 1/32 apart (waterline.c's) miss an extreme by at most 1/8 of
- * their step squared times the second derivative, about the size. */
+ * samples 1/16 apart (waterline.c's) miss an extreme by at most 1/8 of
+ * their step squared, 1/2048, times the second derivative, about the
+ * size. */
 #define EXT_MARGIN 1e-3
 #define EXT_STEPS 60
 
@@ -340,46 +341,55 @@ below(const struct loft_hydro *h, double wl, double *m, double *zn,
 	return 0;
 }
 
-/* The extremes along the waterline of the surfaces that reach it, into
- * lo, hi (coarse: not refined); 0 when there are none. */
-static int
-waterline_pass(const struct loft_hydro *h, double wl, const double *clo,
-    const double *chi, double *lo, double *hi)
-{
-	int found = 0;
-
-	for (size_t i = 0; i < h->ns; i++) {
-		const double *bx = h->box + 6 * i;
-		double a[3], b[3], margin = EXT_MARGIN * (fabs(bx[3] - bx[0]) +
-		    fabs(bx[4] - bx[1]) + fabs(bx[5] - bx[2]));
-		int refine = clo != NULL;
-
-		if (h->box[6 * i + 2] > wl || h->box[6 * i + 5] < wl)
-			continue;
-		if (refine && loft_clip_extremes(&h->s[i], 2, wl, 0, a, b) == 0 &&
-		    a[0] > clo[0] + margin && b[0] < chi[0] - margin &&
-		    a[1] > clo[1] + margin && b[1] < chi[1] - margin)
-			refine = 0;     /* far from the extremes */
-		if (loft_clip_extremes(&h->s[i], 2, wl, refine, a, b) != 0)
-			continue;
-		for (int k = 0; k < 3; k++) {
-			lo[k] = found ? fmin(lo[k], a[k]) : a[k];
-			hi[k] = found ? fmax(hi[k], b[k]) : b[k];
-		}
-		found = 1;
-	}
-	return found;
-}
-
-/* The waterline's ends and breadth: the surfaces near the extremes of
- * the samples refined. */
+/* The waterline's ends and breadth: the extremes of samples along it on
+ * every surface it crosses, then refined on the surfaces whose samples
+ * come near the extremes of all.  0 when it crosses none, -1 when
+ * memory ran out. */
 static int
 waterline_box(const struct loft_hydro *h, double wl, double *lo, double *hi)
 {
-	double clo[3], chi[3];
+	double *c = malloc(h->ns * 6 * sizeof *c), glo[3], ghi[3];
+	int found = 0;
 
-	return waterline_pass(h, wl, NULL, NULL, clo, chi) &&
-	    waterline_pass(h, wl, clo, chi, lo, hi);
+	if (c == NULL)
+		return -1;
+	for (size_t i = 0; i < h->ns; i++) {
+		double *a = c + 6 * i, *b = a + 3;
+
+		a[0] = HUGE_VAL;        /* not crossed */
+		if (h->box[6 * i + 2] > wl || h->box[6 * i + 5] < wl ||
+		    loft_clip_extremes(&h->s[i], 2, wl, 0, a, b) != 0) {
+			a[0] = HUGE_VAL;
+			continue;
+		}
+		for (int k = 0; k < 3; k++) {
+			glo[k] = found ? fmin(glo[k], a[k]) : a[k];
+			ghi[k] = found ? fmax(ghi[k], b[k]) : b[k];
+		}
+		found = 1;
+	}
+	for (int k = 0; found && k < 3; k++) {
+		lo[k] = glo[k];
+		hi[k] = ghi[k];
+	}
+	for (size_t i = 0; found && i < h->ns; i++) {
+		const double *bx = h->box + 6 * i, *a = c + 6 * i, *b = a + 3;
+		double ra[3], rb[3], margin = EXT_MARGIN * (fabs(bx[3] - bx[0]) +
+		    fabs(bx[4] - bx[1]) + fabs(bx[5] - bx[2]));
+
+		if (a[0] == HUGE_VAL || (a[0] > glo[0] + margin && b[0] <
+		    ghi[0] - margin && a[1] > glo[1] + margin && b[1] <
+		    ghi[1] - margin))
+			continue;       /* far from the extremes */
+		if (loft_clip_extremes(&h->s[i], 2, wl, 1, ra, rb) != 0)
+			continue;
+		for (int k = 0; k < 3; k++) {
+			lo[k] = fmin(lo[k], ra[k]);
+			hi[k] = fmax(hi[k], rb[k]);
+		}
+	}
+	free(c);
+	return found;
 }
 
 static double section_area(const struct loft_hydro *h, double wl, double xs,
@@ -414,13 +424,16 @@ loft_hydro_at(const struct loft_hydro *h, double wl,
     struct loft_hydrostatics *o, struct loft_error *err)
 {
 	double m[NM], zn, lo[3], hi[3], sg;
+	int rc;
 
 	memset(o, 0, sizeof *o);
 	o->z = wl;
 	if (below(h, wl, m, &zn, &sg, err) != 0)
 		return LOFT_EGEOM;
 	from_moments(h, m, zn, o);
-	if (!waterline_box(h, wl, lo, hi))
+	if ((rc = waterline_box(h, wl, lo, hi)) < 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (rc == 0)
 		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g meets "
 		    "no surface", wl);
 	o->lwl = hi[0] - lo[0];
@@ -463,8 +476,11 @@ loft_hydro_ends(const struct loft_hydro *h, double wl, double *x0, double *x1,
     struct loft_error *err)
 {
 	double lo[3], hi[3];
+	int rc = waterline_box(h, wl, lo, hi);
 
-	if (!waterline_box(h, wl, lo, hi))
+	if (rc < 0)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (rc == 0)
 		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g meets "
 		    "no surface", wl);
 	*x0 = lo[0];

@@ -364,7 +364,7 @@ curve_point(const struct ctx *x, double s, double t0, double *t, double *p)
 }
 
 /* Samples of the outer parameter when looking for a curve's extremes. */
-#define EXT_SAMPLES 32
+#define EXT_SAMPLES 16
 
 /* Golden-section steps refining an extreme: 0.618^40 of a sample step
  * is below rounding in the parameter, and an extreme's value is then

@@ -57,6 +57,12 @@ bin/test/noisy -n 10000 -s 0.3 -r 14 insole man/figures/insole.knots \
 awk '/^points/ && ++n == 101 { exit } { print }' $W/sections.knots |
     $B/splinefit -o >$W/sections.cubic || exit 1
 $B/patchloft $W/sections101.cubic >$W/hull.design || exit 1
+# issue 25: a half hull of 1000 patches, 41 stations of 26 knots (the
+# end stations on the centreplane), for a 20-waterline hydro table
+awk 'BEGIN { for (i = 0; i < 41; i++) { x = 2.5 * i; f = 1 - (x / 50 - 1)^2
+	print "points"; for (j = 0; j < 26; j++) { t = j / 25
+	    printf "%.6f %.6f %.6f\n", x, 6 * f * (1 - (1 - t)^4), 8 * t }
+	print "" } }' | $B/splinefit -o | $B/patchloft >$W/hull1000.design || exit 1
 # fromcad's corpus: the fitted insoles sampled 8 points a segment, each a
 # closed LWPOLYLINE of 177 vertices on layer 1, in millimetres: 50 MB
 echo "bench: making $W/insoles.dxf: the insoles as 10^4 LWPOLYLINEs, 50 MB"
@@ -126,6 +132,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ sample-n25 "$B/sample -n 25 $W/insoles.cubic"
 	case_ patchloft "$B/patchloft $W/sections.cubic"
 	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
+	case_ hydro "$B/hydro -z 1:6.7:0.3 $W/hull1000.design"
+	case_ patchcut-wl "$B/patchcut -z 1:6.7:0.3 $W/hull1000.design"
 	case_ approx "$B/splinefit -e 1.6 $W/noisy100000.pts"
 	case_ approx-small "$B/splinefit -e 1.6 $W/noisy10000.pts"
 	case_ interp-noisy "$B/splinefit -d 0 $W/noisy100000.pts"
@@ -156,3 +164,6 @@ echo "bench: splinefit -e 1.6 of 10^5 noisy points of the insole (under" \
     "1 s), over interpolating them (-d 0: every point a knot), and over" \
     "10^4 of them (linear: about 10)"
 $W/timeit -r $OUT approx/interp-noisy approx/approx-small
+echo "bench: hydro's table of 20 waterlines of a 1000-patch hull (under" \
+    "1 s), over patchcut's 20 waterlines of it"
+$W/timeit -r $OUT hydro/patchcut-wl
