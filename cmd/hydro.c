@@ -199,8 +199,7 @@ main(int argc, char *argv[])
 		switch (c) {
 		case 'w': o.whole = 1; break;
 		case 'z':
-			if (loft_opt_range(optarg, &o.z, &o.nz, &o.zcap, &err))
-				loft_usage_error(usage_text, c, err.msg);
+			loft_opt_range(usage_text, c, optarg, &o.z, &o.nz, &o.zcap);
 			break;
 		case 'f':
 			if (parse_fields(optarg, &o, &err))
@@ -231,8 +230,8 @@ main(int argc, char *argv[])
 		if (o.field[i] == F_DISPLACEMENT && !(o.rho > 0))
 			loft_usage_error(usage_text, 'f', "displacement needs "
 			    "a density, -r");
-	if (o.nz == 0 && loft_opt_range("0", &o.z, &o.nz, &o.zcap, &err))
-		loft_usage_error(usage_text, 0, err.msg);
+	if (o.nz == 0)
+		loft_opt_range(usage_text, 'z', "0", &o.z, &o.nz, &o.zcap);
 	c = loft_run_design(&run, argc - optind, argv + optind, hydro_design);
 	free(o.z);
 	return c;

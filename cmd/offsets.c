@@ -196,12 +196,10 @@ main(int argc, char *argv[])
 	while ((c = getopt(argc, argv, "x:z:kp:h")) != -1) {
 		switch (c) {
 		case 'x':
-			if (loft_opt_range(optarg, &o.x, &o.nx, &o.xcap, &err))
-				loft_usage_error(usage_text, c, err.msg);
+			loft_opt_range(usage_text, c, optarg, &o.x, &o.nx, &o.xcap);
 			break;
 		case 'z':
-			if (loft_opt_range(optarg, &o.z, &o.nz, &o.zcap, &err))
-				loft_usage_error(usage_text, c, err.msg);
+			loft_opt_range(usage_text, c, optarg, &o.z, &o.nz, &o.zcap);
 			break;
 		case 'k': o.knots = 1; break;
 		case 'p':

@@ -163,14 +163,15 @@ int loft_opt_digits(const char *arg, struct loft_writer *w,
     struct loft_error *err);
 
 /*
- * An option's levels: "v", or "from:to:step" (from <= to, step > 0; the
+ * Option opt's levels: "v", or "from:to:step" (from <= to, step > 0; the
  * steps in 15 decimal digits, to itself included where they reach it
- * within rounding), or a comma-separated list of those, appended to the malloc'd *v of *n (capacity *cap).
- * Returns 0, or LOFT_EINPUT / LOFT_ENOMEM with err saying why.
- * (optrange.c)
+ * within rounding), or a comma-separated list of those, appended to the
+ * malloc'd *v of *n (capacity *cap).  A bad arg is a usage error
+ * (loft_usage_error with usage); when memory runs out, "prog: out of
+ * memory" and exit 1.  (optrange.c)
  */
-int loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
-    struct loft_error *err);
+void loft_opt_range(const char *usage, int opt, const char *arg, double **v,
+    size_t *n, size_t *cap);
 
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,

@@ -68,13 +68,13 @@ item(const char *s, const char *end, double **v, size_t *n, size_t *cap,
 	return 0;
 }
 
-int
-loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
+/* Parse arg into the levels, or 0 and a code with err. */
+static int
+parse(const char *arg, double **v, size_t *n, size_t *cap,
     struct loft_error *err)
 {
 	for (const char *s = arg;; ) {
 		const char *end = s + strcspn(s, ",");
-
 		int rc = item(s, end, v, n, cap, err);
 
 		if (rc != 0)
@@ -83,4 +83,23 @@ loft_opt_range(const char *arg, double **v, size_t *n, size_t *cap,
 			return 0;
 		s = end + 1;
 	}
+}
+
+void
+loft_opt_range(const char *usage, int opt, const char *arg, double **v,
+    size_t *n, size_t *cap)
+{
+	struct loft_error err;
+	int rc = parse(arg, v, n, cap, &err);
+
+	if (rc == LOFT_ENOMEM) {
+		/* the program's name: the usage's word after "usage: " */
+		const char *prog = usage + strlen("usage: ");
+
+		fprintf(stderr, "%.*s: out of memory\n",
+		    (int)strcspn(prog, " \n"), prog);
+		exit(1);
+	}
+	if (rc != 0)
+		loft_usage_error(usage, opt, err.msg);
 }

@@ -20,9 +20,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if (size < 2)
 		return 0;
 	o.whole = data[0] & 1;
-	if (loft_opt_range(data[0] & 2 ? "-0.2:0:0.1" : "0", &o.z, &o.nz,
-	    &o.zcap, &err) != 0)
-		abort();
+	loft_opt_range(usage_text, 'z', data[0] & 2 ? "-0.2:0:0.1" : "0",
+	    &o.z, &o.nz, &o.zcap);
 	o.stations = data[0] & 4 ? 3 : 0;
 	if (data[0] & 8) {
 		o.rho = 1.025;

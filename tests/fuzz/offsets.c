@@ -15,7 +15,6 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	struct opts o = { 0 };
 	struct loft_run run = { .prog = "offsets", .msg = fuzz_null(),
 	    .handle = stations, .ctx = &o };
-	struct loft_error err;
 
 	if (size < 2)
 		return 0;
@@ -24,9 +23,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		fuzz_records(&run, data + 2, size - 2);
 		return 0;
 	}
-	if (loft_opt_range("-1:1:0.5", &o.x, &o.nx, &o.xcap, &err) != 0 ||
-	    loft_opt_range("0,0.5", &o.z, &o.nz, &o.zcap, &err) != 0)
-		abort();
+	loft_opt_range(usage_text, 'x', "-1:1:0.5", &o.x, &o.nx, &o.xcap);
+	loft_opt_range(usage_text, 'z', "0,0.5", &o.z, &o.nz, &o.zcap);
 	fuzz_design(&run, tabulate, data + 2, size - 2);
 	free(o.x);
 	free(o.z);
