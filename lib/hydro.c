@@ -195,12 +195,12 @@ frame_of(struct loft_hydro *h)
 	double lo[3], hi[3], size = 0;
 	int e;
 
-	for (size_t i = 0; i < h->ns; i++)
+	memcpy(lo, h->box, sizeof lo);          /* ns >= 1 */
+	memcpy(hi, h->box + 3, sizeof hi);
+	for (size_t i = 1; i < h->ns; i++)
 		for (int k = 0; k < 3; k++) {
-			double a = h->box[6 * i + k], b = h->box[6 * i + 3 + k];
-
-			lo[k] = i == 0 || a < lo[k] ? a : lo[k];
-			hi[k] = i == 0 || b > hi[k] ? b : hi[k];
+			lo[k] = fmin(lo[k], h->box[6 * i + k]);
+			hi[k] = fmax(hi[k], h->box[6 * i + 3 + k]);
 		}
 	for (int k = 0; k < 3; k++) {
 		h->o[k] = k == 1 ? 0 : lo[k] / 2 + hi[k] / 2;
