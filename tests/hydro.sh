@@ -104,6 +104,24 @@ awk 'BEGIN { L = 4; B = 0.5; T = 0.25
 	    -T + 5 * T / 8, 3 * B^2 / (35 * T), 3 * L^2 / (40 * T) }' >"$T/want"
 same "Wigley: Cb 4/9, Cwp = Cm = 2/3, KB 5T/8, BMt, BMl" "$T/got" "$T/want" 0
 
+# the same hull as one of MacCallum's patches (loft.5): the rows and
+# columns (0), (1), (0)_u, (1)_u, (h) of a quadratic with Bezier points
+# P0 P1 P2 are P0, P2, 2(P1 - P0), 2(P2 - P1), (P0 + 2 P1 + P2)/4
+wigley 4 0.5 0.25 | awk 'NR > 1 { n = NR - 2; for (k = 1; k <= 3; k++) P[int(n / 3), n % 3, k] = $k }
+	END { split("1 0 0|0 0 1|-2 2 0|0 -2 2|0.25 0.5 0.25", r, "|")
+	print "patch id=1"
+	for (i = 0; i < 5; i++) { split(r[i + 1], wi, " "); line = ""
+	    for (j = 0; j < 5; j++) { split(r[j + 1], wj, " ")
+		for (k = 1; k <= 3; k++) { v = 0
+		    for (a = 0; a < 3; a++) for (b = 0; b < 3; b++) v += wi[a + 1] * wj[b + 1] * P[a, b, k]
+		    line = line sprintf(" %.17g", v) } }
+	    print substr(line, 2) } }' >"$T/wigp"
+run "$B/hydro -z -0.2:0:0.05 -f $WF $T/wigp"
+status 0
+awk NF "$T/out" >"$T/got"
+wigley_want 4 0.5 0.25 "$ZS" >"$T/want"
+same "Wigley hull as a patch record at five waterlines" "$T/got" "$T/want" 0.1
+
 # another shape of it, and half against whole
 wigley 100 12 6 >"$T/wig2"
 run "$B/hydro -z -5:0:1 -f $WF $T/wig2"
@@ -177,6 +195,7 @@ awk 'BEGIN { L = 20; B = 6; for (Z = 1; Z <= 3; Z += 0.5)
 	    L^2 / (12 * Z), Z / 2 + B^2 / (12 * Z), Z / 2 + L^2 / (12 * Z),
 	    L, B, Z, L * B + 2 * (L + B) * Z, B * Z }' >"$T/want"
 same "box barge at five drafts" "$T/got" "$T/want" 0
+cp "$T/want" "$T/bwant"
 run "$B/hydro -r 1.025 -z 2 -f displacement $T/barge"
 awk NF "$T/out" >"$T/got"
 echo 246 >"$T/want"
@@ -190,6 +209,20 @@ fails 1 "open below the waterline z = 2: its sides do not close" "$B/hydro -z 2 
 barge 20 6 4 1 >"$T/open"
 fails 1 "open below the waterline z = 2: its bottom does not close" "$B/hydro -z 2 $T/open"
 fails 1 "a point record: hydro reads surface records" "printf '1 2 3\n4 5 6\n' | $B/hydro"
+
+# the same barge as MacCallum patches (patchnew -c: four corners, the
+# bilinear patch, as patch records): the same closed forms
+i=0
+barge 20 6 4 | awk '/^bezier/ { n = 0; next } NF == 3 { c[n++] = $1 "," $2 "," $3 }
+	NF == 0 && n == 4 { print c[0], c[2], c[1], c[3] }' |
+while read -r a b c d; do
+	i=$((i + 1))
+	"$B/patchnew" -i "$i" -c "$a" -c "$b" -c "$c" -c "$d" && echo
+done >"$T/bargep"
+run "$B/hydro -z 1:3:0.5 -f z,volume,lcb,vcb,awp,lcf,bmt,bml,kmt,kml,lwl,bwl,t,cb,cp,cm,cwp,wetted,am $T/bargep"
+status 0
+awk NF "$T/out" >"$T/got"
+same "box barge of patch records at five drafts" "$T/got" "$T/bwant" 0
 
 # ---- a half-cylinder ---------------------------------------------------
 # Radius R, length L, axis on x at z = 0: the quarter circle from the keel
