@@ -93,41 +93,45 @@ sections(struct loft_run *run, const struct loft_hydro *h,
 {
 	const struct opts *o = run->ctx;
 	char num[LOFT_NUMBUF];
+	double *x = malloc(2 * (size_t)o->stations * sizeof *x), *a;
+	struct loft_error err;
+	int rc = 0;
 
+	if (x == NULL) {
+		fputs("hydro: out of memory\n", run->msg);
+		return 1;
+	}
+	a = x + o->stations;
 	for (size_t i = 0; i < o->nz; i++) {
-		struct loft_hydrostatics hs;
-		struct loft_error err;
 		double x0, x1;
 
 		err.line = 0;
-		if (loft_hydro_at(h, o->z[i], &hs, &err) != 0) {
+		if ((rc = loft_hydro_ends(h, o->z[i], &x0, &x1, &err)) == 0) {
+			for (long j = 0; j < o->stations; j++)
+				x[j] = o->stations == 1 ? x0 / 2 + x1 / 2 : x0 +
+				    (x1 - x0) * ((double)j /
+				    (double)(o->stations - 1));
+			rc = loft_hydro_sections(h, o->z[i], x,
+			    (size_t)o->stations, a, &err);
+		}
+		if (rc != 0) {
 			loft_report(run, rec, &err);
-			return 1;
+			break;
 		}
 		loft_put_type(&run->w, "points");
 		loft_put_attr(&run->w, "name", "sectional-area");
 		loft_format_num(num, o->z[i], 0);
 		loft_put_attr(&run->w, "z", num);
 		loft_end_line(&run->w);
-		if (loft_hydro_ends(h, o->z[i], &x0, &x1, &err) != 0) {
-			loft_report(run, rec, &err);
-			return 1;
-		}
 		for (long j = 0; j < o->stations; j++) {
-			double row[2];
+			double row[2] = { x[j], a[j] };
 
-			row[0] = o->stations == 1 ? x0 / 2 + x1 / 2 : x0 +
-			    (x1 - x0) * ((double)j / (double)(o->stations - 1));
-			if (loft_hydro_section(h, o->z[i], row[0], &row[1],
-			    &err) != 0) {
-				loft_report(run, rec, &err);
-				return 1;
-			}
 			loft_put_row(&run->w, row, 2);
 		}
 		loft_end_record(&run->w);
 	}
-	return 0;
+	free(x);
+	return rc != 0;
 }
 
 static int

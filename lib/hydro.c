@@ -292,6 +292,19 @@ hull_moments(const struct loft_hydro *h, int nc, const int *axis,
 	}
 }
 
+/* Whether the waterline wl meets the hull: 0 or LOFT_EGEOM. */
+static int
+in_range(const struct loft_hydro *h, double wl, struct loft_error *err)
+{
+	if (!(wl > h->zmin))
+		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g is at or "
+		    "below the hull's lowest point z = %g", wl, h->zmin);
+	if (wl > h->zmax)
+		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g is above "
+		    "the hull's top z = %g", wl, h->zmax);
+	return 0;
+}
+
 /* The waterline's checks, and the moments below it with the hull's
  * normals turned outward (*sg: -1 when they were turned); zn: the
  * waterline inside. */
@@ -302,12 +315,8 @@ below(const struct loft_hydro *h, double wl, double *m, double *zn,
 	int axis = 2, big;
 	double v[3], w;
 
-	if (!(wl > h->zmin))
-		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g is at or "
-		    "below the hull's lowest point z = %g", wl, h->zmin);
-	if (wl > h->zmax)
-		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g is above "
-		    "the hull's top z = %g", wl, h->zmax);
+	if (in_range(h, wl, err) != 0)
+		return LOFT_EGEOM;
 	hull_moments(h, 1, &axis, &wl, m);
 	*zn = (wl - h->o[2]) / h->scale;
 	v[0] = m[M_ZNZ] - *zn * m[M_NZ];
@@ -460,14 +469,15 @@ section_area(const struct loft_hydro *h, double wl, double xs, double sg)
 }
 
 int
-loft_hydro_section(const struct loft_hydro *h, double wl, double xs,
-    double *area, struct loft_error *err)
+loft_hydro_sections(const struct loft_hydro *h, double wl, const double *xs,
+    size_t n, double *area, struct loft_error *err)
 {
 	double m[NM], zn, sg;
 
 	if (below(h, wl, m, &zn, &sg, err) != 0)
 		return LOFT_EGEOM;
-	*area = section_area(h, wl, xs, sg);
+	for (size_t i = 0; i < n; i++)
+		area[i] = section_area(h, wl, xs[i], sg);
 	return 0;
 }
 
@@ -476,9 +486,11 @@ loft_hydro_ends(const struct loft_hydro *h, double wl, double *x0, double *x1,
     struct loft_error *err)
 {
 	double lo[3], hi[3];
-	int rc = waterline_box(h, wl, lo, hi);
+	int rc;
 
-	if (rc < 0)
+	if (in_range(h, wl, err) != 0)
+		return LOFT_EGEOM;
+	if ((rc = waterline_box(h, wl, lo, hi)) < 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	if (rc == 0)
 		return loft_fail(err, LOFT_EGEOM, -1, "waterline z = %g meets "

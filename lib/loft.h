@@ -1432,17 +1432,18 @@ int loft_hydro_at(const struct loft_hydro *h, double wl,
     struct loft_hydrostatics *out, struct loft_error *err);
 
 /* The ends x0 <= x1 of the waterline z = wl of h: 0, or LOFT_EGEOM when
- * it meets no surface. */
+ * it is below or above the hull or meets no surface. */
 int loft_hydro_ends(const struct loft_hydro *h, double wl, double *x0,
     double *x1, struct loft_error *err);
 
 /*
- * The immersed area of the section x = xs of h floating at z = wl (both
- * sides for a half), exact to rounding on polynomial surfaces: minus
- * the integral of the x-component of the normal over the hull below the
- * waterline and aft of xs.  Returns 0 or LOFT_EGEOM as loft_hydro_at.
+ * The immersed areas area[i] of the sections x = xs[i], i < n, of h
+ * floating at z = wl (both sides for a half), exact to rounding on
+ * polynomial surfaces: minus the integral of the x-component of the
+ * normal over the hull below the waterline and aft of xs[i].  Returns 0
+ * or LOFT_EGEOM as loft_hydro_at.
  */
-int loft_hydro_section(const struct loft_hydro *h, double wl, double xs,
-    double *area, struct loft_error *err);
+int loft_hydro_sections(const struct loft_hydro *h, double wl,
+    const double *xs, size_t n, double *area, struct loft_error *err);
 
 #endif

@@ -278,5 +278,6 @@ awk 'BEGIN { L = 4; B = 0.5; T = 0.25; Z = -0.1; g = (Z + T) - (Z^3 + T^3) / (3 
 same "Wigley: the curve of sectional areas" "$T/got" "$T/want" 1e-3
 head -1 "$T/out" | grep -q '^points name=sectional-area z=-0.1$' && ok ||
     no "hydro -s: header is '$(head -1 "$T/out")'"
+fails 1 "waterline z = 0.1 is above the hull's top z = 0" "$B/hydro -s 5 -z 0.1 $T/wig"
 
 finish hydro
