@@ -279,5 +279,13 @@ same "Wigley: the curve of sectional areas" "$T/got" "$T/want" 1e-3
 head -1 "$T/out" | grep -q '^points name=sectional-area z=-0.1$' && ok ||
     no "hydro -s: header is '$(head -1 "$T/out")'"
 fails 1 "waterline z = 0.1 is above the hull's top z = 0" "$B/hydro -s 5 -z 0.1 $T/wig"
+# the area under the curve of sectional areas is the volume: the curve
+# through 41 stations, fitted by splinefit, within 1e-5 (the fit's
+# error) of the volume the divergence theorem gives, on a lofted hull
+"$B/offsets" -k man/examples/hull.offsets | "$B/splinefit" -o | "$B/patchloft" >"$T/hull6"
+a=$("$B/hydro" -z 1 -s 41 "$T/hull6" | "$B/splinefit" -o | "$B/measure" -f area | awk NF)
+v=$("$B/hydro" -z 1 -f volume "$T/hull6" | awk NF)
+awk -v a="$a" -v v="$v" 'BEGIN { d = a + v; d = d < 0 ? -d : d; exit !(v > 0 && d <= 1e-5 * v) }' &&
+    ok || no "area under the curve of sectional areas $a, volume $v"
 
 finish hydro
