@@ -1402,8 +1402,8 @@ struct loft_hydro {
 	double zmin, zmax;      /* the hull's lowest and highest points */
 };
 
-/* The hydrostatics at one waterline, in the hull's units (loft.5's
- * hydro(1) fields). */
+/* The hydrostatics at one waterline, in the hull's units: the fields of
+ * hydro(1), and am, the midship section's immersed area. */
 struct loft_hydrostatics {
 	double z, volume, lcb, tcb, vcb, awp, lcf, bmt, bml, kmt, kml;
 	double lwl, bwl, t, cb, cp, cm, cwp, wetted, am;

@@ -177,9 +177,6 @@ kept(const struct ctx *x, double s, double t)
 	return 1;
 }
 
-typedef void (*line_fn)(const struct ctx *x, double fixed, double a,
-    double *out);
-
 /* The inner integrand at (s, t), times w, added to out. */
 static void
 inner_point(const struct ctx *x, double s, double t, double *out)
@@ -215,7 +212,7 @@ gauss(const struct ctx *x, int inner, double fixed, double a, double b,
 	}
 }
 
-/* Adaptive (outer): the rule over [a, b] (whole) against the sum of its halves;
+/* Adaptive: the rule over [a, b] (whole) against the sum of its halves;
  * the halves are kept when they agree within tol, else each is halved. */
 static void
 adapt(const struct ctx *x, int inner, double fixed, double a, double b,
