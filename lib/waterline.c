@@ -47,7 +47,7 @@ static const double gauss_w[5] = {
  * sign change between samples brackets a root; two roots closer than
  * 1/(ROOT_SAMPLES deg) are a near-tangency whose sliver is below the
  * tolerances. */
-#define ROOT_SAMPLES 2
+#define ROOT_SAMPLES 3
 
 /* Steps of the root finder after the bracket (it takes about ten), and
  * the width of bracket that is the root: a parameter's rounding. */
