@@ -44,9 +44,10 @@ static const double gauss_w[5] = {
 #define OUTER_DEPTH 40
 
 /* Samples per degree when looking for roots along a parameter line: a
- * sign change between samples brackets a root; two roots closer than
- * 1/(ROOT_SAMPLES deg) are a near-tangency whose sliver is below the
- * tolerances. */
+ * sign change between samples brackets a root.  Two roots closer than
+ * 1/(ROOT_SAMPLES deg + 4) of the line are missed, and the sliver
+ * between them (a waterline all but tangent to the line) with them: the
+ * one place the clip is not exact, bounded so for the sake of speed. */
 #define ROOT_SAMPLES 3
 
 /* Steps of the root finder after the bracket (it takes about ten), and
