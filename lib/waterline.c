@@ -43,12 +43,13 @@ static const double gauss_w[5] = {
  * GAUSS_N points is exact there on polynomials. */
 #define OUTER_DEPTH 40
 
-/* Samples per degree when looking for roots along a parameter line: a
- * sign change between samples brackets a root.  Two roots closer than
- * 1/(ROOT_SAMPLES deg + 4) of the line are missed, and the sliver
- * between them (a waterline all but tangent to the line) with them: the
- * one place the clip is not exact, bounded so for the sake of speed. */
-#define ROOT_SAMPLES 3
+/* Lines of degree up to BERN_MAXDEG have their roots isolated by the
+ * signs of their Bernstein coefficients (interpolated at d + 1 points:
+ * the collocation matrix is well conditioned that far); a piece narrower
+ * than BERN_WIDTH whose coefficients still change sign twice holds a
+ * double root, a tangency, kept when the sign changes across it. */
+#define BERN_MAXDEG 16
+#define BERN_WIDTH 1e-12
 
 /* Steps of the root finder after the bracket (it takes about ten), and
  * the width of bracket that is the root: a parameter's rounding. */
@@ -64,6 +65,8 @@ struct ctx {
 	void *fctx;
 	int nval, swap, tdeg, sdeg;
 	int live[LOFT_CLIP_MAX];        /* the plane crosses the net's box */
+	double tinv[(BERN_MAXDEG + 1) * (BERN_MAXDEG + 1)];     /* inner */
+	double sinv[(BERN_MAXDEG + 1) * (BERN_MAXDEG + 1)];     /* outer */
 };
 
 /* The surface at outer s, inner t. */
@@ -129,32 +132,144 @@ bracket_root(const struct ctx *x, int k, int inner, double fixed, double a,
 	return fabs(ga) < fabs(gb) ? a : b;
 }
 
-/* Append to r the roots of every clip along a line (see bisect). */
+/* Whether the Bernstein coefficients c[0..d] change sign more than
+ * once (2), once (1) or not (0). */
+static int
+sign_changes(const double *c, int d)
+{
+	int n = 0;
+
+	for (int i = 1; i <= d && n < 2; i++)
+		n += (c[i] < 0) != (c[i - 1] < 0);
+	return n;
+}
+
+/* Append to r the roots of clip k in (a, b) of the line, whose function
+ * there has Bernstein coefficients c[0..d]: where they change sign once
+ * there is one root (variation diminishing), bracketed and found on the
+ * surface itself; where more, the halves by de Casteljau's algorithm,
+ * down to BERN_WIDTH (a double root: found if the sign changes). */
+static int
+isolate(const struct ctx *x, int k, int inner, double fixed, const double *c,
+    int d, double a, double b, double *r, int nr)
+{
+	double lc[LOFT_BEZIER_MAXPTS], rc[LOFT_BEZIER_MAXPTS];
+	int n = sign_changes(c, d);
+
+	if (n == 0 || nr >= MAXROOTS)
+		return nr;
+	if (n == 1 || b - a < BERN_WIDTH) {
+		double ga = gline(x, k, inner, fixed, a);
+		double gb = gline(x, k, inner, fixed, b);
+
+		if ((ga < 0) != (gb < 0))
+			r[nr++] = bracket_root(x, k, inner, fixed, a, b, ga, gb);
+		return nr;
+	}
+	loft_bezier_split(c, d, 1, 0.5, lc, rc);
+	nr = isolate(x, k, inner, fixed, lc, d, a, 0.5 * (a + b), r, nr);
+	return isolate(x, k, inner, fixed, rc, d, 0.5 * (a + b), b, r, nr);
+}
+
+/* Samples per degree along a line of degree above BERN_MAXDEG: a sign
+ * change between samples brackets a root; two roots closer than the
+ * step are missed with the sliver between them. */
+#define ROOT_SAMPLES 3
+
+/* Append to r the roots of clip k along a line of degree d by samples. */
+static int
+sample_roots(const struct ctx *x, int k, int inner, double fixed, int d,
+    double *r, int nr)
+{
+	int ns = ROOT_SAMPLES * d + 4;
+	double a = 0, ga = gline(x, k, inner, fixed, 0);
+
+	for (int i = 1; i <= ns && nr < MAXROOTS; i++) {
+		double b = (double)i / ns, gb = gline(x, k, inner, fixed, b);
+
+		if ((ga < 0) != (gb < 0))
+			r[nr++] = bracket_root(x, k, inner, fixed, a, b, ga, gb);
+		a = b;
+		ga = gb;
+	}
+	return nr;
+}
+
+/* Append to r the roots of every clip along a line: the clip's function
+ * there is a polynomial of the line's degree d, its Bernstein
+ * coefficients those that interpolate it at t = j/d (x->inv), its ends
+ * the surface's own values. */
 static int
 line_roots(const struct ctx *x, int inner, double fixed, double *r, int nr)
 {
-	int deg = inner ? x->tdeg : x->sdeg;
-	int ns = ROOT_SAMPLES * deg + 4;
+	int d = inner ? x->tdeg : x->sdeg;
+	const double *inv = inner ? x->tinv : x->sinv;
 
 	for (int k = 0; k < x->c->n; k++) {
-		double a = 0, ga;
+		double f[LOFT_BEZIER_MAXPTS], c[LOFT_BEZIER_MAXPTS];
 
 		if (!x->live[k])
 			continue;
-		ga = gline(x, k, inner, fixed, 0);
-
-		for (int i = 1; i <= ns && nr < MAXROOTS; i++) {
-			double b = (double)i / ns;
-			double gb = gline(x, k, inner, fixed, b);
-
-			if ((ga < 0) != (gb < 0))
-				r[nr++] = bracket_root(x, k, inner, fixed, a, b,
-				    ga, gb);
-			a = b;
-			ga = gb;
+		if (d > BERN_MAXDEG) {
+			nr = sample_roots(x, k, inner, fixed, d, r, nr);
+			continue;
 		}
+		for (int j = 0; j <= d; j++)
+			f[j] = gline(x, k, inner, fixed, (double)j / d);
+		for (int i = 0; i <= d; i++) {
+			c[i] = 0;
+			for (int j = 0; j <= d; j++)
+				c[i] += inv[i * (d + 1) + j] * f[j];
+		}
+		c[0] = f[0];
+		c[d] = f[d];
+		nr = isolate(x, k, inner, fixed, c, d, 0, 1, r, nr);
 	}
 	return nr;
+}
+
+/* inv: the inverse of the (d + 1)^2 matrix of B_j^d(i/d) (Bernstein
+ * polynomials at equal steps), by Gauss-Jordan elimination with partial
+ * pivoting; d <= BERN_MAXDEG, where it is well conditioned. */
+static void
+bernstein_inverse(int d, double *inv)
+{
+	double a[BERN_MAXDEG + 1][2 * (BERN_MAXDEG + 1)];
+	int n = d + 1;
+
+	for (int i = 0; i < n; i++) {
+		double b[LOFT_BEZIER_MAXPTS];
+
+		loft_bernstein(d, (double)i / d, b);
+		for (int j = 0; j < n; j++) {
+			a[i][j] = b[j];
+			a[i][n + j] = i == j;
+		}
+	}
+	for (int col = 0; col < n; col++) {
+		int p = col;
+
+		for (int i = col + 1; i < n; i++)
+			if (fabs(a[i][col]) > fabs(a[p][col]))
+				p = i;
+		for (int j = 0; j < 2 * n; j++) {
+			double t = a[col][j];
+
+			a[col][j] = a[p][j];
+			a[p][j] = t;
+		}
+		for (int i = 0; i < n; i++) {
+			double m = a[i][col] / a[col][col];
+
+			if (i == col)
+				continue;
+			for (int j = col; j < 2 * n; j++)
+				a[i][j] -= m * a[col][j];
+		}
+	}
+	for (int i = 0; i < n; i++)
+		for (int j = 0; j < n; j++)
+			inv[i * n + j] = a[i][n + j] / a[i][i];
 }
 
 static int
@@ -272,6 +387,23 @@ outer_point(const struct ctx *x, double unused, double s, double *out)
 			integrate(x, 1, s, r[i], r[i + 1], out);
 }
 
+static int choose_swap(const struct loft_surface *s, int axis);
+
+/* x's surface, parameters and root finding for a clip of s by c. */
+static void
+setup(struct ctx *x, const struct loft_surface *s, const struct loft_clip *c)
+{
+	x->s = s;
+	x->c = c;
+	x->swap = choose_swap(s, c->axis[0]);
+	x->sdeg = x->swap ? s->n : s->m;
+	x->tdeg = x->swap ? s->m : s->n;
+	if (x->sdeg <= BERN_MAXDEG)
+		bernstein_inverse(x->sdeg, x->sinv);
+	if (x->tdeg <= BERN_MAXDEG)
+		bernstein_inverse(x->tdeg, x->tinv);
+}
+
 /* Which parameter is the outer: the one along which the first clip's
  * coordinate changes least, so its level curves are nearest to graphs
  * of it. */
@@ -310,14 +442,10 @@ loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
 		    "in space, 1 to %d planes of x, y or z and 1 to %d "
 		    "integrands",
 		    LOFT_CLIP_MAX, LOFT_CLIP_MAXVAL);
-	x.s = s;
-	x.c = c;
+	setup(&x, s, c);
 	x.f = f;
 	x.fctx = fctx;
 	x.nval = nval;
-	x.swap = choose_swap(s, c->axis[0]);
-	x.sdeg = x.swap ? s->n : s->m;
-	x.tdeg = x.swap ? s->m : s->n;
 	loft_surface_box(s, lo, hi);
 	for (int k = 0; k < c->n; k++) {
 		if (lo[c->axis[k]] >= c->level[k])
@@ -431,14 +559,13 @@ loft_clip_extremes(const struct loft_surface *s, int axis, double level,
     int refine, double *lo, double *hi)
 {
 	struct loft_clip c = { 1, { axis, 0 }, { level, 0 }, { 0 } };
-	struct ctx x = { s, &c, NULL, NULL, 0, 0, 0, 0, { 1, 0 } };
+	struct ctx x;
 	struct ext e;
 
+	memset(&x, 0, sizeof x);
+	setup(&x, s, &c);
+	x.live[0] = 1;
 	e.found = 0;
-
-	x.swap = choose_swap(s, axis);
-	x.sdeg = x.swap ? s->n : s->m;
-	x.tdeg = x.swap ? s->m : s->n;
 	for (int i = 0; i <= EXT_SAMPLES; i++) {
 		double sv = (double)i / EXT_SAMPLES, r[MAXROOTS];
 		int nr = line_roots(&x, 1, sv, r, 0);
