@@ -205,6 +205,8 @@ line_roots(const struct ctx *x, int inner, double fixed, double *r, int nr)
 	int d = inner ? x->tdeg : x->sdeg;
 	const double *inv = inner ? x->tinv : x->sinv;
 
+	if (d < 1 || d >= LOFT_BEZIER_MAXPTS)   /* a surface type's degrees */
+		return nr;
 	for (int k = 0; k < x->c->n; k++) {
 		double f[LOFT_BEZIER_MAXPTS], c[LOFT_BEZIER_MAXPTS];
 
