@@ -27,7 +27,7 @@ DESTDIR =
 # from it (a program is cmd/NAME.c and man/NAME.1).
 PROGS   = splinefit sample bezapprox patchnew patchsplit patchdrag patchjoin \
           loftplot grade offset measure tocad patchloft patchcut fromcad \
-          unroll
+          unroll hydro offsets
 
 # The library's objects, by layer.  The core (lib/loft.h; each includes
 # only loft.h and internal.h, never a FILE):
@@ -38,9 +38,11 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/merge.o lib/fair.o lib/skin.o lib/cut.o lib/error.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
           lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o \
-          lib/mesh.o lib/sparse.o lib/unroll.o lib/surfmeasure.o
+          lib/mesh.o lib/sparse.o lib/unroll.o lib/surfmeasure.o \
+          lib/waterline.o lib/hydro.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
-PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o
+PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o \
+          lib/surfrecs.o lib/optrange.o
 # the CAD output formats (lib/loftcad.h): the document protocol, the
 # format table, one module a format, and loftplot's picture
 CADOBJ  = lib/cad.o lib/cadformats.o lib/dxf.o lib/svgcad.o lib/step.o \
@@ -75,7 +77,7 @@ MAN7    = man/loft.7
 EXNAMES = README knots toe.knots insole.knots arc.knots hull.knots \
           seam.knots insole.dxf many-insoles.knots v0.knots v1.knots \
           u0.knots u1.knots hull.patch split.patch pieces.patch \
-          hull.design noisy-insole.pts
+          hull.design noisy-insole.pts hull.offsets
 EXAMPLES = $(EXNAMES:%=man/examples/%)
 EXDIR   = $(DESTDIR)$(PREFIX)/share/loft/examples
 
@@ -325,7 +327,7 @@ FUZZ_CFLAGS  = -O1 -g -fno-omit-frame-pointer -DLOFT_FUZZ \
                -fno-sanitize-recover=all -Wno-unused-function
 FUZZERS = stream splinefit sample bezapprox patchnew patchsplit patchdrag \
           patchjoin loftplot grade offset measure patchloft patchcut fromcad \
-          unroll
+          unroll hydro offsets
 LIBSRC  = $(LIBOBJ:.o=.c)
 
 fuzz:

@@ -1835,5 +1835,114 @@ int loft_unroll_cut(const struct loft_unroll *r, const double *normal,
     double d, struct loft_cut *out);
 
 void loft_unroll_free(struct loft_unroll *r);
+/* Surfaces clipped by planes, integrals below them (waterline.c)      */
+
+#define LOFT_CLIP_MAX 2         /* planes of one clip */
+#define LOFT_CLIP_MAXVAL 24     /* integrands of one clip */
+
+/* The part of a surface where p[axis[k]] <= level[k] for k < n; tol[i]:
+ * the absolute error allowed in integral i (> 0). */
+struct loft_clip {
+	int n;
+	int axis[LOFT_CLIP_MAX];
+	double level[LOFT_CLIP_MAX];
+	double tol[LOFT_CLIP_MAXVAL];
+};
+
+/* An integrand: at the point p with partial derivatives pu, pv (the
+ * surface's own), add w times its values to acc[0..nval-1]. */
+typedef void (*loft_clip_fn)(void *ctx, const double *p, const double *pu,
+    const double *pv, double w, double *acc);
+
+/*
+ * Add to acc[0..nval-1] the integrals of f over the parameters (u, v)
+ * in [0,1]^2 where the surface s (dim 3, degrees s->m, s->n) is kept by
+ * the clip c.  The kept part's curved edge is found to rounding at each
+ * quadrature node, so a polynomial integrand whose degree in each
+ * parameter is below 20 is integrated exactly to rounding where the
+ * edge is a graph of one parameter, and any other within c->tol by
+ * adaptive halving.  Returns 0, or LOFT_EINPUT (dim, n or nval out of
+ * range; acc unchanged).
+ */
+int loft_clip_integrate(const struct loft_surface *s, const struct loft_clip *c,
+    loft_clip_fn f, void *ctx, int nval, double *acc, struct loft_error *err);
+
+/*
+ * The extremes lo[k], hi[k] (k < 3) of the points of s on the plane
+ * p[axis] = level (a waterline's ends and breadth): with refine, found
+ * to rounding; without, the best of samples along the curve (cheaper,
+ * to choose the surfaces worth refining).  Returns 0, or LOFT_EGEOM
+ * when the plane misses s.
+ */
+int loft_clip_extremes(const struct loft_surface *s, int axis, double level,
+    int refine, double *lo, double *hi);
+
+/*
+ * The largest p[k] over the points of s on both planes p[a] = la and
+ * p[b] = lb (a half-breadth at a station and waterline: a = 0, b = 2,
+ * k = 1), by Newton's method from a grid of seeds, to rounding.  a, b,
+ * k in 0..2, a != b.  Returns 0 and *best, or LOFT_EGEOM when no point
+ * of s is on both.
+ */
+int loft_surface_meet(const struct loft_surface *s, int a, double la, int b,
+    double lb, int k, double *best);
+
+/* ------------------------------------------------------------------ */
+/* Hydrostatics of a hull of surfaces (hydro.c)                        */
+
+/* A hull prepared by loft_hydro_init; its fields are hydro.c's. */
+struct loft_hydro {
+	const struct loft_surface *s;
+	size_t ns;
+	int whole;              /* 0: the starboard half, mirrored */
+	double scale, o[3];     /* coordinates (p - o) / scale inside */
+	double *box;            /* ns * 6: each surface's lo, hi */
+	double *full;           /* each whole surface's moments */
+	double zmin, zmax;      /* the hull's lowest and highest points */
+};
+
+/* The hydrostatics at one waterline, in the hull's units: the fields of
+ * hydro(1), and am, the midship section's immersed area. */
+struct loft_hydrostatics {
+	double z, volume, lcb, tcb, vcb, awp, lcf, bmt, bml, kmt, kml;
+	double lwl, bwl, t, cb, cp, cm, cwp, wetted, am;
+};
+
+/*
+ * Prepare the ns >= 1 surfaces s (caller-owned, dim 3, x along, y
+ * across, z up; whole: the whole hull, else its half y >= 0) for
+ * loft_hydro_at.  Returns 0, LOFT_EINPUT (a surface not in space, or a
+ * half reaching y < 0) or LOFT_ENOMEM.  Free with loft_hydro_free.
+ */
+int loft_hydro_init(struct loft_hydro *h, const struct loft_surface *s,
+    size_t ns, int whole, struct loft_error *err);
+void loft_hydro_free(struct loft_hydro *h);
+
+/*
+ * The hydrostatics of h floating at the waterline z = wl into *out: the
+ * divergence theorem turns the volume, its centre and the waterplane's
+ * moments into integrals over the hull below the waterline (clipped by
+ * loft_clip_integrate), exact to rounding on polynomial surfaces.
+ * Returns 0, or LOFT_EGEOM (the waterline at or below the hull's lowest
+ * point or above its top, or the hull open below it other than at the
+ * centreplane of a half) with err saying which.
+ */
+int loft_hydro_at(const struct loft_hydro *h, double wl,
+    struct loft_hydrostatics *out, struct loft_error *err);
+
+/* The ends x0 <= x1 of the waterline z = wl of h: 0, or LOFT_EGEOM when
+ * it is below or above the hull or meets no surface. */
+int loft_hydro_ends(const struct loft_hydro *h, double wl, double *x0,
+    double *x1, struct loft_error *err);
+
+/*
+ * The immersed areas area[i] of the sections x = xs[i], i < n, of h
+ * floating at z = wl (both sides for a half), exact to rounding on
+ * polynomial surfaces: minus the integral of the x-component of the
+ * normal over the hull below the waterline and aft of xs[i].  Returns 0
+ * or LOFT_EGEOM as loft_hydro_at.
+ */
+int loft_hydro_sections(const struct loft_hydro *h, double wl,
+    const double *xs, size_t n, double *area, struct loft_error *err);
 
 #endif

@@ -173,6 +173,17 @@ void loft_opt_long(int argc, char *argv[], const char *usage);
 int loft_opt_digits(const char *arg, struct loft_writer *w,
     struct loft_error *err);
 
+/*
+ * Option opt's levels: "v", or "from:to:step" (from <= to, step > 0; the
+ * steps in 15 decimal digits, to itself included where they reach it
+ * within rounding), or a comma-separated list of those, appended to the
+ * malloc'd *v of *n (capacity *cap).  A bad arg is a usage error
+ * (loft_usage_error with usage); when memory runs out, "prog: out of
+ * memory" and exit 1.  (optrange.c)
+ */
+void loft_opt_range(const char *usage, int opt, const char *arg, double **v,
+    size_t *n, size_t *cap);
+
 /* Write "prog: FILE:LINE: msg" for rec and err to run->msg; set status. */
 void loft_report(struct loft_run *run, const struct loft_record *rec,
     const struct loft_error *err);
@@ -227,6 +238,17 @@ int loft_design_only_patches(struct loft_run *run,
 /* Write patch i of d as a `patch` record, keeping its other attributes. */
 void loft_design_put(struct loft_writer *w, const struct loft_design *d,
     size_t i);
+
+/*
+ * The surfaces of recs[0..n) (patch, bezier-surface, in space), for
+ * programs that take a set of surfaces whole: each other record, or bad
+ * one, is reported through loft_report.  Returns 0 with *out (malloc'd,
+ * pointing into recs; the caller frees it) and *ns, or nonzero after
+ * reporting (*out NULL).  (surfrecs.c)
+ */
+int loft_surfaces_from_records(struct loft_run *run,
+    const struct loft_record *recs, size_t n, struct loft_surface **out,
+    size_t *ns);
 
 /* ------------------------------------------------------------------ */
 /* Output split into files, each written whole (outfiles.c)            */

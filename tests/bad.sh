@@ -36,7 +36,8 @@
 BIG=${LOFT_BIG_KNOTS:-1000000}  # the big record's rows (check-valgrind: fewer)
 T=bin/test/bad
 PROGS=${BAD_PROGS:-"splinefit sample bezapprox grade patchnew patchsplit patchdrag \
-    patchjoin loftplot offset measure tocad patchloft patchcut unroll"}
+    patchjoin loftplot offset measure tocad patchloft patchcut unroll hydro \
+    offsets"}
 DESIGN_NOTE="nothing written: the input is one design, and part of it is bad"
 
 . tests/lib.sh
@@ -2167,6 +2168,61 @@ unroll_cases() {
 	sane "a coefficient of 1e300"
 	printf 'bezier-surface m=1 n=1\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n' >"$T/case"
 	sane "a surface that is a point"
+}
+
+# ---- hydro ---------------------------------------------------------------------
+
+# The Wigley hull of tests/hydro.sh (L 4, B 0.5, T 0.25) cut at x = 0
+# into its aft and fore halves (de Casteljau at u = 1/2 of the Bernstein
+# coefficients 0 2 0: 0 1 1 and 1 1 0): together a closed half hull.
+hydro_kind=design
+hydro_many=0            # copies of one half make no closed hull
+hydro_run() { "$B/hydro" "$@"; }
+hydro_wigley() {
+	awk -v x0="$1" -v a="$2" 'BEGIN { split(a, c, ","); split("0 1 1", b)
+	print "bezier-surface m=2 n=2"
+	for (i = 0; i < 3; i++) for (j = 0; j < 3; j++)
+		printf "%.17g %.17g %.17g\n", x0 + i, 0.25 * c[i + 1] * b[j + 1],
+		    -0.25 + 0.125 * j }'
+}
+hydro_good() {
+	case $1 in
+	1) hydro_wigley -2 0,1,1 ;;
+	2) hydro_wigley 0 1,1,0 ;;
+	esac
+}
+
+hydro_cases() {
+	opts
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "a curve record" 1 "cubic record: hydro reads surface records"
+	# an open hull is the whole input's fault, said at its first line:
+	# tests/hydro.sh has those cases
+	OPTS="-z 1"
+	alone_in "a waterline above the hull" "waterline z = 1 is above the hull's top z = 0"
+	OPTS="-z -1"
+	alone_in "a waterline below the hull" "waterline z = -1 is at or below the hull's lowest point"
+	opts
+}
+
+# ---- offsets --------------------------------------------------------------------
+
+offsets_run() { "$B/offsets" -k "$@"; }
+offsets_good() {
+	case $1 in
+	1) printf 'offsets z=0,1,2\n0 0 1 1\n1 0 1 2\n' ;;
+	2) printf 'offsets z=0,1\n2 0 1\n3 0 0.5\n' ;;
+	esac
+}
+
+offsets_cases() {
+	opts
+	printf 'offsets\n0 1 2\n' >"$T/case"
+	bad "no z=" 1 "offsets record without its waterlines z="
+	printf 'offsets z=0\n0 1 2\n' >"$T/case"
+	bad "too few waterlines" 2 "want 2 waterline heights"
+	printf 'cubic\n0 0 1 0 1 0 1 0\n' >"$T/case"
+	bad "a cubic record" 1 "cubic record: offsets -k reads offsets records"
 }
 
 # ---- run them -----------------------------------------------------------------

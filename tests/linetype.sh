@@ -95,6 +95,8 @@ check patchsplit 3 -u 0.5
 check patchjoin 3 -P 1 -S 2
 check patchcut 3 -x 1
 check unroll 3
+check hydro 3
+check offsets 3 -x 0.5 -z 0.5
 # every program of PROGS is tried here, but fromcad, which reads CAD
 # files, not records
 for p in $PROGS; do

@@ -147,6 +147,17 @@ oom stl tocad -f stl "$T/design"
 "$B/splinefit" -o $F/hull.knots >"$T/hull.cubic" || exit 2
 oom design patchloft "$T/hull.cubic"
 
+# issue 25: the Wigley hull (tests/hydro.sh) floated at three
+# waterlines and its curve of sectional areas; a table of offsets
+awk 'BEGIN { split("0 2 0", a); split("0 1 1", b); print "bezier-surface m=2 n=2"
+	for (i = 0; i < 3; i++) for (j = 0; j < 3; j++)
+		printf "%.17g %.17g %.17g\n", -2 + 2 * i, 0.25 * a[i + 1] * b[j + 1],
+		    -0.25 + 0.125 * j }' >"$T/wigley"
+oom design hydro -z -0.2:0:0.1 "$T/wigley"
+oom design hydro -s 5 "$T/wigley"
+oom records offsets -k man/examples/hull.offsets
+oom design offsets -x -2:2:1 -z -0.2:0:0.1 "$T/wigley"
+
 # issue 12: a record too large for memory (made so by failing every
 # allocation above 1 MB) is one bad record, reported at a line of it
 # (where memory ran out) and skipped to its end; it ended the whole file,

@@ -61,6 +61,8 @@ slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh
 slow sh tests/approx.sh
+suite sh tests/hydro.sh
+suite sh tests/offsets.sh
 suite sh tests/synopsis.sh
 slow sh tests/units.sh
 suite bin/test/sparse

@@ -65,6 +65,12 @@ awk -v n=11 'BEGIN { for (k = 0; k < n; k++) { print "points"
 	    printf "%d %.17g %.17g\n", k, x, 0.5 * cos(2 * t) + 0.02 * k }
 	print "" } }' | $B/splinefit -o | $B/patchloft >$W/plate100.design ||
     exit 1
+# issue 25: a half hull of 1000 patches, 41 stations of 26 knots (the
+# end stations on the centreplane), for a 20-waterline hydro table
+awk 'BEGIN { for (i = 0; i < 41; i++) { x = 2.5 * i; f = 1 - (x / 50 - 1)^2
+	print "points"; for (j = 0; j < 26; j++) { t = j / 25
+	    printf "%.6f %.6f %.6f\n", x, 6 * f * (1 - (1 - t)^4), 8 * t }
+	print "" } }' | $B/splinefit -o | $B/patchloft >$W/hull1000.design || exit 1
 # fromcad's corpus: the fitted insoles sampled 8 points a segment, each a
 # closed LWPOLYLINE of 177 vertices on layer 1, in millimetres: 50 MB
 echo "bench: making $W/insoles.dxf: the insoles as 10^4 LWPOLYLINEs, 50 MB"
@@ -136,6 +142,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ patchcut "$B/patchcut -x 0.5:98.5:2 $W/hull.design"
 	case_ unroll "$B/unroll $W/plate100.design"
 	case_ stl-plate "$B/tocad -f stl -n 6 $W/plate100.design"
+	case_ hydro "$B/hydro -z 1:6.7:0.3 $W/hull1000.design"
+	case_ patchcut-wl "$B/patchcut -z 1:6.7:0.3 $W/hull1000.design"
 	case_ approx "$B/splinefit -e 1.6 $W/noisy100000.pts"
 	case_ approx-small "$B/splinefit -e 1.6 $W/noisy10000.pts"
 	case_ interp-noisy "$B/splinefit -d 0 $W/noisy100000.pts"
@@ -169,3 +177,6 @@ $W/timeit -r $OUT approx/interp-noisy approx/approx-small
 echo "bench: unroll of a doubly curved plate of 100 patches (under 1 s)," \
     "over tocad -f stl -n 6 meshing it"
 $W/timeit -r $OUT unroll/stl-plate
+echo "bench: hydro's table of 20 waterlines of a 1000-patch hull (under" \
+    "1 s), over patchcut's 20 waterlines of it"
+$W/timeit -r $OUT hydro/patchcut-wl
