@@ -214,9 +214,9 @@ write_segments(const struct manning *m, double *seg)
 	}
 }
 
-static int
-fit_manning(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
-    double *seg, struct loft_fit_info *info, struct loft_error *err)
+int
+loft__fit_manning(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	struct manning m = { p, n, o->closed ? n : n - 1, dim, o->closed,
 	    o->alpha, NULL, NULL, NULL, NULL, NULL, NULL };
@@ -272,7 +272,7 @@ fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	if (o->method == LOFT_MANNING)
-		return fit_manning(o, q, n, dim, seg, info, err);
+		return loft__fit_manning(o, q, n, dim, seg, info, err);
 	if (o->method == LOFT_FAIR)
 		return loft__fit_fair(o, q, n, dim, seg, info, err);
 	info->converged = 1;

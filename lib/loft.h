@@ -241,6 +241,7 @@ struct loft_fit_opts {
 	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
 	const size_t *corner;   /* corner knots (0-based, increasing), or NULL */
 	size_t ncorner;
+	int quick;              /* LOFT_FAIR: the quick descent alone */
 };
 
 /* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
