@@ -882,6 +882,43 @@ start_intervals(const struct fair *f, int which, double *x)
 	return 0;
 }
 
+/* Samples a segment of the speed check of a thorough search's result,
+ * and the least (|P'| / chord)^2 it allows: a descent from another start
+ * than the chord spline may slip a cusp between the quadrature points,
+ * where the chord spline's own near-cusp let the speed cap down. */
+#define FAIR_SPEED_SAMPLES 64
+#define FAIR_CUSP 1e-3
+
+/* The least (|P'| / chord)^2 of the segments at FAIR_SPEED_SAMPLES + 1
+ * even points of each, and their largest curvature into *kmax. */
+static double
+least_speed(const double *seg, size_t nseg, int dim, double *kmax)
+{
+	double least = HUGE_VAL, k2 = 0;
+
+	for (size_t s = 0; s < nseg; s++) {
+		const double *q = seg + s * 4 * dim;
+		double cc = 0;
+
+		for (int k = 0; k < dim; k++)
+			cc += (q[dim + k] - q[k]) * (q[dim + k] - q[k]);
+		for (int j = 0; j <= FAIR_SPEED_SAMPLES; j++) {
+			double d[LOFT_MAXDIM], dd[LOFT_MAXDIM], v, x;
+
+			loft_cubic_eval(q, dim, (double)j / FAIR_SPEED_SAMPLES,
+			    NULL, d, dd);
+			v = vdot(d, d, dim);
+			x = vdot(d, dd, dim);
+			least = fmin(least, v / cc);
+			if (v > 0)
+				k2 = fmax(k2, (v * vdot(dd, dd, dim) - x * x) /
+				    (v * v * v));
+		}
+	}
+	*kmax = sqrt(k2);
+	return least;
+}
+
 /* The best curve found so far and what it is judged against. */
 struct best {
 	double *x;              /* its log intervals and factors */
@@ -929,7 +966,9 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 	if (f->scalefree)
 		e *= len;
 	if (!(e < b->score) || !(e <= b->echord * (f->scalefree ? len : 1)) ||
-	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap))
+	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap) ||
+	    (f->scalefree && (!(least_speed(f->seg, f->nseg, f->dim, &kmax) >=
+	    FAIR_CUSP) || !(kmax <= f->kcap))))
 		return 0;
 	loops = f->dim == 2 ? loft_fit_crosses(f->seg, f->nseg, f->o->closed) :
 	    0;

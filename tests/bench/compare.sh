@@ -5,7 +5,7 @@
 # Spiro needs libspiro (Debian: libspiro-dev); without it its row is
 # skipped with one line.  N sets (default 200).
 W=bin/bench
-N=${N:-200}
+N=${N:-300}
 CC=${CC:-cc}
 mkdir -p $W || exit 1
 if [ -f /usr/include/spiroentrypoints.h ] &&
