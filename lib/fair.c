@@ -772,7 +772,7 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
  * below which it stops: enough to take co-circular knots to within a
  * few times the error of the best cubic arc over the widest gap, and
  * few enough that a descent's path, and so its end, moves with the
- * knots' rounding by no more than 1e-10 of their size (a longer one
+ * knots' rounding by no more than 1e-9 of their size (a longer one
  * wanders along the nearly flat valleys of E L: bad.sh's units). */
 #define FAIR_CONVERGE 24
 #define FAIR_SETTLED_FINE 1e-6
