@@ -242,6 +242,9 @@ struct loft_fit_opts {
 	const size_t *corner;   /* corner knots (0-based, increasing), or NULL */
 	size_t ncorner;
 	int quick;              /* LOFT_FAIR: the quick descent alone */
+	const size_t *straight; /* straight spans (knot i to i + 1, 0-based,
+	                         * increasing), or NULL */
+	size_t nstraight;
 };
 
 /* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
@@ -278,6 +281,13 @@ int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
  * corner, and a segment between corners at neighbouring knots is the
  * straight line between them.  A corner at an end of an open curve
  * changes nothing.  Errors name rows of p as without corners.
+ *
+ * With o->nstraight > 0, the spans straight[0.. nstraight) (span i from
+ * knot i to knot i + 1, the last of a closed curve back to knot 0) are
+ * straight lines, and the curve on either side of one is fitted as an
+ * open curve whose end tangent there is the line's direction: the
+ * tangent is continuous where a straight run meets a curve (G1), the
+ * curvature jumps from 0 to the curve's.  Corners go with them.
  */
 
 /*

@@ -244,6 +244,28 @@ $B/splinefit -m manning "$T/toe.knots" | $E >"$T/toem.e"
 paste "$T/toe.e" "$T/toem.e" | awk '{ exit !($2 < 10 && $1 < $6) }' && ok ||
     no "the toe: $(cat "$T/toe.e") against Manning $(cat "$T/toem.e")"
 
+# Straight runs (issue 23): straight=1,3 makes spans 1 and 3 straight
+# lines (both tangent vectors along the chord), and the curve meets each
+# with its tangent (energy.awk's unit-tangent jump 0 at every knot);
+# the header keeps the list.  Open too, the end span straight.
+printf 'points straight=1,3\n0 0\n4 0\n5 1\n4 2\n0 2\n-1 1\n' >"$T/st.knots"
+for c in "" -o; do
+	what="straight=1,3 $c"
+	$B/splinefit $c "$T/st.knots" >"$T/st.cubic"
+	head -1 "$T/st.cubic" | grep -q "^cubic closed=[01] straight=1,3$" && ok ||
+	    no "$what: header $(head -1 "$T/st.cubic")"
+	awk 'NR == 2 || NR == 4 { cx = $3 - $1; cy = $4 - $2
+	    if (($5 * cy - $6 * cx)^2 + ($7 * cy - $8 * cx)^2 > 1e-24 ||
+		$5 * cx + $6 * cy <= 0 || $7 * cx + $8 * cy <= 0) bad = 1 }
+	    END { exit bad }' "$T/st.cubic" && ok || no "$what: not straight"
+	$E "$T/st.cubic" | awk '{ exit !($5 < 1e-9) }' && ok ||
+	    no "$what: tangent jumps: $($E "$T/st.cubic")"
+done
+for bad in 0 7 2,2 3,1 x; do
+	run "printf 'points straight=$bad\n0 0\n4 0\n5 1\n4 2\n0 2\n-1 1\n' | $B/splinefit"
+	status 1
+done
+
 # ---- -v: the measures -----------------------------------------------------
 # The circle of radius 50: energy 2 pi / 50 = 0.125664 (to 1e-3, as
 # above), smallest radius 50 (to 3%: cubics through 12 knots of a circle
