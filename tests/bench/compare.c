@@ -357,13 +357,16 @@ run(const char *file)
 #endif
 			}
 			loft_curve_cubic(&c, seg, ns, 2, 1);
+			/* a crossing counts even where a cusp leaves no energy */
+			looped[m] = ok && loft_fit_crosses(seg, ns, 1) == 1;
+			if (m == CHORD)
+				chordloop = looped[m];
 			if (!ok || loft_curve_energy(&c, &e[m], &err) != 0 ||
 			    !isfinite(e[m])) {
 				fails[m]++;
 				e[m] = HUGE_VAL;
 				continue;
 			}
-			looped[m] = loft_fit_crosses(seg, ns, 1) == 1;
 			kmax[m] = 0;
 			{
 				double r, u;
@@ -372,8 +375,6 @@ run(const char *file)
 				    r > 0)
 					kmax[m] = 1 / r;
 			}
-			if (m == CHORD)
-				chordloop = looped[m];
 		}
 		for (int m = 0; m < NMETHOD; m++) {
 			loops[m] += looped[m] && !chordloop;
