@@ -34,6 +34,7 @@ PROGOBJ = bin/obj/stream.o bin/obj/run.o bin/obj/outfiles.o \
 CADINOBJ = bin/obj/cadread.o bin/obj/dxfread.o bin/obj/svgread.o \
           bin/obj/csvread.o
 LIBOBJ += bin/obj/approx.o bin/obj/cholesky.o
+LIBOBJ += bin/obj/straight.o
 CADOBJ  = bin/obj/bezform.o bin/obj/cad.o bin/obj/dxf.o bin/obj/svgcad.o \
           bin/obj/step.o bin/obj/iges.o bin/obj/stl.o bin/obj/obj.o \
           bin/obj/svgplot.o
@@ -48,6 +49,7 @@ BENCH   = bin/bench/gen bin/bench/floor bin/bench/timeit bin/bench/tandiff \
           bin/bench/numbers
 BENCH  += bin/test/noisy
 TESTS  += bin/test/noisy bin/test/nearest
+TESTS  += bin/test/straight
 LIB     = bin/libloft.a
 MAN1    = $(PROGS:%=man/%.1)
 MAN5    = man/loft.5

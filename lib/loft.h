@@ -347,6 +347,18 @@ double loft_tangent_distance(const double *a, const double *b, size_t nseg,
  */
 int loft_fit_crosses(const double *seg, size_t nseg, int closed);
 
+/*
+ * The straight runs of a drawn outline (straight.c): of the nseg
+ * segments seg (rows P_A P_B P'_A P'_B of dim 2 or 3 numbers, as
+ * loft_fit writes them; closed: the last meets the first), the indices
+ * of those that are straight lines (each tangent vector along the chord,
+ * or zero) and meet a curved neighbour with its tangent (to 1e-5
+ * radians), increasing, into out (room for nseg); returns their count.
+ * Those are the spans splinefit's straight= keeps straight (loft.5).
+ */
+size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
+    size_t *out);
+
 /* ------------------------------------------------------------------ */
 /* Approximating noisy points by a fair curve (approx.c)               */
 

@@ -50,6 +50,7 @@ slow sh tests/bad.sh
 suite bin/test/hostile
 slow sh tests/oom.sh
 suite bin/test/arclen
+suite bin/test/straight
 slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh
