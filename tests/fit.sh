@@ -284,6 +284,29 @@ else
 	echo "fit: libspiro not found: the comparison with Spiro skipped"
 fi
 
+# Real outlines (issue 23): glyph contours of Debian's typefaces, read
+# by tests/glyphs.py with fontTools at run time, their on-curve points
+# with corners= and straight= as the designer's outline has them.  Every
+# contour fits, and every span straight= names is a straight line, its
+# tangent vectors along its chord.
+if /usr/bin/python3 tests/glyphs.py "$T/glyphs.knots" "$T/glyphs.truth" 300 \
+    2>"$T/glyphs.err" && [ -s "$T/glyphs.knots" ]; then
+	what="glyph contours"
+	run "$B/splinefit $T/glyphs.knots"
+	status 0
+	awk '/^cubic/ { n = 0; delete st; s = $0; sub(/.*straight=/, "", s)
+		if (s != $0) { sub(/ .*/, "", s); k = split(s, a, ","); for (i = 1; i <= k; i++) st[a[i]] = 1 }
+		recs++; next }
+	    NF == 8 { n++; if (!(n in st)) next; cx = $3 - $1; cy = $4 - $2; c = cx * cx + cy * cy
+		if (($5 * cy - $6 * cx)^2 > 1e-18 * c * ($5 * $5 + $6 * $6) ||
+		    ($7 * cy - $8 * cx)^2 > 1e-18 * c * ($7 * $7 + $8 * $8) ||
+		    $5 * cx + $6 * cy <= 0 || $7 * cx + $8 * cy <= 0) bad++; lines++ }
+	    END { exit !(recs >= 100 && lines >= 50 && bad == 0) }' "$T/out" && ok ||
+	    no "$what: straight spans not straight, or too few records"
+else
+	echo "fit: glyph contours skipped: $(head -1 "$T/glyphs.err")"
+fi
+
 # ---- -v: the measures -----------------------------------------------------
 # The circle of radius 50: energy 2 pi / 50 = 0.125664 (to 1e-3, as
 # above), smallest radius 50 (to 3%: cubics through 12 knots of a circle
