@@ -665,6 +665,33 @@ star_simple(const double *pt, size_t np)
 	return turn > 0 ? up == 1 : down == 1;
 }
 
+/* Whether two edges of the polyline pt (np points, ne edges) that share
+ * one of the ncell cells cross, not neighbours: cell c's edges are
+ * list[cnt[c - 1] .. cnt[c]) (from 0 for c = 0). */
+static int
+cells_cross(const double *pt, size_t np, size_t ne, int closed,
+    const size_t *cnt, const size_t *list, size_t ncell)
+{
+	for (size_t c = 0; c < ncell; c++) {
+		size_t from = c > 0 ? cnt[c - 1] : 0;
+
+		for (size_t i = from; i < cnt[c]; i++)
+			for (size_t j = i + 1; j < cnt[c]; j++) {
+				size_t a = list[i], b = list[j];
+
+				if (a > b)
+					a = list[j], b = list[i];
+				if (b == a + 1 || a == b ||
+				    (closed && a == 0 && b == ne - 1))
+					continue;
+				if (edges_cross(pt + 2 * a, pt + 2 * ((a + 1) %
+				    np), pt + 2 * b, pt + 2 * ((b + 1) % np)))
+					return 1;
+			}
+	}
+	return 0;
+}
+
 /* Edges sorted into a grid of about one cell an edge, pairs tested
  * within cells: O(n) for a curve of even speed. */
 int
@@ -730,24 +757,7 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				list[cnt[y * g + x]++] = e;
 	}
-	/* cnt[c] is now the end of cell c's edges, cnt[c - 1] its start */
-	for (size_t c = 0; !found && c < g * g; c++) {
-		size_t from = c > 0 ? cnt[c - 1] : 0;
-
-		for (size_t i = from; !found && i < cnt[c]; i++)
-			for (size_t j = i + 1; !found && j < cnt[c]; j++) {
-				size_t a = list[i], b = list[j];
-
-				if (a > b)
-					a = list[j], b = list[i];
-				if (b == a + 1 || a == b ||
-				    (closed && a == 0 && b == ne - 1))
-					continue;
-				found = edges_cross(pt + 2 * a,
-				    pt + 2 * ((a + 1) % np), pt + 2 * b,
-				    pt + 2 * ((b + 1) % np));
-			}
-	}
+	found = cells_cross(pt, np, ne, closed, cnt, list, g * g);
 	free(pt);
 	free(cell);
 	free(cnt);
