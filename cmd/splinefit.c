@@ -24,6 +24,7 @@ struct opts {
 	double *knots;                  /* the knots kept after merging */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
+	size_t *straight, nstraight;    /* the straight spans, 0-based */
 	size_t segcap, rowcap;          /* numbers in seg; rows in keep */
 };
 
@@ -88,6 +89,8 @@ grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 		o->into = v;
 	if (v && (v = realloc(o->corner, rows * sizeof *o->corner)) != NULL)
 		o->corner = v;
+	if (v && (v = realloc(o->straight, rows * sizeof *o->straight)) != NULL)
+		o->straight = v;
 	if (v == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	o->segcap = need;
@@ -96,14 +99,16 @@ grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 }
 
 /*
- * The corners=i,j,... attribute: 1-based knot numbers of the record, in
- * increasing order, into o->corner as 0-based rows; their count in *nc.
+ * The attribute name=i,j,...: 1-based numbers from 1 to max, in
+ * increasing order, into list as 0-based; their count in *nc.  what
+ * names the numbers in messages, item the things they name.
  */
 static int
-record_corners(struct opts *o, const struct loft_record *rec, size_t *nc,
+record_list(const struct loft_record *rec, const char *name, const char *what,
+    const char *item, size_t max, size_t *list, size_t *nc,
     struct loft_error *err)
 {
-	const char *v = loft_attr(rec, "corners"), *s = v;
+	const char *v = loft_attr(rec, name), *s = v;
 	char word[32];
 
 	*nc = 0;
@@ -113,25 +118,53 @@ record_corners(struct opts *o, const struct loft_record *rec, size_t *nc,
 
 		if (len == 0 || len >= sizeof word)
 			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
-			    "corners=%s: want knot numbers separated by "
-			    "commas", v);
+			    "%s=%s: want %s numbers separated by commas", name,
+			    v, what);
 		memcpy(word, s, len);
 		word[len] = '\0';
-		if (loft_parse_int(word, 1, (long)rec->nrows, &k, err) != 0)
+		if (max < 1 || loft_parse_int(word, 1, (long)max, &k, err) != 0)
 			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
-			    "corners=%s: '%s' is not a knot number from 1 to %zu",
-			    v, word, rec->nrows);
-		if (*nc > 0 && (size_t)k - 1 <= o->corner[*nc - 1])
+			    "%s=%s: '%s' is not a %s number from 1 to %zu",
+			    name, v, word, what, max);
+		if (*nc > 0 && (size_t)k - 1 <= list[*nc - 1])
 			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
-			    "corners=%s: corner %ld %s", v, k,
-			    (size_t)k - 1 == o->corner[*nc - 1] ? "is repeated" :
-			    "comes after a later one: list corners in order");
-		o->corner[(*nc)++] = (size_t)k - 1;
+			    "%s=%s: %s %ld %s%ss in order", name, v, item, k,
+			    (size_t)k - 1 == list[*nc - 1] ? "is repeated: list " :
+			    "comes after a later one: list ", item);
+		list[(*nc)++] = (size_t)k - 1;
 		if (s[len] == '\0')
 			break;
 		s += len + 1;
 	}
 	return 0;
+}
+
+/* The corners=: knot numbers. */
+static int
+record_corners(struct opts *o, const struct loft_record *rec, size_t *nc,
+    struct loft_error *err)
+{
+	return record_list(rec, "corners", "knot", "corner", rec->nrows,
+	    o->corner, nc, err);
+}
+
+/* The straight spans after merging: each span's first knot goes to the
+ * knot it merged into, a span merged away goes. */
+static void
+merge_straight(struct opts *o, size_t n, size_t m, int closed)
+{
+	size_t c = 0;
+
+	for (size_t j = 0; j < o->nstraight; j++) {
+		size_t s = o->straight[j], a = o->into[s];
+		size_t b = o->into[(s + 1) % n];
+
+		if (a == b || (c > 0 && a <= o->straight[c - 1]) ||
+		    (!closed && a + 1 >= m))
+			continue;
+		o->straight[c++] = a;
+	}
+	o->nstraight = c;
 }
 
 /*
@@ -172,8 +205,8 @@ merge(struct opts *o, const struct loft_record *rec, int closed, double dist,
  * joint nseg + 1).  Returns 0, or LOFT_ENOMEM.
  */
 static int
-put_corners(struct loft_writer *w, const size_t *corner, size_t nc,
-    struct loft_error *err)
+put_list(struct loft_writer *w, const char *name, const size_t *corner,
+    size_t nc, struct loft_error *err)
 {
 	char *buf, *p;
 
@@ -184,7 +217,7 @@ put_corners(struct loft_writer *w, const size_t *corner, size_t nc,
 	p = buf;
 	for (size_t j = 0; j < nc; j++)
 		p += sprintf(p, "%s%zu", j > 0 ? "," : "", corner[j] + 1);
-	loft_put_attr(w, "corners", buf);
+	loft_put_attr(w, name, buf);
 	free(buf);
 	return 0;
 }
@@ -283,13 +316,15 @@ put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
     int closed, const size_t *corner, size_t nc, struct loft_error *err)
 {
 	static const char *const consumed[] = { "start", "end", "closed",
-	    "corners", NULL };
+	    "corners", "straight", NULL };
 	struct opts *o = run->ctx;
 	size_t mark = run->w.len;
 
 	loft_put_type(&run->w, "cubic");
 	loft_put_attr(&run->w, "closed", closed ? "1" : "0");
-	if (put_corners(&run->w, corner, nc, err) != 0) {
+	if (put_list(&run->w, "corners", corner, nc, err) != 0 ||
+	    put_list(&run->w, "straight", o->straight, o->nstraight, err) !=
+	    0) {
 		loft_writer_cut(&run->w, mark);
 		return LOFT_ENOMEM;
 	}
@@ -391,6 +426,7 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 		return LOFT_ENOMEM;
 	if (record_corners(o, rec, &nc, err) != 0)
 		return LOFT_EINPUT;
+	o->nstraight = 0;
 	if (o->approx > 0)
 		return approx_record(run, rec, &fit, nc, err);
 	dist = o->merge >= 0 ? o->merge : loft_merge_distance(rec->num, n, dim);
@@ -400,8 +436,14 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 		    "merging knots nearer than %.3g: a%s curve needs at least "
 		    "%d", m, m == 1 ? "" : "s", dist, fit.closed ? " closed" :
 		    "n open", fit.closed ? LOFT_MIN_CLOSED : LOFT_MIN_OPEN);
+	if (record_list(rec, "straight", "span", "straight span", fit.closed ?
+	    n : n - 1, o->straight, &o->nstraight, err) != 0)
+		return LOFT_EINPUT;
+	merge_straight(o, n, m, fit.closed);
 	fit.corner = o->corner;
 	fit.ncorner = nc;
+	fit.straight = o->straight;
+	fit.nstraight = o->nstraight;
 	if ((rc = loft_fit(&fit, o->knots, m, dim, o->seg, &info, err)) != 0) {
 		if (err->row >= 0 && (size_t)err->row < m)
 			err->row = (long)o->keep[err->row];
@@ -505,6 +547,7 @@ main(int argc, char *argv[])
 	free(o.keep);
 	free(o.into);
 	free(o.corner);
+	free(o.straight);
 	return status;
 }
 #endif

@@ -1836,6 +1836,7 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	w.tol = ldexp(o->tol, -e);
 	loft_fit_defaults(&w.fit);
 	w.fit.method = LOFT_FAIR;
+	w.fit.quick = 1;        /* its trial fits are many, their knots dense */
 	w.fit.closed = o->closed;
 	w.fit.have_start = !o->closed && o->have_start;
 	w.fit.have_end = !o->closed && o->have_end;

@@ -104,11 +104,12 @@ static const double gauss_w[GAUSS] = {
 #endif
 static FAIR_INLINE double
 energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
-    double *slow)
+    double *slow, double *len)
 {
 	const double *d0 = s + 2 * dim, *d1 = s + 3 * dim;
 	double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM], e = 0, cc = 0, vmin = HUGE_VAL;
-	double kk = *k2max, step = 1.0 / pieces;
+	double kk = *k2max, step = 1.0 / pieces, ell = 0;
+	double *gl = g != NULL ? g + 2 * dim : NULL;
 
 	for (int k = 0; k < dim; k++) {
 		double c = s[dim + k] - s[k];
@@ -118,7 +119,7 @@ energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
 		cq[k] = 3 * (d0[k] + d1[k]) - 6 * c;
 	}
 	if (g != NULL)
-		memset(g, 0, 2 * dim * sizeof *g);
+		memset(g, 0, 4 * dim * sizeof *g);
 	for (int part = 0; part < pieces; part++)
 		for (int j = 0; j < GAUSS; j++) {
 			double u = (part + gauss_u[j]) * step, wq = gauss_w[j] * step;
@@ -142,6 +143,7 @@ energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
 			r = t * t * sv;                 /* V^-5/2 */
 			k2 = num * t * t;
 			e += wq * num * r;
+			ell += wq * sv;
 			if (k2 > kk)
 				kk = k2;
 			if (v < vmin)
@@ -160,12 +162,15 @@ energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
 
 					g[k] += wq * (f1 * a0 + f2 * b0);
 					g[dim + k] += wq * (f1 * a1 + f2 * b1);
+					gl[k] += wq * p1[k] / sv * a0;
+					gl[dim + k] += wq * p1[k] / sv * a1;
 				}
 			}
 		}
 	*k2max = kk;
 	if (slow != NULL && vmin / cc < *slow)
 		*slow = vmin / cc;
+	*len += ell;
 	return e;
 }
 
@@ -173,10 +178,10 @@ energy_body(const double *s, int dim, int pieces, double *g, double *k2max,
  * coordinates unroll: most records are plane outlines. */
 static double
 segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
-    double *slow)
+    double *slow, double *len)
 {
-	return dim == 2 ? energy_body(s, 2, pieces, g, k2max, slow) :
-	    energy_body(s, dim, pieces, g, k2max, slow);
+	return dim == 2 ? energy_body(s, 2, pieces, g, k2max, slow, len) :
+	    energy_body(s, dim, pieces, g, k2max, slow, len);
 }
 
 /* Whether every tangent vector of the segments is within FAIR_MAXMAG
@@ -247,56 +252,66 @@ max_curvature(const double *seg, size_t nseg, int dim)
 	    curvature_body(seg, nseg, dim);
 }
 
-/* The energy of all nseg segments, gradients into g unless NULL; each
- * segment in parts[s] parts, or pieces where parts is NULL.  *kmax: the
- * largest curvature at the quadrature points. */
+/* The energy of all nseg segments, each in parts[s] parts, or pieces
+ * where parts is NULL; their length into *len.  Unless g is NULL, each
+ * segment's gradients of its energy and of its length with respect to
+ * its P'_A and P'_B into g, 4 dim numbers a segment.  *kmax: the largest
+ * curvature at the quadrature points; *slow as segment_energy's. */
 static double
 curve_energy(const double *seg, size_t nseg, int dim, int pieces,
-    const unsigned char *parts, double *g, double *kmax, double *slow)
+    const unsigned char *parts, double *g, double *kmax, double *slow,
+    double *len)
 {
 	double e = 0, k2 = 0;
 
 	if (slow != NULL)
 		*slow = HUGE_VAL;
+	*len = 0;
 	for (size_t s = 0; s < nseg; s++)
 		e += segment_energy(seg + s * 4 * dim, dim, parts ? parts[s] :
-		    pieces, g ? g + s * 2 * dim : NULL, &k2, slow);
+		    pieces, g ? g + s * 4 * dim : NULL, &k2, slow, len);
 	*kmax = sqrt(k2);
 	return e;
 }
 
 /*
- * The parts of each segment of the start into parts, and those of the
+ * The parts of each segment of a start into parts, and those of the
  * final check into check (see FAIR_CHECK).  Returns the start's energy
- * by the check's parts; its energy by the parts chosen into *e, the
- * largest curvature and least speed by them into *kmax and *slow (as
- * curve_energy).
+ * by the check's parts, its length by them into *flen; its energy and
+ * length by the parts chosen into *e and *len, the largest curvature
+ * and least speed by them into *kmax and *slow (as curve_energy).
  */
 static double
 choose_parts(const double *seg, size_t nseg, int dim, unsigned char *parts,
-    unsigned char *check, double *e, double *kmax, double *slow)
+    unsigned char *check, double *e, double *len, double *flen, double *kmax,
+    double *slow)
 {
 	double fine = 0, kk = 0;
 
-	*e = 0;
+	*e = *len = *flen = 0;
 	*slow = HUGE_VAL;
 	for (size_t s = 0; s < nseg; s++) {
 		const double *q = seg + s * 4 * dim;
 		double k1 = 0, k2 = 0, k8 = 0, s1 = HUGE_VAL, s2 = HUGE_VAL;
-		double s8 = HUGE_VAL, a1 = segment_energy(q, dim, 1, NULL, &k1,
-		    &s1), a2 = segment_energy(q, dim, 2, NULL, &k2, &s2), b = a2;
+		double s8 = HUGE_VAL, l1 = 0, l2 = 0, l8 = 0;
+		double a1 = segment_energy(q, dim, 1, NULL, &k1, &s1, &l1);
+		double a2 = segment_energy(q, dim, 2, NULL, &k2, &s2, &l2), b = a2;
+		double lb = l2;
 
 		parts[s] = 1;
 		check[s] = 2;
 		if (!(fabs(a1 - a2) <= 1e-4 * a2)) {
-			b = segment_energy(q, dim, FAIR_CHECK, NULL, &k8, &s8);
+			b = segment_energy(q, dim, FAIR_CHECK, NULL, &k8, &s8, &l8);
+			lb = l8;
 			check[s] = FAIR_CHECK;
 			parts[s] = fabs(a2 - b) <= 1e-4 * b ? 2 : FAIR_CHECK;
 		}
 		*e += parts[s] == 1 ? a1 : parts[s] == 2 ? a2 : b;
+		*len += parts[s] == 1 ? l1 : parts[s] == 2 ? l2 : l8;
 		kk = fmax(kk, parts[s] == 1 ? k1 : parts[s] == 2 ? k2 : k8);
 		*slow = fmin(*slow, parts[s] == 1 ? s1 : parts[s] == 2 ? s2 : s8);
 		fine += b;
+		*flen += lb;
 	}
 	*kmax = sqrt(kk);
 	return fine;
@@ -308,35 +323,74 @@ struct fair {
 	size_t n, nseg;
 	int dim;
 	double *seg, *work, *gseg;
+	double *gboth;          /* dE and dL of each segment (curve_energy) */
 	double kcap;
 	double slow;            /* the least (|P'| / chord)^2 allowed */
 	unsigned char *parts;   /* the quadrature's parts of each segment */
 	unsigned char *check;   /* and the final check's */
-	double e0;              /* the start's energy: E / e0 is descended,
+	int scalefree;          /* descend E L (thorough), else E */
+	double base;            /* the last try's E L / e0 */
+	double e0;              /* the start's E L: E L / e0 is descended,
 	                         * so steps do not depend on the units */
+	int steps;              /* steps at most */
+	double settled;         /* stop when a step gains less (relative) */
 };
 
+/* Of two curves of nearly equal E L, the one nearer continuous second
+ * derivatives (y = 0): E L is nearly flat along some y (an open curve's
+ * end magnitudes), and a descent stopped anywhere along such a valley
+ * would give a curve that moved with the rounding of the knots. */
+#define FAIR_PREFER_C2 1e-2
+
+/* The sum of the squares of the k numbers y. */
+static double
+sumsq(const double *y, size_t k)
+{
+	double s = 0;
+
+	for (size_t i = 0; i < k; i++)
+		s += y[i] * y[i];
+	return s;
+}
+
 /* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
- * into f->seg, its energy (HUGE_VAL where a curvature passes the cap),
- * and dE/dP' into f->gseg in the same pass: most tries are kept, and
- * the gradient then needs only the adjoint. */
+ * into f->seg, its scale-free energy E L / e0 (HUGE_VAL where a
+ * curvature passes the cap), and d(E L)/dP' into f->gseg in the same
+ * pass: most tries are kept, and the gradient then needs only the
+ * adjoint. */
 static double
 try_intervals(struct fair *f, const double *x, double *h)
 {
-	double e, kmax, slow;
+	double e, kmax, slow, len;
 	struct loft_error err;
+	int dim = f->dim;
 
 	for (size_t s = 0; s < f->nseg; s++)
 		h[s] = exp(x[s]);
-	if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg, f->seg,
+	if (loft__cspline_h(f->o, f->p, f->n, dim, h, x + f->nseg, f->seg,
 	    f->work, &err) != 0)
 		return HUGE_VAL;
-	if (!tame(f->seg, f->nseg, f->dim))
+	if (!tame(f->seg, f->nseg, dim))
 		return HUGE_VAL;
-	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
-	    &slow) / f->e0;
+	e = curve_energy(f->seg, f->nseg, dim, 0, f->parts, f->gboth, &kmax,
+	    &slow, &len);
 	if (!(kmax <= f->kcap) || !(slow >= f->slow))
 		return HUGE_VAL;
+	if (!f->scalefree) {    /* E alone: its gradient as it is */
+		for (size_t s = 0; s < f->nseg; s++)
+			memcpy(f->gseg + s * 2 * dim, f->gboth + s * 4 * dim,
+			    2 * dim * sizeof *f->gseg);
+		e /= f->e0;
+		return isfinite(e) ? e : HUGE_VAL;
+	}
+	/* d(E L) = L dE + E dL, segment by segment */
+	for (size_t s = 0; s < f->nseg; s++)
+		for (int k = 0; k < 2 * dim; k++)
+			f->gseg[s * 2 * dim + k] = len * f->gboth[s * 4 * dim + k] +
+			    e * f->gboth[s * 4 * dim + 2 * dim + k];
+	e *= len / f->e0;
+	f->base = e;
+	e *= 1 + FAIR_PREFER_C2 * sumsq(x + f->nseg, f->n) / f->n;
 	return isfinite(e) ? e : HUGE_VAL;
 }
 
@@ -349,8 +403,20 @@ gradient(struct fair *f, const double *x, const double *h, double *g)
 	    f->gseg, g, g + f->nseg, f->work);
 	for (size_t s = 0; s < f->nseg; s++)
 		g[s] *= h[s] / f->e0;
-	for (size_t i = 0; i < f->n; i++)
-		g[f->nseg + i] /= f->e0;
+	if (!f->scalefree) {
+		for (size_t i = 0; i < f->n; i++)
+			g[f->nseg + i] /= f->e0;
+		return;
+	}
+	for (size_t i = 0; i < f->n; i++) {
+		const double *y = x + f->nseg;
+
+		g[f->nseg + i] = g[f->nseg + i] / f->e0 * (1 + FAIR_PREFER_C2 *
+		    sumsq(y, f->n) / f->n) + f->base * 2 * FAIR_PREFER_C2 *
+		    y[i] / f->n;
+	}
+	for (size_t s = 0; s < f->nseg; s++)
+		g[s] *= 1 + FAIR_PREFER_C2 * sumsq(x + f->nseg, f->n) / f->n;
 }
 
 /*
@@ -398,89 +464,115 @@ direction(size_t m, const double *g, double *d, double *const *sv,
 		d[i] = -d[i];
 }
 
-/* The descent; returns the steps taken.  x: log h and y, the best on
- * return, whose spline f->seg holds.  v: room for 2 FAIR_MEMORY + 3
- * vectors of nseg + n. */
-static int
-descend(struct fair *f, double *x, double *h, double *v, double e)
+/* The memory of L-BFGS: FAIR_MEMORY pairs (s, y) of steps and gradient
+ * changes, k of them stored round from slot k0. */
+struct memory {
+	double *sv[FAIR_MEMORY], *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
+	int k, k0;
+};
+
+/* Remember the step from xp to x, whose gradient g is replaced by the
+ * one at x: the pair (x - xp, g(x) - g(xp)), or forget all where it
+ * shows no curvature. */
+static void
+remember(struct fair *f, struct memory *mm, const double *xp, const double *x,
+    const double *h, double *g)
 {
 	size_t m = f->nseg + f->n;
-	double *g = v, *d = g + m, *xp = d + m, *sv[FAIR_MEMORY],
-	    *yv[FAIR_MEMORY], rho[FAIR_MEMORY];
-	int it, k = 0, k0 = 0, stale = 0;
-	double kmax;
+	int q = mm->k < FAIR_MEMORY ? (mm->k0 + mm->k) % FAIR_MEMORY : mm->k0;
+	double sy = 0;
 
-	for (int j = 0; j < FAIR_MEMORY; j++) {
-		sv[j] = xp + m + 2 * j * m;
-		yv[j] = sv[j] + m;
+	if (mm->k == FAIR_MEMORY)
+		mm->k0 = (mm->k0 + 1) % FAIR_MEMORY;
+	else
+		mm->k++;
+	for (size_t i = 0; i < m; i++) {
+		mm->sv[q][i] = x[i] - xp[i];
+		mm->yv[q][i] = -g[i];
 	}
-	curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, f->gseg, &kmax,
-	    NULL);
 	gradient(f, x, h, g);
-	for (it = 0; it < FAIR_STEPS; it++) {
-		double gd = 0, big = 0, t = 1, en = HUGE_VAL;
-		int q;
+	for (size_t i = 0; i < m; i++) {
+		mm->yv[q][i] += g[i];
+		sy += mm->yv[q][i] * mm->sv[q][i];
+	}
+	if (sy > 0) {
+		mm->rho[q] = 1 / sy;
+	} else {
+		mm->k = 0;
+		mm->k0 = 0;
+	}
+}
 
-		direction(m, g, d, sv, yv, rho, k, k0);
+/* Along d from xp (objective e, slope gd < 0) to x, a step no longer
+ * than FAIR_MAXSTEP in any coordinate, quartered until Armijo's rule
+ * holds; returns the new objective, or HUGE_VAL with x = xp. */
+static double
+line_search(struct fair *f, const double *xp, const double *d, double big,
+    double e, double gd, double *x, double *h)
+{
+	size_t m = f->nseg + f->n;
+	double t = fmin(1, FAIR_MAXSTEP / big);
+
+	for (int half = 0; half < FAIR_HALVINGS; half++, t *= 0.25) {
+		double en;
+
+		for (size_t i = 0; i < m; i++)
+			x[i] = xp[i] + t * d[i];
+		en = try_intervals(f, x, h);
+		if (en <= e + FAIR_ARMIJO * t * gd)
+			return en;
+	}
+	memcpy(x, xp, m * sizeof *x);
+	return HUGE_VAL;
+}
+
+/* The descent; returns the steps taken and the objective reached into
+ * *e (HUGE_VAL where the start passes a cap).  x: log h and y, the best
+ * on return, whose spline f->seg holds.  v: room for 2 FAIR_MEMORY + 3
+ * vectors of nseg + n. */
+static int
+descend(struct fair *f, double *x, double *h, double *v, double *e)
+{
+	size_t m = f->nseg + f->n;
+	double *g = v, *d = g + m, *xp = d + m;
+	struct memory mm;
+	int it, stale = 0;
+
+	mm.k = mm.k0 = 0;
+	for (int j = 0; j < FAIR_MEMORY; j++) {
+		mm.sv[j] = xp + m + 2 * j * m;
+		mm.yv[j] = mm.sv[j] + m;
+	}
+	if (!((*e = try_intervals(f, x, h)) < HUGE_VAL))
+		return 0;
+	gradient(f, x, h, g);
+	for (it = 0; it < f->steps; it++) {
+		double gd = 0, big = 0, en;
+
+		direction(m, g, d, mm.sv, mm.yv, mm.rho, mm.k, mm.k0);
 		for (size_t i = 0; i < m; i++) {
 			gd += g[i] * d[i];
 			big = fmax(big, fabs(d[i]));
 		}
 		if (!(gd < 0) || !isfinite(gd)) {       /* start afresh */
-			if (k == 0)
+			if (mm.k == 0)
 				break;
-			k = 0;
+			mm.k = 0;
 			it--;
 			continue;
 		}
-		t = fmin(1, FAIR_MAXSTEP / big);
 		memcpy(xp, x, m * sizeof *x);
-		for (int half = 0; half < FAIR_HALVINGS; half++, t *= 0.25) {
-			for (size_t i = 0; i < m; i++)
-				x[i] = xp[i] + t * d[i];
-			en = try_intervals(f, x, h);
-			if (en <= e + FAIR_ARMIJO * t * gd)
-				break;
-		}
-		if (!(en <= e + FAIR_ARMIJO * t * gd)) {
-			memcpy(x, xp, m * sizeof *x);
+		if (!((en = line_search(f, xp, d, big, *e, gd, x, h)) < HUGE_VAL)) {
 			stale = 1;
 			break;
 		}
-		if (e - en < FAIR_SETTLED * e) {
+		if (*e - en < f->settled * *e || it + 1 == f->steps) {
+			*e = en;
 			it++;
 			break;
 		}
-		if (it + 1 == FAIR_STEPS) {     /* no step follows to use g */
-			it++;
-			break;
-		}
-		/* the new pair: s = x - xp, y = g(x) - g(xp) */
-		q = k < FAIR_MEMORY ? (k0 + k) % FAIR_MEMORY : k0;
-		if (k == FAIR_MEMORY)
-			k0 = (k0 + 1) % FAIR_MEMORY;
-		else
-			k++;
-		for (size_t i = 0; i < m; i++) {
-			sv[q][i] = x[i] - xp[i];
-			yv[q][i] = -g[i];
-		}
-		gradient(f, x, h, g);
-		{
-			double sy = 0;
-
-			for (size_t i = 0; i < m; i++) {
-				yv[q][i] += g[i];
-				sy += yv[q][i] * sv[q][i];
-			}
-			if (sy > 0) {
-				rho[q] = 1 / sy;
-			} else {                /* no curvature: forget all */
-				k = 0;
-				k0 = 0;
-			}
-		}
-		e = en;
+		remember(f, &mm, xp, x, h, g);
+		*e = en;
 	}
 	/* the spline of the best x, in f->seg (already, unless the last
 	 * try failed) */
@@ -573,6 +665,33 @@ star_simple(const double *pt, size_t np)
 	return turn > 0 ? up == 1 : down == 1;
 }
 
+/* Whether two edges of the polyline pt (np points, ne edges) that share
+ * one of the ncell cells cross, not neighbours: cell c's edges are
+ * list[cnt[c - 1] .. cnt[c]) (from 0 for c = 0). */
+static int
+cells_cross(const double *pt, size_t np, size_t ne, int closed,
+    const size_t *cnt, const size_t *list, size_t ncell)
+{
+	for (size_t c = 0; c < ncell; c++) {
+		size_t from = c > 0 ? cnt[c - 1] : 0;
+
+		for (size_t i = from; i < cnt[c]; i++)
+			for (size_t j = i + 1; j < cnt[c]; j++) {
+				size_t a = list[i], b = list[j];
+
+				if (a > b)
+					a = list[j], b = list[i];
+				if (b == a + 1 || a == b ||
+				    (closed && a == 0 && b == ne - 1))
+					continue;
+				if (edges_cross(pt + 2 * a, pt + 2 * ((a + 1) %
+				    np), pt + 2 * b, pt + 2 * ((b + 1) % np)))
+					return 1;
+			}
+	}
+	return 0;
+}
+
 /* Edges sorted into a grid of about one cell an edge, pairs tested
  * within cells: O(n) for a curve of even speed. */
 int
@@ -638,24 +757,7 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 			for (size_t x = c0[0]; x <= c1[0]; x++)
 				list[cnt[y * g + x]++] = e;
 	}
-	/* cnt[c] is now the end of cell c's edges, cnt[c - 1] its start */
-	for (size_t c = 0; !found && c < g * g; c++) {
-		size_t from = c > 0 ? cnt[c - 1] : 0;
-
-		for (size_t i = from; !found && i < cnt[c]; i++)
-			for (size_t j = i + 1; !found && j < cnt[c]; j++) {
-				size_t a = list[i], b = list[j];
-
-				if (a > b)
-					a = list[j], b = list[i];
-				if (b == a + 1 || a == b ||
-				    (closed && a == 0 && b == ne - 1))
-					continue;
-				found = edges_cross(pt + 2 * a,
-				    pt + 2 * ((a + 1) % np), pt + 2 * b,
-				    pt + 2 * ((b + 1) % np));
-			}
-	}
+	found = cells_cross(pt, np, ne, closed, cnt, list, g * g);
 	free(pt);
 	free(cell);
 	free(cnt);
@@ -663,15 +765,296 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 	return found;
 }
 
+/* Closed records of at most this many knots have every start run to
+ * convergence: sparse knots are where the chord spline's start lies
+ * farthest from the fairest curve, and a handful of knots costs
+ * microseconds a step.  (Not open ones: E L is nearly flat along their
+ * end magnitudes, and where a long descent stops along that valley
+ * moves with the rounding of the knots.) */
+#define FAIR_FEW 16
+
+/* Records of more have it too where the quick descent from the chord
+ * spline leaves a bend of radius under this fraction of the mean chord:
+ * a knot that sticks out, which the chord spline nearly cusps; up to
+ * FAIR_THOROUGH knots, for the thorough search costs some 100 quick
+ * descents (4 starts, 24 steps, 8 times the quadrature). */
+#define FAIR_SHARP 0.125
+#define FAIR_THOROUGH 2000
+
+/* A thorough descent's steps at most, and the relative gain of a step
+ * below which it stops: enough to take co-circular knots to within a
+ * few times the error of the best cubic arc over the widest gap, and
+ * few enough that a descent's path, and so its end, moves with the
+ * knots' rounding by no more than 1e-9 of their size (a longer one
+ * wanders along the nearly flat valleys of E L: bad.sh's units). */
+#define FAIR_CONVERGE 24
+#define FAIR_SETTLED_FINE 1e-6
+
+/* The starts of a thorough search, in order (see start_intervals). */
+enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, STARTS };
+
+/* The unit chord of segment s into u; returns its length. */
+static double
+unit_chord(const struct fair *f, size_t s, double *u)
+{
+	vsub(u, f->p + ((s + 1) % f->n) * f->dim, f->p + s * f->dim, f->dim);
+	return vunit(u, f->dim);
+}
+
+/*
+ * A direction estimate of our own at knot i, in Hobby's manner (each
+ * tangent from the knot's two chords alone, no system): the chords'
+ * unit vectors weighted each by the other's length, which is the
+ * tangent of the circle through three knots where they are even.  The
+ * ends of an open curve take their chord.
+ */
+static void
+estimate_tangent(const struct fair *f, size_t i, double *t)
+{
+	double u0[LOFT_MAXDIM], u1[LOFT_MAXDIM], w0, w1;
+
+	if (!f->o->closed && (i == 0 || i + 1 == f->n)) {
+		unit_chord(f, i == 0 ? 0 : i - 1, t);
+		return;
+	}
+	w0 = unit_chord(f, (i + f->n - 1) % f->n, u0);
+	w1 = unit_chord(f, i, u1);
+	vscale(t, w1, u0, f->dim);
+	vaxpy(t, w0, u1, f->dim);
+	if (!(vunit(t, f->dim) > 0))
+		vcopy(t, u1, f->dim);
+}
+
+/* Manning's solution's intervals: each segment's mean tangent magnitude
+ * (its length, nearly, in the paper's normalisation).  1 where Manning's
+ * iteration fails on these knots, -1 out of memory. */
+static int
+manning_intervals(const struct fair *f, double *x)
+{
+	struct loft_fit_opts mo = *f->o;
+	struct loft_fit_info info;
+	struct loft_error err;
+	double *seg = malloc(4 * f->dim * f->n * sizeof *seg);
+	int rc = 1;
+
+	if (seg == NULL)
+		return -1;
+	mo.method = LOFT_MANNING;
+	memset(&info, 0, sizeof info);
+	if (loft__fit_manning(&mo, f->p, f->n, f->dim, seg, &info, &err) ==
+	    0) {
+		rc = 0;
+		for (size_t s = 0; s < f->nseg; s++) {
+			const double *q = seg + s * 4 * f->dim;
+			double a = vnorm(q + 2 * f->dim, f->dim) +
+			    vnorm(q + 3 * f->dim, f->dim);
+
+			if (!(a > 0))
+				rc = 1;
+			x[s] = log(a / 2);
+		}
+	}
+	free(seg);
+	return rc;
+}
+
+/*
+ * The start `which' into x: log intervals and diagonal factors 0.
+ * The chord lengths; their square roots (centripetal, which never
+ * cusps a Catmull-Rom curve); each chord lengthened to the circular arc
+ * that turns by the mean of the angles estimate_tangent's directions
+ * make with it (arc length, the parameter of a fair curve); Manning's.
+ * Returns 1 where a start is not to be had, -1 out of memory.
+ */
+static int
+start_intervals(const struct fair *f, int which, double *x)
+{
+	for (size_t i = 0; i < f->n; i++)
+		x[f->nseg + i] = 0;
+	if (which == START_MANNING)
+		return manning_intervals(f, x);
+	for (size_t s = 0; s < f->nseg; s++) {
+		double u[LOFT_MAXDIM], t0[LOFT_MAXDIM], t1[LOFT_MAXDIM];
+		double w = unit_chord(f, s, u), a;
+
+		if (which == START_CHORD) {
+			x[s] = log(w);
+			continue;
+		}
+		if (which == START_CENTRIPETAL) {
+			x[s] = 0.5 * log(w);
+			continue;
+		}
+		estimate_tangent(f, s, t0);
+		estimate_tangent(f, (s + 1) % f->n, t1);
+		a = (acos(fmax(-1, fmin(1, vdot(t0, u, f->dim)))) +
+		    acos(fmax(-1, fmin(1, vdot(t1, u, f->dim))))) / 2;
+		a = fmin(a, 1.5);       /* a half turn at most */
+		x[s] = log(w * (a > 1e-8 ? a / sin(a) : 1));
+	}
+	return 0;
+}
+
+/* Samples a segment of the speed check of a thorough search's result,
+ * and the least (|P'| / chord)^2 it allows: a descent from another start
+ * than the chord spline may slip a cusp between the quadrature points,
+ * where the chord spline's own near-cusp let the speed cap down. */
+#define FAIR_SPEED_SAMPLES 64
+#define FAIR_CUSP 1e-3
+
+/* The least (|P'| / chord)^2 of the segments at FAIR_SPEED_SAMPLES + 1
+ * even points of each, and their largest curvature into *kmax. */
+static double
+least_speed(const double *seg, size_t nseg, int dim, double *kmax)
+{
+	double least = HUGE_VAL, k2 = 0;
+
+	for (size_t s = 0; s < nseg; s++) {
+		const double *q = seg + s * 4 * dim;
+		double cc = 0;
+
+		for (int k = 0; k < dim; k++)
+			cc += (q[dim + k] - q[k]) * (q[dim + k] - q[k]);
+		for (int j = 0; j <= FAIR_SPEED_SAMPLES; j++) {
+			double d[LOFT_MAXDIM], dd[LOFT_MAXDIM], v, x;
+
+			loft_cubic_eval(q, dim, (double)j / FAIR_SPEED_SAMPLES,
+			    NULL, d, dd);
+			v = vdot(d, d, dim);
+			x = vdot(d, dd, dim);
+			least = fmin(least, v / cc);
+			if (v > 0)
+				k2 = fmax(k2, (v * vdot(dd, dd, dim) - x * x) /
+				    (v * v * v));
+		}
+	}
+	*kmax = sqrt(k2);
+	return least;
+}
+
+/* The best curve found so far and what it is judged against. */
+struct best {
+	double *x;              /* its log intervals and factors */
+	double score;           /* E L by the check's parts */
+	double echord;          /* the chord spline's E by them: no more */
+	int chord_loops;        /* whether the chord spline crosses itself:
+	                         * -1 not yet known */
+	double *cseg;           /* room for the chord spline's segments */
+	int found;              /* whether x is a descent's, not the chord's */
+};
+
+/* Whether the chord spline crosses itself (plane curves; once); -1 out
+ * of memory. */
+static int
+chord_loops(struct fair *f, struct best *b, double *h)
+{
+	struct loft_error err;
+
+	if (b->chord_loops < 0) {
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = vdist(f->p + ((s + 1) % f->n) * f->dim,
+			    f->p + s * f->dim, f->dim);
+		b->chord_loops = loft__cspline_h(f->o, f->p, f->n, f->dim, h,
+		    NULL, b->cseg, f->work, &err) != 0 ? 0 :
+		    loft_fit_crosses(b->cseg, f->nseg, f->o->closed);
+	}
+	return b->chord_loops;
+}
+
+/*
+ * Judge the curve in f->seg, of x: kept as the best where, by the
+ * check's parts, its E L is below the best's, its E no more than the
+ * chord spline's, no curvature past the chord spline's largest, and (in
+ * the plane) no crossing unless the chord spline crosses too.
+ * Returns 0, or -1 out of memory.
+ */
+static int
+judge(struct fair *f, struct best *b, const double *x, double *h)
+{
+	double e, len, kmax;
+	int loops;
+
+	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->check, NULL, &kmax,
+	    NULL, &len);
+	if (f->scalefree)
+		e *= len;
+	if (!(e < b->score) || !(e <= b->echord * (f->scalefree ? len : 1)) ||
+	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap) ||
+	    (f->scalefree && (!(least_speed(f->seg, f->nseg, f->dim, &kmax) >=
+	    FAIR_CUSP) || !(kmax <= f->kcap))))
+		return 0;
+	loops = f->dim == 2 ? loft_fit_crosses(f->seg, f->nseg, f->o->closed) :
+	    0;
+	if (loops == 1)
+		loops = chord_loops(f, b, h) == 0 ? 2 : chord_loops(f, b, h);
+	if (loops < 0)
+		return -1;
+	if (loops == 2)
+		return 0;
+	b->score = e;
+	b->found = 1;
+	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	return 0;
+}
+
+/*
+ * Every start run to convergence, each judged: the check's parts are
+ * FAIR_CHECK everywhere, the chord spline judged again by them first.
+ * Returns the steps taken, or -1 out of memory.
+ */
+static int
+thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
+{
+	double e, len, k;
+	int steps = 0;
+	struct loft_error err;
+
+	f->steps = FAIR_CONVERGE;
+	f->settled = FAIR_SETTLED_FINE;
+	f->scalefree = 1;
+	memset(f->check, FAIR_CHECK, f->nseg);
+	memset(f->parts, FAIR_CHECK, f->nseg);
+	start_intervals(f, START_CHORD, x);
+	for (size_t s = 0; s < f->nseg; s++)
+		h[s] = exp(x[s]);
+	if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, NULL, f->seg,
+	    f->work, &err) != 0)
+		return 0;
+	b->echord = curve_energy(f->seg, f->nseg, f->dim, 0, f->check, NULL,
+	    &k, NULL, &len) * (1 + 1e-12);
+	b->score = b->echord * len;
+	b->found = 0;
+	f->e0 = b->score;
+	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	for (int which = 0; which < STARTS; which++) {
+		int rc = start_intervals(f, which, x);
+
+		if (rc < 0)
+			return -1;
+		if (rc > 0)
+			continue;
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = exp(x[s]);
+		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg,
+		    f->seg, f->work, &err) != 0)
+			continue;
+		steps += descend(f, x, h, v, &e);
+		if (e < HUGE_VAL && judge(f, b, x, h) != 0)
+			return -1;
+	}
+	return steps;
+}
+
 int
 loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
-	size_t nseg = o->closed ? n : n - 1;
-	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, 0, 0, NULL, NULL,
-	    1 };
-	double *mem, *x, *h, e, kmax, slow, fine;
-	int rc, loops, keep;
+	size_t nseg = o->closed ? n : n - 1, m = 2 * n;
+	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, NULL, 0, 0, NULL,
+	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
+	struct best b = { NULL, 0, 0, -1, NULL, 0 };
+	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
+	int rc, more = 0;
 
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
@@ -680,54 +1063,56 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		info->converged = 1;
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
-	mem = calloc((7 + 4 * dim) * n + 3 * n + 2 * n * (2 * FAIR_MEMORY + 3) +
-	    2 * n / sizeof *mem + 1, sizeof *mem);
+	mem = calloc((7 + 2 * dim) * n + 2 * dim * n + 4 * dim * n + 2 * m +
+	    n + m * (2 * FAIR_MEMORY + 3) + 4 * dim * n + 2 * n / sizeof *mem +
+	    1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	f.work = mem;
 	f.gseg = f.work + (7 + 2 * dim) * n;
-	x = f.gseg + 2 * dim * n;
-	h = x + 2 * n;
+	f.gboth = f.gseg + 2 * dim * n;
+	x = f.gboth + 4 * dim * n;
+	b.x = x + m;
+	h = b.x + m;
+	v = h + n;
+	b.cseg = v + m * (2 * FAIR_MEMORY + 3);
+	f.parts = (unsigned char *)(b.cseg + 4 * dim * n);
+	f.check = f.parts + n;
+	start_intervals(&f, START_CHORD, x);
 	for (size_t s = 0; s < nseg; s++)
-		x[s] = log(vdist(p + ((s + 1) % n) * dim, p + s * dim, dim));
-	for (size_t s = 0; s < nseg; s++)
-		h[s] = exp(x[s]);
+		chords += (h[s] = exp(x[s])) / nseg;
 	rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg, f.work, err);
 	if (rc == 0) {
-		f.parts = (unsigned char *)(h + n + 2 * n * (2 * FAIR_MEMORY + 3));
-		f.check = f.parts + n;
-		fine = choose_parts(seg, nseg, dim, f.parts, f.check, &e, &kmax,
-		    &slow);
+		fine = choose_parts(seg, nseg, dim, f.parts, f.check, &e, &len,
+		    &flen, &kmax, &slow);
 		/* the chord spline's largest curvature, less rounding */
 		f.kcap = fmax(kmax, max_curvature(seg, nseg, dim)) * (1 + 1e-9);
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
-		if (isfinite(e) && e > 0)
-			info->iterations = descend(&f, x, h, h + n, 1);
-		/* not fairer by the finer rule, more bent, or crossing itself
-		 * where the start does not: the chord spline after all (the
-		 * start's crossings are looked for only where the result
-		 * crosses: the start is rebuilt, and the result again if the
-		 * start crosses too) */
-		keep = info->iterations > 0 && curve_energy(seg, nseg, dim, 0,
-		    f.check, NULL, &kmax, NULL) < fine &&
-		    max_curvature(seg, nseg, dim) <= f.kcap;
-		loops = keep && dim == 2 ? loft_fit_crosses(seg, nseg,
-		    o->closed) : 0;
-		if (!keep || loops == 1) {
-			for (size_t s = 0; s < nseg; s++)
-				h[s] = vdist(p + ((s + 1) % n) * dim, p + s * dim,
-				    dim);
-			rc = loft__cspline_h(o, p, n, dim, h, NULL, seg, f.work,
-			    err);
+		b.echord = fine * (1 - 1e-15);
+		b.score = fine;
+		memcpy(b.x, x, m * sizeof *x);
+		if (isfinite(f.e0) && f.e0 > 0) {
+			info->iterations = descend(&f, x, h, v, &e);
+			if (info->iterations > 0 && e < HUGE_VAL)
+				more = judge(&f, &b, x, h);
+			if (more == 0 && o->closed && !o->quick && (n <= FAIR_FEW ||
+			    (n <= FAIR_THOROUGH && max_curvature(seg, nseg, dim) *
+			    chords * FAIR_SHARP > 1)))
+				more = thorough(&f, &b, x, h, v);
+			if (more < 0) {
+				free(mem);
+				return loft_fail(err, LOFT_ENOMEM, -1,
+				    "out of memory");
+			}
+			info->iterations += more;
 		}
-		if (rc == 0 && keep && loops == 1 && loft_fit_crosses(seg, nseg,
-		    o->closed) != 0) {
-			for (size_t s = 0; s < nseg; s++)
-				h[s] = exp(x[s]);
-			rc = loft__cspline_h(o, p, n, dim, h, x + nseg, seg,
-			    f.work, err);
-		}
+		/* the best: the chord spline unless a descent beat it */
+		for (size_t s = 0; s < nseg; s++)
+			h[s] = b.found ? exp(b.x[s]) : vdist(p + ((s + 1) % n) *
+			    dim, p + s * dim, dim);
+		rc = loft__cspline_h(o, p, n, dim, h, b.found ? b.x + nseg :
+		    NULL, seg, f.work, err);
 		info->converged = 1;
 	}
 	free(mem);

@@ -214,9 +214,9 @@ write_segments(const struct manning *m, double *seg)
 	}
 }
 
-static int
-fit_manning(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
-    double *seg, struct loft_fit_info *info, struct loft_error *err)
+int
+loft__fit_manning(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	struct manning m = { p, n, o->closed ? n : n - 1, dim, o->closed,
 	    o->alpha, NULL, NULL, NULL, NULL, NULL, NULL };
@@ -272,29 +272,76 @@ fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	if (o->method == LOFT_MANNING)
-		return fit_manning(o, q, n, dim, seg, info, err);
+		return loft__fit_manning(o, q, n, dim, seg, info, err);
 	if (o->method == LOFT_FAIR)
 		return loft__fit_fair(o, q, n, dim, seg, info, err);
 	info->converged = 1;
 	return loft__fit_cspline(o, q, n, dim, seg, err);
 }
 
+/* Whether span s (knot s to s + 1) is one of o's straight ones. */
+static int
+is_straight(const struct loft_fit_opts *o, size_t s)
+{
+	for (size_t j = 0; j < o->nstraight; j++)
+		if (o->straight[j] == s)
+			return 1;
+	return 0;
+}
+
 /*
- * A curve with corners: each piece between corners, and on an open curve
- * from an end to its corner, an open curve of its own.  The piece from
- * corner a to the next, b, covers segments a .. b-1 (mod n on a closed
- * curve, where one corner makes one piece all the way round).
+ * The knots a curve breaks at, increasing, into brk; their count: the
+ * corners and the ends of the straight spans (not an open curve's end).
+ */
+static size_t
+break_knots(const struct loft_fit_opts *o, size_t n, size_t *brk)
+{
+	size_t nb = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		int at = is_straight(o, i) || (i > 0 && is_straight(o, i - 1)) ||
+		    (o->closed && i == 0 && is_straight(o, n - 1));
+
+		for (size_t j = 0; !at && j < o->ncorner; j++)
+			at = o->corner[j] == i;
+		if (at && (o->closed || (i > 0 && i + 1 < n) ||
+		    o->ncorner > 0))
+			brk[nb++] = i;
+	}
+	return nb;
+}
+
+/* The unit direction of span s into t. */
+static void
+span_direction(const double *q, size_t n, int dim, size_t s, double *t)
+{
+	vsub(t, q + ((s + 1) % n) * dim, q + (s % n) * dim, dim);
+	vunit(t, dim);
+}
+
+/*
+ * A curve with corners or straight spans: each piece between the knots
+ * it breaks at, and on an open curve from an end to its nearest break,
+ * an open curve of its own, whose end tangent beside a straight span is
+ * the span's direction.  The piece from break a to the next, b, covers
+ * segments a .. b-1 (mod n on a closed curve, where one break makes one
+ * piece all the way round); a straight span is a piece of its own.
  */
 static int
 fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
-	size_t nc = o->ncorner, npiece = o->closed ? nc : nc + 1;
 	double *pk = malloc((n + 1) * (size_t)dim * 5 * sizeof *pk), *ps;
+	size_t *brk = malloc(n * sizeof *brk), nc, npiece;
 	int rc = 0;
 
-	if (pk == NULL)
+	if (pk == NULL || brk == NULL) {
+		free(pk);
+		free(brk);
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	nc = break_knots(o, n, brk);
+	npiece = o->closed ? nc : nc + 1;
 	ps = pk + (n + 1) * dim;
 	for (size_t k = 0; rc == 0 && k < npiece; k++) {
 		struct loft_fit_opts po = *o;
@@ -302,22 +349,40 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 		size_t a, b, len;
 
 		if (o->closed) {
-			a = o->corner[k];
-			b = k + 1 < nc ? o->corner[k + 1] : o->corner[0] + n;
+			a = brk[k];
+			b = k + 1 < nc ? brk[k + 1] : brk[0] + n;
 		} else {
-			a = k == 0 ? 0 : o->corner[k - 1];
-			b = k < nc ? o->corner[k] : n - 1;
+			a = k == 0 ? 0 : brk[k - 1];
+			b = k < nc ? brk[k] : n - 1;
 		}
-		len = b - a + 1;        /* corners increase (check_knots) */
+		len = b - a + 1;        /* breaks increase */
 		if (len < 2)            /* a corner at an end of an open curve */
 			continue;
 		for (size_t i = 0; i < len; i++)
 			vcopy(pk + i * dim, q + ((a + i) % n) * dim, dim);
 		po.closed = 0;
 		po.ncorner = 0;
+		po.nstraight = 0;
 		po.have_start = !o->closed && k == 0 && o->have_start;
 		po.have_end = !o->closed && k + 1 == npiece && o->have_end;
-		rc = fit_method(&po, pk, len, dim, ps, &pi, err);
+		if (len == 2 && is_straight(o, a % n)) {
+			double *s = ps;
+
+			vcopy(s, pk, dim);
+			vcopy(s + dim, pk + dim, dim);
+			vsub(s + 2 * dim, pk + dim, pk, dim);
+			vcopy(s + 3 * dim, s + 2 * dim, dim);
+		} else {
+			if ((o->closed || a > 0) && is_straight(o, (a + n - 1) % n)) {
+				po.have_start = 1;
+				span_direction(q, n, dim, a + n - 1, po.start);
+			}
+			if ((o->closed || b + 1 < n) && is_straight(o, b % n)) {
+				po.have_end = 1;
+				span_direction(q, n, dim, b, po.end);
+			}
+			rc = fit_method(&po, pk, len, dim, ps, &pi, err);
+		}
 		if (rc != 0 && err->row >= 0)
 			err->row = (long)((a + (size_t)err->row) % n);
 		info->iterations += pi.iterations;
@@ -328,6 +393,7 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 	}
 	info->converged = rc == 0;
 	free(pk);
+	free(brk);
 	return rc;
 }
 
@@ -349,7 +415,7 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	e = unit_box(p, n, dim, q);
 	rc = loft__check_knots(o, q, n, dim, err);
-	if (rc == 0 && o->ncorner > 0)
+	if (rc == 0 && (o->ncorner > 0 || o->nstraight > 0))
 		rc = fit_pieces(o, q, n, dim, seg, info, err);
 	else if (rc == 0)
 		rc = fit_method(o, q, n, dim, seg, info, err);

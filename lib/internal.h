@@ -162,6 +162,12 @@ int loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
 int loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err);
 
+/* fit.c: Manning's spline (sections 5, 6, 9) through knots already in
+ * the unit box, as loft_fit's LOFT_MANNING; also a start of fair.c. */
+int loft__fit_manning(const struct loft_fit_opts *o, const double *p,
+    size_t n, int dim, double *seg, struct loft_fit_info *info,
+    struct loft_error *err);
+
 /* cspline.c: the Ferguson and chord-length baselines of loft_fit. */
 int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, double *seg, struct loft_error *err);

@@ -255,6 +255,10 @@ struct loft_fit_opts {
 	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
 	const size_t *corner;   /* corner knots (0-based, increasing), or NULL */
 	size_t ncorner;
+	int quick;              /* LOFT_FAIR: the quick descent alone */
+	const size_t *straight; /* straight spans (knot i to i + 1, 0-based,
+	                         * increasing), or NULL */
+	size_t nstraight;
 };
 
 /* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
@@ -291,6 +295,13 @@ int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
  * corner, and a segment between corners at neighbouring knots is the
  * straight line between them.  A corner at an end of an open curve
  * changes nothing.  Errors name rows of p as without corners.
+ *
+ * With o->nstraight > 0, the spans straight[0.. nstraight) (span i from
+ * knot i to knot i + 1, the last of a closed curve back to knot 0) are
+ * straight lines, and the curve on either side of one is fitted as an
+ * open curve whose end tangent there is the line's direction: the
+ * tangent is continuous where a straight run meets a curve (G1), the
+ * curvature jumps from 0 to the curve's.  Corners go with them.
  */
 
 /*
@@ -349,6 +360,18 @@ double loft_tangent_distance(const double *a, const double *b, size_t nseg,
  * neighbours, that cross; 0 where it has none; -1 when out of memory.
  */
 int loft_fit_crosses(const double *seg, size_t nseg, int closed);
+
+/*
+ * The straight runs of a drawn outline (straight.c): of the nseg
+ * segments seg (rows P_A P_B P'_A P'_B of dim 2 or 3 numbers, as
+ * loft_fit writes them; closed: the last meets the first), the indices
+ * of those that are straight lines (each tangent vector along the chord,
+ * or zero) and meet a curved neighbour with its tangent (to 1e-5
+ * radians), increasing, into out (room for nseg); returns their count.
+ * Those are the spans splinefit's straight= keeps straight (loft.5).
+ */
+size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
+    size_t *out);
 
 /* ------------------------------------------------------------------ */
 /* Approximating noisy points by a fair curve (approx.c)               */

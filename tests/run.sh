@@ -57,6 +57,7 @@ slow sh tests/oom.sh
 suite bin/test/arclen
 suite bin/test/grid
 suite bin/test/bspline
+suite bin/test/straight
 slow sh tests/measure.sh
 slow sh tests/install.sh
 slow sh tests/examples.sh

@@ -2,9 +2,12 @@
  * compare.c: how fair splinefit's curves are beside other tools' through
  * the same uneven closed knots (issue 13).  Not a test: a measurement.
  *
- *   compare corpus N INSOLE   write N uneven knot sets: half the insole
- *                             with knots dropped and jittered, half
- *                             sparse blobs with uneven spacing
+ *   compare corpus N INSOLE   write N uneven knot sets: a third the
+ *                             insole with knots dropped and jittered, a
+ *                             third sparse blobs with uneven spacing, a
+ *                             third spiky sets (issue 23: 5 to 13 knots,
+ *                             one or two 2 to 4 times farther out than
+ *                             their neighbours, spacing up to 1:50)
  *   compare run FILE          fit each set of FILE by loft's default,
  *                             -m manning, -m chord, Hobby's algorithm and
  *                             (built with -DHAVE_SPIRO) Spiro's G2 points,
@@ -66,7 +69,23 @@ corpus(int n, const char *insole)
 	fclose(fp);
 	for (int s = 0; s < n; s++) {
 		printf("points set=%d\n", s + 1);
-		if (s % 2 == 0) {       /* the insole, knots dropped, jittered */
+		if (s % 3 == 2) {       /* spiky: a toe, a heel tip, a stem */
+			int m = 5 + (int)(9 * uniform()), spike = (int)(m *
+			    uniform()), spike2 = uniform() < 0.5 ? (spike + m / 2) %
+			    m : -1;
+			double a = 0, step[16], tot = 0, sq = 0.5 + 0.5 * uniform();
+
+			for (int i = 0; i < m; i++)
+				tot += step[i] = exp(log(50) * uniform());
+			for (int i = 0; i < m; i++) {
+				double r = 1 + 0.2 * (uniform() - 0.5);
+
+				if (i == spike || i == spike2)
+					r *= 2 + 2 * uniform();
+				printf("%.6f %.6f\n", r * cos(a), sq * r * sin(a));
+				a += 2 * M_PI * step[i] / tot;
+			}
+		} else if (s % 3 == 0) {        /* the insole, knots dropped, jittered */
 			int kept = 0;
 
 			for (int i = 0; i < nk; i++) {
@@ -284,9 +303,11 @@ static int
 run(const char *file)
 {
 	static double seg[MAXSEG * 8], ratio[NMETHOD][1024];
-	static double fam[2][NMETHOD][512];     /* by family: insole, blob */
+	static double fam[3][NMETHOD][512];     /* by family: insole, blob,
+	                                         * spike */
 	double k[MAXK][2], e[NMETHOD], kmax[NMETHOD];
-	int nfam[2] = { 0, 0 }, sharper[NMETHOD] = { 0 };
+	int nfam[3] = { 0, 0, 0 }, sharper[NMETHOD] = { 0 };
+	int twice[NMETHOD] = { 0 };    /* largest curvature over 2 Spiro's */
 	int nset = 0, loops[NMETHOD] = { 0 }, fails[NMETHOD] = { 0 };
 	int best[NMETHOD] = { 0 }, nk = 0, have[NMETHOD];
 	char line[256];
@@ -336,13 +357,16 @@ run(const char *file)
 #endif
 			}
 			loft_curve_cubic(&c, seg, ns, 2, 1);
+			/* a crossing counts even where a cusp leaves no energy */
+			looped[m] = ok && loft_fit_crosses(seg, ns, 1) == 1;
+			if (m == CHORD)
+				chordloop = looped[m];
 			if (!ok || loft_curve_energy(&c, &e[m], &err) != 0 ||
 			    !isfinite(e[m])) {
 				fails[m]++;
 				e[m] = HUGE_VAL;
 				continue;
 			}
-			looped[m] = loft_fit_crosses(seg, ns, 1) == 1;
 			kmax[m] = 0;
 			{
 				double r, u;
@@ -351,8 +375,6 @@ run(const char *file)
 				    r > 0)
 					kmax[m] = 1 / r;
 			}
-			if (m == CHORD)
-				chordloop = looped[m];
 		}
 		for (int m = 0; m < NMETHOD; m++) {
 			loops[m] += looped[m] && !chordloop;
@@ -360,6 +382,8 @@ run(const char *file)
 			 * largest (to rounding of the root finder) */
 			sharper[m] += e[m] < HUGE_VAL && e[CHORD] < HUGE_VAL &&
 			    kmax[m] > kmax[CHORD] * (1 + 1e-9);
+			twice[m] += have[SPIRO] && e[SPIRO] < HUGE_VAL &&
+			    kmax[m] > 2 * kmax[SPIRO];
 		}
 		for (int m = CHORD; m < NMETHOD; m++)
 			if (have[m] && e[m] < peer)
@@ -368,11 +392,11 @@ run(const char *file)
 			if (have[m] && (ib < 0 || e[m] < e[ib]))
 				ib = m;
 			ratio[m][nset] = e[m] / peer;
-			if (nfam[nset % 2] < 512)
-				fam[nset % 2][m][nfam[nset % 2]] = e[m] / peer;
+			if (nfam[nset % 3] < 512)
+				fam[nset % 3][m][nfam[nset % 3]] = e[m] / peer;
 		}
-		if (nfam[nset % 2] < 512)
-			nfam[nset % 2]++;
+		if (nfam[nset % 3] < 512)
+			nfam[nset % 3]++;
 		best[ib]++;
 		nset++;
 		nk = 0;
@@ -380,9 +404,10 @@ run(const char *file)
 	fclose(fp);
 	printf("%d uneven closed knot sets; energy over the fairest peer's "
 	    "(Spiro, Hobby, chord)\n", nset);
-	printf("%-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n", "method",
-	    "median", "90%", "worst", "fairest", "loops", "sharper", "fails",
-	    "insoles", "blobs");
+	printf("%-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n",
+	    "method", "median", "90%", "worst", "fairest", "loops", "sharper",
+	    "2xSpiro", "fails", "insoles", "blobs", "spikes", "spk90%",
+	    "spkworst");
 	for (int m = 0; m < NMETHOD; m++) {
 		if (!have[m]) {
 			printf("%-14s skipped: built without libspiro\n",
@@ -390,17 +415,21 @@ run(const char *file)
 			continue;
 		}
 		qsort(ratio[m], nset, sizeof ratio[m][0], cmp);
-		for (int f = 0; f < 2; f++)
+		for (int f = 0; f < 3; f++)
 			qsort(fam[f][m], nfam[f], sizeof fam[f][m][0], cmp);
-		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d %8d %8.4f %8.4f\n",
-		    names[m], ratio[m][nset / 2],
+		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d %8d %8d %8.4f %8.4f "
+		    "%8.4f %8.4f %8.3g\n", names[m], ratio[m][nset / 2],
 		    ratio[m][(int)(0.9 * (nset - 1))], ratio[m][nset - 1],
-		    best[m], loops[m], sharper[m], fails[m],
-		    fam[0][m][nfam[0] / 2], fam[1][m][nfam[1] / 2]);
+		    best[m], loops[m], sharper[m], twice[m], fails[m],
+		    fam[0][m][nfam[0] / 2], fam[1][m][nfam[1] / 2],
+		    fam[2][m][nfam[2] / 2], fam[2][m][(int)(0.9 * (nfam[2] - 1))],
+		    fam[2][m][nfam[2] - 1]);
 	}
 	printf("(loops: curves that cross themselves where the chord spline "
 	    "does not; sharper: sets where the largest curvature is above\n"
-	    " the chord spline's; insoles, blobs: the median of each family)\n");
+	    " the chord spline's; 2xSpiro: above twice Spiro's; insoles, "
+	    "blobs, spikes: the median of each family,\n spk90%%, spkworst: "
+	    "the spiky family's 90th percentile and worst)\n");
 	return 0;
 }
 

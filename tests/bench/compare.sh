@@ -5,7 +5,7 @@
 # Spiro needs libspiro (Debian: libspiro-dev); without it its row is
 # skipped with one line.  N sets (default 200).
 W=bin/bench
-N=${N:-200}
+N=${N:-300}
 CC=${CC:-cc}
 mkdir -p $W || exit 1
 if [ -f /usr/include/spiroentrypoints.h ] &&
@@ -19,3 +19,28 @@ else
 fi
 $W/compare corpus "$N" man/figures/insole.knots >$W/uneven.knots || exit 1
 $W/compare run $W/uneven.knots
+# issue 23: glyph contours of Debian's typefaces (tests/glyphs.py reads
+# them with fontTools at run time), their on-curve points interpolated
+# with corners= and straight= as the outline has them: the Hausdorff
+# distance to the designer's outline, in thousandths of an em
+P=/usr/bin/python3
+if $P -c 'import fontTools, scipy' 2>/dev/null &&
+    $P tests/glyphs.py $W/glyphs.knots $W/glyphs.truth 300 2>$W/glyphs.err &&
+    [ -s $W/glyphs.knots ]; then
+	sed 's/ straight=[0-9,]*//' $W/glyphs.knots >$W/glyphs-ns.knots
+	bin/splinefit $W/glyphs.knots 2>/dev/null | bin/sample -n 50 >$W/g-def.pts
+	bin/splinefit $W/glyphs-ns.knots 2>/dev/null | bin/sample -n 50 >$W/g-ns.pts
+	bin/splinefit -m manning $W/glyphs.knots 2>/dev/null |
+	    bin/sample -n 50 >$W/g-man.pts
+	bin/splinefit -m chord $W/glyphs.knots 2>/dev/null |
+	    bin/sample -n 50 >$W/g-chord.pts
+	echo
+	echo "glyph contours (FreeSerif, Linux Libertine, EB Garamond): distance" \
+	    "to the designer's outline"
+	$P tests/bench/glyphs_cmp.py $W/glyphs.truth default $W/g-def.pts \
+	    "default, no straight=" $W/g-ns.pts "-m manning" $W/g-man.pts \
+	    "-m chord" $W/g-chord.pts
+else
+	echo "compare: glyphs skipped: no /usr/bin/python3 with fontTools and" \
+	    "scipy, or no font ($(cat $W/glyphs.err 2>/dev/null))"
+fi
