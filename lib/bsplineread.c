@@ -307,7 +307,7 @@ loft__bs_surface(struct loft_cadin *c, const struct loft__bsurf *s,
 	if (rc == 0)
 		rc = loft__cadin_done(c, mark, line);
 	else
-		c->w->len = mark, c->w->col = 0;
+		loft_writer_cut(c->w, mark);
 done:
 	free(ctl);
 	free(out);

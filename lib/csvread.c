@@ -327,8 +327,7 @@ end_block(struct block *b, struct loft_cadin *c)
 		loft_end_record(c->w);
 		loft__cadin_done(c, b->mark, b->first);
 	} else if (b->bad) {
-		c->w->len = b->mark;
-		c->w->col = 0;
+		loft_writer_cut(c->w, b->mark);
 	}
 	b->mark = c->w->len;
 	b->have = b->bad = 0;

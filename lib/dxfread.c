@@ -1202,7 +1202,7 @@ spline_rational(struct dxf *d, struct ent *e, const double *ctl, int dim,
 		if (d->oom || !(err <= tol / 2)) {
 			free(rows);
 			free(hc);
-			w->len = mark;
+			loft_writer_cut(w, mark);
 			w->col = 0;
 			if (!d->oom)
 				refuse(d, e, "its rational pieces need more cubic "
@@ -1310,14 +1310,14 @@ spline_ctl(struct dxf *d, struct ent *e)
 		span_bezier(t, ctl, p, i, dim, b, work);
 		npieces++;
 		if (cubic && joint_add(d, b, dim) != 0) {
-			w->len = mark;
+			loft_writer_cut(w, mark);
 			w->col = 0;
 			return;
 		}
 		put_piece(d, e, b, p, dim, npieces);
 	}
 	if (npieces == 0) {
-		w->len = mark;
+		loft_writer_cut(w, mark);
 		w->col = 0;
 		refuse(d, e, "its knots span nothing: no piece of curve");
 		return;
@@ -1328,7 +1328,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 	}
 	loft_end_record(w);
 	if (!closed && joint_add(d, b + p * dim, dim) != 0) {
-		w->len = mark;
+		loft_writer_cut(w, mark);
 		return;
 	}
 	if (loft__cadin_done(d->c, mark, e->line) == 0)

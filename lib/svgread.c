@@ -851,19 +851,19 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 	if (rc == -2)
 		why = "an arc needs more cubic pieces than the tolerance allows";
 	if (rc == -1 || s->oom) {
-		w->len = mark;
+		loft_writer_cut(w, mark);
 		s->oom = 1;
 		return;
 	}
 	if (p != e || rc != 0) {
-		w->len = mark;
+		loft_writer_cut(w, mark);
 		w->col = 0;
 		path_bad(s, el, why, p, e);
 		return;
 	}
 	put_subpath(s, el, m, 0, pn.straight);
 	if (s->c->nbad > nbad)
-		w->len = mark;  /* a record of it failed: none of it */
+		loft_writer_cut(w, mark);  /* a record of it failed: none of it */
 }
 
 /* polyline and polygon: their points as a knot record. */
