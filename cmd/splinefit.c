@@ -20,6 +20,8 @@ struct opts {
 	double merge;                   /* -d, or -1: the default distance */
 	double approx;                  /* -e: the tolerance, or 0 */
 	int rounds;                     /* -i with -e: rounds of splitting */
+	int open_set, method_set;       /* -o, -m given: the record's closed=
+	                                 * and method= are not read */
 	double *seg, *other;            /* scratch, grown as records need */
 	double *knots;                  /* the knots kept after merging */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
@@ -27,6 +29,10 @@ struct opts {
 	size_t *straight, nstraight;    /* the straight spans, 0-based */
 	size_t segcap, rowcap;          /* numbers in seg; rows in keep */
 };
+
+/* -m's words, and a record's method=, in the order of enum loft_method */
+static const char *const methods[] = { "manning", "ferguson", "chord",
+    "fair", NULL };
 
 static const char usage_text[] =
     "usage: splinefit [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-a alpha] "
@@ -316,7 +322,7 @@ put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
     int closed, const size_t *corner, size_t nc, struct loft_error *err)
 {
 	static const char *const consumed[] = { "start", "end", "closed",
-	    "corners", "straight", NULL };
+	    "method", "corners", "straight", NULL };
 	struct opts *o = run->ctx;
 	size_t mark = run->w.len;
 
@@ -397,6 +403,32 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	return put_curve(run, rec, info.nseg, fit->closed, o->corner, nc, err);
 }
 
+/*
+ * A knot record's closed= and method= (loftplot -i saves its knots with
+ * them), where -o and -m did not say: into fit.  0, or LOFT_EINPUT.
+ */
+static int
+record_fit(const struct opts *o, const struct loft_record *rec,
+    struct loft_fit_opts *fit, struct loft_error *err)
+{
+	const char *c = loft_attr(rec, "closed"), *m = loft_attr(rec, "method");
+	int word;
+
+	if (!o->open_set && c != NULL) {
+		if (strcmp(c, "0") != 0 && strcmp(c, "1") != 0)
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "closed=%s: want 0 or 1", c);
+		fit->closed = c[0] == '1';
+	}
+	if (!o->method_set && o->approx == 0 && m != NULL) {
+		if (loft_parse_word(m, methods, &word, err) != 0)
+			return loft_fail(err, LOFT_EINPUT, -1, "attribute "
+			    "method=%s: want fair, manning, ferguson or chord", m);
+		fit->method = word;
+	}
+	return 0;
+}
+
 static int
 fit_record(struct loft_run *run, const struct loft_record *rec,
     struct loft_error *err)
@@ -416,6 +448,8 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	if (dim < 2 || dim > LOFT_MAXDIM)
 		return loft_fail(err, LOFT_EINPUT, 0, "knots have %d "
 		    "coordinate%s; 2 or 3 are needed", dim, dim == 1 ? "" : "s");
+	if (record_fit(o, rec, &fit, err) != 0)
+		return LOFT_EINPUT;
 	if (!fit.closed &&
 	    (record_tangent(rec, "start", dim, o->start_dim, &fit.have_start,
 	    fit.start, err) != 0 ||
@@ -494,8 +528,6 @@ parse_tolerance(const char *arg, double *tol, struct loft_error *err)
 int
 main(int argc, char *argv[])
 {
-	static const char *const methods[] = { "manning", "ferguson", "chord",
-	    "fair", NULL };
 	static const char *const signs[] = { "positive", "turn", NULL };
 	struct opts o = { .merge = -1 };
 	struct loft_run run = { .prog = "splinefit", .out = stdout,
@@ -508,7 +540,7 @@ main(int argc, char *argv[])
 	loft_opt_long(argc, argv, usage_text);
 	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:e:vh")) != -1) {
 		switch (c) {
-		case 'o': o.fit.closed = 0; break;
+		case 'o': o.fit.closed = 0; o.open_set = 1; break;
 		case 'S': parse_vector(c, optarg, o.fit.start,
 		    &o.fit.have_start, &o.start_dim); break;
 		case 'E': parse_vector(c, optarg, o.fit.end, &o.fit.have_end,
@@ -518,7 +550,7 @@ main(int argc, char *argv[])
 		case 'k': rc = loft_parse_word(optarg, signs, &word, &err);
 		    o.fit.sign = word; fitting = c; break;
 		case 'm': rc = loft_parse_word(optarg, methods, &word, &err);
-		    o.fit.method = word; fitting = c; break;
+		    o.fit.method = word; o.method_set = 1; fitting = c; break;
 		case 't': rc = loft_parse_real(optarg, 1e-15, 1, &o.fit.tol,
 		    &err); break;
 		case 'i': rc = loft_parse_int(optarg, 1, 1000000, &whole, &err);

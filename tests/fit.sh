@@ -350,4 +350,26 @@ for d in 1 1000 1e6; do
 	    no "$what: $(paste -d' ' "$T/keel0" "$T/keel1" | sed -n 2p)"
 done
 
+# ---- the record's closed= and method= (issue 27: loftplot -i saves them)
+# A record that says closed=0 method=manning is the curve of -o -m
+# manning on the bare knots; -o and -m override the record; a bad value
+# is refused at the header's line.
+printf '0 0\n3 1\n5 -1\n8 0.5\n10 0\n' >"$T/bare.knots"
+{ echo "points closed=0 method=manning"; cat "$T/bare.knots"; } >"$T/said.knots"
+$B/splinefit -o -m manning "$T/bare.knots" >"$T/ref.cubic"
+run "$B/splinefit $T/said.knots"
+status 0
+same_as "$T/ref.cubic"
+{ echo "points closed=1 method=chord"; cat "$T/bare.knots"; } >"$T/said.knots"
+$B/splinefit -m chord "$T/bare.knots" >"$T/ref.cubic"
+run "$B/splinefit $T/said.knots"
+same_as "$T/ref.cubic"
+$B/splinefit -o "$T/bare.knots" >"$T/ref.cubic"
+run "$B/splinefit -o -m fair $T/said.knots"
+same_as "$T/ref.cubic"
+fails 1 ":1: attribute closed=yes: want 0 or 1" \
+    "printf 'points closed=yes\n0 0\n1 1\n2 0\n' | $B/splinefit"
+fails 1 ":1: attribute method=spiro: want fair, manning, ferguson or chord" \
+    "printf 'points method=spiro\n0 0\n1 1\n2 0\n' | $B/splinefit"
+
 finish fit
