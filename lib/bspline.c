@@ -306,6 +306,19 @@ loft_rational_cubics(const double *hw, int deg, int dim, double tol,
 	    "would be needed for the tolerance", max);
 }
 
+/* The Bernstein polynomials of degree d at t into b[0..d], and their
+ * derivatives into db[0..d]. */
+static void
+basis_and_slope(int d, double t, double *b, double *db)
+{
+	double c[LOFT_BSPLINE_MAXDEG + 1];
+
+	loft_bernstein(d, t, b);
+	loft_bernstein(d - 1, t, c);
+	for (int i = 0; i <= d; i++)
+		db[i] = d * ((i > 0 ? c[i - 1] : 0) - (i < d ? c[i] : 0));
+}
+
 /*
  * The rational tensor Bezier surface hw (homogeneous, 4 numbers a point,
  * u-major, degrees m, n) at (u, v): the point and its derivatives in u,
@@ -318,19 +331,10 @@ rsurf_eval(const double *hw, int m, int n, double u, double v, double *x,
     double *xu, double *xv, double *xuv)
 {
 	double bu[2][LOFT_BSPLINE_MAXDEG + 1], bv[2][LOFT_BSPLINE_MAXDEG + 1];
-	double c[LOFT_BSPLINE_MAXDEG + 1], A[4][4] = { { 0 } };
+	double A[4][4] = { { 0 } };
 
-	for (int dir = 0; dir < 2; dir++) {
-		int d = dir ? n : m;
-		double t = dir ? v : u, (*b)[LOFT_BSPLINE_MAXDEG + 1] = dir ?
-		    bv : bu;
-
-		loft_bernstein(d, t, b[0]);
-		loft_bernstein(d - 1, t, c);
-		for (int i = 0; i <= d; i++)
-			b[1][i] = d * ((i > 0 ? c[i - 1] : 0) - (i < d ? c[i] :
-			    0));
-	}
+	basis_and_slope(m, u, bu[0], bu[1]);
+	basis_and_slope(n, v, bv[0], bv[1]);
 	/* A[0]: A, A[1]: A_u, A[2]: A_v, A[3]: A_uv */
 	for (int i = 0; i <= m; i++)
 		for (int j = 0; j <= n; j++)

@@ -85,8 +85,13 @@ put_pieces(struct loft_cadin *c, const double *b, size_t npieces, int p,
 {
 	struct loft_writer *w = c->w;
 	size_t stride = (size_t)(p + 1) * dim;
-	const double *last = b + (npieces - 1) * stride + p * dim;
-	int closed = memcmp(b, last, (size_t)dim * sizeof *b) == 0;
+	const double *last;
+	int closed;
+
+	if (b == NULL || npieces == 0)
+		return;         /* nothing to write (the callers have pieces) */
+	last = b + (npieces - 1) * stride + p * dim;
+	closed = memcmp(b, last, (size_t)dim * sizeof *b) == 0;
 
 	if (p > 3) {
 		for (size_t i = 0; i < npieces; i++) {

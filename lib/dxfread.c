@@ -1079,7 +1079,7 @@ rat_eval(const double *h, int p, int dim, double t, double *x, double *dx,
     double *work)
 {
 	int hd = dim + 1;
-	double a[4], da[4];
+	double a[4] = { 0, 0, 0, 1 }, da[4] = { 0, 0, 0, 0 };
 
 	memcpy(work, h, (size_t)((p + 1) * hd) * sizeof *work);
 	for (int r = 1; r < p; r++)             /* de Casteljau to 2 left */
@@ -1651,6 +1651,7 @@ block_find(struct dxf *d, const char *s, size_t n)
 {
 	struct block key;
 
+	memset(&key, 0, sizeof key);
 	if (d->nblk == 0 || s == NULL)
 		return NULL;
 	if (!d->blksorted) {    /* stable for equal names: the first wins */

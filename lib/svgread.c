@@ -1267,7 +1267,7 @@ id_find(struct svg *s, const char *v, size_t n)
 			hi = m;
 	}
 	if (lo < s->nids && s->ids[lo].n == n && memcmp(s->ids[lo].s, v, n) ==
-	    0 && lo < s->nids)
+	    0)
 		return &s->ids[lo];
 	return NULL;
 }
