@@ -1081,6 +1081,8 @@ rat_eval(const double *h, int p, int dim, double t, double *x, double *dx,
 	int hd = dim + 1;
 	double a[4] = { 0, 0, 0, 1 }, da[4] = { 0, 0, 0, 0 };
 
+	if (dim < 1 || dim > 3)         /* precondition: as rat_rows checks */
+		return;
 	memcpy(work, h, (size_t)((p + 1) * hd) * sizeof *work);
 	for (int r = 1; r < p; r++)             /* de Casteljau to 2 left */
 		for (int k = 0; k <= p - r; k++)
@@ -1105,6 +1107,8 @@ rat_rows(const double *h, int p, int dim, long k, double *rows, double *work)
 {
 	double err = 0, x[3], dx[3], y[3], dy[3];
 
+	if (dim < 1 || dim > 3)         /* a point of 1 to 3 numbers */
+		return INFINITY;
 	for (long j = 0; j < k; j++) {
 		double t0 = (double)j / (double)k, t1 = (double)(j + 1) /
 		    (double)k, hl = t1 - t0, *r = rows + 4 * dim * j;
