@@ -50,6 +50,11 @@ else
 	echo "$T/blocks.dxf" >"$T/list"
 	many dxf generated
 	FOPT=-F many dxf-F "generated, HATCH boundaries read (-F)"
+	# HATCH paths of ellipse and spline edges (rational too, fit data
+	# or none, R2013 and R2000) against ezdxf's evaluation, at -t 0.001
+	ls "$T"/hatch20*.dxf >"$T/list"
+	FOPT="-F -t 0.001" many dxf-Ft "generated, HATCH ellipse and spline edges (-F -t 0.001)"
+	echo "$T/blocks.dxf" >"$T/list"
 	# the TEXT noted, the two lines on layers off and frozen passed over
 	run "$F $T/blocks.dxf"
 	status 0
