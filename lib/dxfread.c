@@ -2144,6 +2144,37 @@ curve_vertices(struct dxf *d, struct loft__pts *pts, double *prev, long k)
 	return 0;
 }
 
+/* Whether p and q are one point, to HATCH_MEET of their size. */
+static int
+hatch_meet(const double *p, const double *q)
+{
+	return hypot(p[0] - q[0], p[1] - q[1]) <= HATCH_MEET * (fabs(p[0]) +
+	    fabs(p[1]) + fabs(q[0]) + fabs(q[1]));
+}
+
+/* Before edge k, from a to b as written: where it meets neither end of
+ * the edge before (prev) and that edge closed the loop begun at first,
+ * a row of NaN cuts the loop off and a new one begins at a (one edge
+ * path may hold several loops; ezdxf chains them so too).  A gap in a
+ * loop not yet closed is bridged by a straight chord.  0, or -1. */
+static int
+hatch_cut(struct dxf *d, const double *a, const double *b,
+    const double *prev, double *first, long k)
+{
+	double cut[3] = { NAN, NAN, NAN };
+
+	if (k > 0 && (hatch_meet(a, prev) || hatch_meet(b, prev) ||
+	    !hatch_meet(prev, first)))
+		return 0;
+	first[0] = a[0];
+	first[1] = a[1];
+	if (k > 0 && loft__pts_add(&d->work, cut) != 0) {
+		d->oom = 1;
+		return -1;
+	}
+	return 0;
+}
+
 /* An edge boundary path (after its 92): lines and circular arcs as
  * vertices with bulges (an arc's bulge is tan of a quarter of its
  * sweep, negative clockwise), each edge turned where it runs from the
@@ -2154,7 +2185,7 @@ static int
 hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 {
 	long n, type, ccw;
-	double prev[2] = { 0, 0 }, r = 0;
+	double prev[2] = { 0, 0 }, first[2] = { 0, 0 }, r = 0;
 	struct loft__pts pts = { NULL, 0, 0 };
 	int rc = 0;
 
@@ -2171,6 +2202,9 @@ hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 			pts.n = 0;
 			rc = type == 3 ? hatch_ellipse(d, f, i, &pts) :
 			    hatch_spline(d, f, i, k + 1 == n, &pts);
+			if (rc == 0)
+				rc = hatch_cut(d, pts.p, pts.p + 3 * (pts.n - 1),
+				    prev, first, k);
 			if (rc == 0)
 				rc = curve_vertices(d, &pts, prev, k);
 			continue;
@@ -2198,7 +2232,7 @@ hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 			b[1] = c[1] + r * sin(s1);
 			a[2] = (ccw ? 1 : -1) * tan(fmin(sw, 360) * M_PI / 720);
 		}
-		if (rc != 0)
+		if (rc != 0 || (rc = hatch_cut(d, a, b, prev, first, k)) != 0)
 			break;
 		if (k > 0 && hypot(b[0] - prev[0], b[1] - prev[1]) <
 		    hypot(a[0] - prev[0], a[1] - prev[1]) && hypot(b[0] -
@@ -2223,6 +2257,37 @@ hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 	return rc;
 }
 
+/* The path in d->work as closed knot records, one a loop (the loops
+ * apart at rows of NaN, hatch_edges's cuts).  0, or -1 after refusing
+ * the entity (what was written of the path stays). */
+static int
+hatch_loops(struct dxf *d, struct ent *e, const struct frame *f, double z)
+{
+	char msg[160];
+
+	for (size_t a = 0, b; a < d->work.n; a = b + 1) {
+		const double *v = d->work.p + 3 * a;
+
+		for (b = a; b < d->work.n && !isnan(d->work.p[3 * b]); b++)
+			;
+		d->seg.n = 0;           /* the bulges, apart */
+		for (size_t q = 0; q < b - a; q++)
+			if (nums_add(&d->seg, v[3 * q + 2]) != 0) {
+				d->oom = 1;
+				return -1;
+			}
+		/* z from the elevation: the third numbers are not read */
+		if (polyline_knots(d, f, v, d->seg.v, b - a, 1, 0, z, msg,
+		    sizeof msg) != 0) {
+			if (!d->oom)
+				refuse(d, e, msg);
+			return -1;
+		}
+		put_knots(d, e->layer, e->nlayer, e->line, 1, NULL, NULL);
+	}
+	return 0;
+}
+
 /* The boundary paths of a HATCH (its groups in d->hp): each a closed
  * knot record, arcs as chords within the tolerance. */
 static void
@@ -2232,7 +2297,6 @@ do_hatch(struct dxf *d, struct ent *e)
 	long np, flags, ns;
 	double elev[3] = { 0, 0, 0 }, ext[3] = { 0, 0, 1 };
 	struct frame f;
-	char msg[160];
 
 	while (i < d->nhp && d->hp[i].code != 91) {     /* the head */
 		const struct pair *h = &d->hp[i++];
@@ -2269,20 +2333,8 @@ do_hatch(struct dxf *d, struct ent *e)
 				    "are not as DXF writes them");
 			return;
 		}
-		d->seg.n = 0;           /* the bulges, apart */
-		for (size_t q = 0; q < d->work.n; q++)
-			if (nums_add(&d->seg, d->work.p[3 * q + 2]) != 0) {
-				d->oom = 1;
-				return;
-			}
-		/* z from the elevation: the third numbers are not read */
-		if (polyline_knots(d, &f, d->work.p, d->seg.v, d->work.n, 1, 0,
-		    elev[2], msg, sizeof msg) != 0) {
-			if (!d->oom)
-				refuse(d, e, msg);
+		if (hatch_loops(d, e, &f, elev[2]) != 0)
 			return;
-		}
-		put_knots(d, e->layer, e->nlayer, e->line, 1, NULL, NULL);
 	}
 }
 

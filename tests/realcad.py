@@ -241,9 +241,61 @@ def gen_svg(d):
 """)
 
 
+def edge_ends(g):
+    """The two ends of a HATCH edge (OCS), in either order."""
+    if g.EDGE_TYPE == "LineEdge":
+        return g.start, g.end
+    if g.EDGE_TYPE == "SplineEdge":
+        bs = g.construction_tool()
+        k = bs.knots()
+        return bs.point(k[bs.degree]), bs.point(k[-bs.degree - 1])
+    if g.EDGE_TYPE == "EllipseEdge":
+        return g.start_point, g.end_point
+    return tuple((g.center[0] + g.radius * math.cos(math.radians(a)),
+                  g.center[1] + g.radius * math.sin(math.radians(a)))
+                 for a in (g.start_angle, g.end_angle))
+
+
+def hatch_loops(p):
+    """A boundary path's loops, each a list of its edges ([None] for a
+    polyline path): a new loop where an edge touches neither end of the
+    chain so far and that chain is closed, as ezdxf's path.from_hatch
+    chains them (a gap in an open chain is bridged)."""
+    if not hasattr(p, "edges"):
+        return [None]
+
+    def close(a, b):
+        return math.hypot(a[0] - b[0], a[1] - b[1]) <= 1e-9
+    loops, s, e = [], None, None
+    for g in p.edges:
+        a, b = edge_ends(g)
+        if s is None:
+            loops.append([g])
+            s, e = a, b
+            continue
+        if close(e, a):
+            e = b
+        elif close(e, b):
+            e = a
+        elif close(s, b):
+            s = a
+        elif close(s, a):
+            s, e = e, b
+        elif close(s, e):
+            loops.append([g])
+            s, e = a, b
+            continue
+        else:
+            e = b
+        loops[-1].append(g)
+    return loops
+
+
 def dxf_expected(doc, fills=False):
     """ezdxf's entities of the model space, blocks exploded by ezdxf;
-    with fills, a HATCH's boundary paths too (as ("PATH", hatch, path))."""
+    with fills, a HATCH's boundary paths too, one entry a loop (as
+    ("PATH", hatch, path, its edges, the loop's index in ezdxf's
+    path.from_hatch))."""
     def off(e):
         name = e.dxf.get("layer", "0")
         if not doc.layers.has_entry(name):
@@ -263,8 +315,15 @@ def dxf_expected(doc, fills=False):
                 else:
                     yield from walk(e.virtual_entities(), depth + 1)
             elif t == "HATCH" and fills:
+                from ezdxf import path as ep
+                j = 0
                 for p in e.paths:
-                    yield ("PATH", e, p)
+                    for edges in hatch_loops(p):
+                        yield ("PATH", e, p, edges, j)
+                        j += 1
+                if j != len(list(ep.from_hatch(e))):
+                    sys.exit("HATCH %s: %d loops, ezdxf makes %d" % (
+                        e.dxf.handle, j, len(list(ep.from_hatch(e)))))
             elif t in ("ARC", "CIRCLE") and not e.dxf.radius > 0:
                 continue        # draws nothing: passed over
             elif t in ("LINE", "POINT", "ARC", "CIRCLE", "ELLIPSE",
@@ -416,7 +475,7 @@ def cmp_spline(ck, what, e, rec, mm):
         sys.exit("%s: a %s record" % (what, rec[0][0]))
 
 
-def cmp_path(ck, what, h, p, rec, mm):
+def cmp_path(ck, what, h, p, rec, mm, edges, k):
     """A HATCH path: its vertices, or its edges' starts, knots in order;
     an arc edge's knots on its circle."""
     ocs = h.ocs()
@@ -426,7 +485,7 @@ def cmp_path(ck, what, h, p, rec, mm):
                                 for v in p.vertices], rec, mm)
         return
     starts = []
-    for g in p.edges:
+    for g in edges:
         if g.EDGE_TYPE == "LineEdge":
             starts.append(g.start)
         elif g.EDGE_TYPE == "EllipseEdge":
@@ -435,23 +494,24 @@ def cmp_path(ck, what, h, p, rec, mm):
             bs = g.construction_tool()
             starts.append(bs.point(bs.knots()[bs.degree]))
         else:
-            # ezdxf's clockwise arc: its angles mirrored, end first
-            a = g.start_angle if g.ccw else -g.end_angle
+            # ezdxf keeps a clockwise arc's angles counter-clockwise
+            # (mirrored and swapped on reading): it starts at the end
+            a = g.start_angle if g.ccw else g.end_angle
             starts.append((g.center[0] + g.radius * math.cos(math.radians(a)),
                            g.center[1] + g.radius * math.sin(math.radians(a))))
     cmp_vertices(ck, what, [ocs.to_wcs((v[0], v[1], z)) for v in starts],
                  rec, mm)
-    if any(g.EDGE_TYPE in ("EllipseEdge", "SplineEdge") for g in p.edges):
-        cmp_curved_path(ck, what, h, p, rec, mm)
+    if any(g.EDGE_TYPE in ("EllipseEdge", "SplineEdge") for g in edges):
+        cmp_curved_path(ck, what, h, edges, rec, mm)
         return
     # every knot on ezdxf's own boundary, whose arcs are cubic Beziers
     # (2.7e-4 of the radius off a quarter circle, so 3e-4 of the path's
     # size is allowed): an arc drawn the other way round fails here
     from ezdxf import path as ep
-    k = list(h.paths).index(p)
     line = [[x * mm for x in pt3(q)] for q in
             list(ep.from_hatch(h))[k].flattening(1e-7)]
-    size = max(dist(a, b) for a in line[::8] for b in line[::8])
+    few = line[::max(1, len(line) // 64)]
+    size = max(dist(a, b) for a in few for b in few)
     for q in rec[1]:
         dd = min(seg_dist(pt3(q), line[i], line[i + 1])
                  for i in range(len(line) - 1))
@@ -500,7 +560,7 @@ def pts_to_segs(P, A, B):
     return best
 
 
-def cmp_curved_path(ck, what, h, p, rec, mm):
+def cmp_curved_path(ck, what, h, edges, rec, mm):
     """A path with ellipse or spline edges, read with -t HATCH_T: its
     edges sampled by ezdxf (20000 points each: the samples' own chords
     stand under 2e-7 off) lie within HATCH_T of fromcad's closed polygon
@@ -510,7 +570,7 @@ def cmp_curved_path(ck, what, h, p, rec, mm):
     import numpy as np
     ocs, z = h.ocs(), h.dxf.elevation[2]
     curve = []
-    for g in p.edges:
+    for g in edges:
         curve += [ocs.to_wcs((v[0], v[1], z)) for v in edge_samples(g, 20000)]
     C = np.array([[x * mm for x in pt3(q)] for q in curve])
     K = np.array([pt3(q) for q in rec[1]])
@@ -519,7 +579,7 @@ def cmp_curved_path(ck, what, h, p, rec, mm):
     Kn = np.roll(K, -1, axis=0)
     d1 = pts_to_segs(C, K, Kn)
     rat = any(g.EDGE_TYPE == "SplineEdge" and len(g.weights)
-              for g in p.edges)
+              for g in edges)
     on = HATCH_T / 2 if rat else 2e-6
     d2 = pts_to_segs(K, C[:-1], C[1:])
     ck.points += len(C) + len(K)
@@ -555,7 +615,7 @@ def cmp_dxf(path, loft, fills=False):
     for i, (e, rec) in enumerate(zip(exp, recs)):
         if isinstance(e, tuple):
             cmp_path(ck, "record %d (HATCH path)" % (i + 1), e[1], e[2],
-                     rec, mm)
+                     rec, mm, e[3], e[4])
             continue
         t = e.dxftype()
         what = "record %d (%s)" % (i + 1, t)

@@ -96,6 +96,15 @@ sys.exit(x != ["size=4.5", "offset=2", "name=heel"] or not d.appids.has_entry("L
 		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
 		    "$T/all" "$T/all" >"$T/list"
 		many dxf librecad
+		# the library's HATCHes, boundaries read (-F): one edge path
+		# may hold several loops (elektro/dev/dev22.dxf), cut as
+		# ezdxf chains them
+		while IFS= read -r f; do
+			grep -q '^HATCH' "$f" && printf '%s\n' "$f"
+		done <"$T/all" >"$T/hatched"
+		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
+		    "$T/hatched" "$T/hatched" >"$T/list"
+		FOPT=-F many dxf-F "librecad, HATCH boundaries read (-F)"
 	fi
 fi
 
