@@ -1819,6 +1819,11 @@ do_insert(struct dxf *d, struct ent *e)
  * turned round.  An edge meeting at neither end is taken as written. */
 #define HATCH_MEET 1e-9
 
+/* The cubic pieces one rational span of a spline edge may take: as
+ * many as a quarter circle needs at 1e-12 of its radius (about 300),
+ * with room to spare. */
+#define HATCH_RAT_MAX 1024
+
 /* The next group of the HATCH's groups h at *i: its number when it has
  * the code, else -1 (the boundary is not as DXF writes it). */
 static int
@@ -1869,33 +1874,357 @@ hatch_poly(struct dxf *d, size_t *i)
 	return 0;
 }
 
+/* The world tolerance for a curve of OCS size ext under f: -t, or
+ * LOFT_CADIN_ARC_REL of the size as arcs have it; in OCS units. */
+static double
+hatch_tol(const struct dxf *d, const struct frame *f, double ext)
+{
+	double s = f->scale * f->stretch;
+
+	return d->c->tol > 0 ? d->c->tol / s : LOFT_CADIN_ARC_REL * ext;
+}
+
+/*
+ * The polynomial Bezier b[0..p] (x, y each, OCS) as chords within tol:
+ * a chord over a parameter step h stands at most M h^2 / 8 off a curve
+ * whose second derivative is at most M, and M is at most p (p - 1)
+ * times the largest second difference of the points.  The chords'
+ * starts go to pts (z 0); its end does not.  0, or -1 (too many).
+ */
+static int
+bezier_chords(struct dxf *d, const double *b, int p, double tol,
+    struct loft__pts *pts)
+{
+	double m = 0, n = 1, q[2 * (LOFT_BSPLINE_MAXDEG + 1)];
+
+	for (int j = 0; j + 2 <= p; j++)
+		m = fmax(m, hypot(b[2 * j + 4] - 2 * b[2 * j + 2] + b[2 * j],
+		    b[2 * j + 5] - 2 * b[2 * j + 3] + b[2 * j + 1]));
+	m *= p * (p - 1);
+	if (m > 0)
+		n = ceil(sqrt(m / (8 * tol)));
+	if (!(n <= LOFT_CADIN_ARC_MAX))
+		return -1;
+	for (long k = 0; k < (long)n; k++) {
+		double u = (double)k / n, o[3] = { 0, 0, 0 };
+
+		memcpy(q, b, 2 * (size_t)(p + 1) * sizeof *q);
+		for (int r = p; r > 0; r--)     /* de Casteljau */
+			for (int j = 0; j < 2 * r; j++)
+				q[j] += u * (q[j + 2] - q[j]);
+		o[0] = q[0];
+		o[1] = q[1];
+		if (loft__pts_add(pts, o) != 0) {
+			d->oom = 1;
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* An ellipse edge (after its 72): centre, major axis end (relative),
+ * ratio, start and end angles (degrees from the major axis, not
+ * parameters; clockwise ones mirrored as an arc edge's), as chords:
+ * the second derivative is at most the major radius M, so a parameter
+ * step h stands at most M h^2 / 8 off.  Its points, end too, to pts. */
+static int
+hatch_ellipse(struct dxf *d, const struct frame *f, size_t *i,
+    struct loft__pts *pts)
+{
+	double c[2], mj[2], ra, a0, a1, sw, u0, du, r, tol, n;
+	long ccw;
+
+	if (hnum(d, i, 10, &c[0]) || hnum(d, i, 20, &c[1]) ||
+	    hnum(d, i, 11, &mj[0]) || hnum(d, i, 21, &mj[1]) ||
+	    hnum(d, i, 40, &ra) || hnum(d, i, 50, &a0) ||
+	    hnum(d, i, 51, &a1) || hint(d, i, 73, 1, &ccw) || !(ra > 0) ||
+	    !(hypot(mj[0], mj[1]) > 0))
+		return -1;
+	for (sw = a1 - a0; sw <= 0; sw += 360)
+		;
+	a0 *= M_PI / 180;
+	a1 *= M_PI / 180;
+	/* the parameter of an angle: atan2(sin a / ratio, cos a) */
+	u0 = atan2(sin(a0) / ra, cos(a0));
+	du = sw >= 360 ? 2 * M_PI : atan2(sin(a1) / ra, cos(a1)) - u0;
+	while (du <= 0)
+		du += 2 * M_PI;
+	if (!ccw)
+		u0 = -u0, du = -du;
+	r = hypot(mj[0], mj[1]) * fmax(1, ra);
+	tol = hatch_tol(d, f, r);
+	n = fmax(ceil(fabs(du) / (M_PI / 2)),
+	    ceil(fabs(du) * sqrt(r / (8 * tol))));
+	if (!(n <= LOFT_CADIN_ARC_MAX))
+		return -3;
+	for (long k = 0; k <= (long)n; k++) {
+		double u = u0 + du * (double)k / n;
+		double o[3] = { c[0] + cos(u) * mj[0] - sin(u) * ra * mj[1],
+		    c[1] + cos(u) * mj[1] + sin(u) * ra * mj[0], 0 };
+
+		if (loft__pts_add(pts, o) != 0) {
+			d->oom = 1;
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* The spline edge's Bezier piece b (degree p, points of hd numbers:
+ * x, y, or w x, w y, w) as chords into pts: a rational one first as
+ * cubics within half the tolerance (loft_rational_cubics), each cubic
+ * then chorded within the other half.  0, -1 (memory), -3 (the
+ * tolerance wants too many pieces). */
+static int
+spline_piece(struct dxf *d, const struct frame *f, const double *b, int p,
+    int hd, double *cub, struct loft__pts *pts)
+{
+	double ext = 0, tol, lo[2], hi[2];
+	size_t n;
+
+	for (int q = 0; q < 2; q++) {
+		lo[q] = hi[q] = b[q] / (hd == 3 ? b[2] : 1);
+		for (int j = 1; j <= p; j++) {
+			double x = b[j * hd + q] / (hd == 3 ? b[j * hd + 2] : 1);
+
+			lo[q] = fmin(lo[q], x);
+			hi[q] = fmax(hi[q], x);
+		}
+		ext = hypot(ext, hi[q] - lo[q]);
+	}
+	tol = hatch_tol(d, f, ext);
+	if (hd == 2)
+		return bezier_chords(d, b, p, tol, pts) != 0 ? d->oom ? -1 :
+		    -3 : 0;
+	if (loft_rational_cubics(b, p, 2, tol / 2, HATCH_RAT_MAX, cub, &n,
+	    NULL) != 0)
+		return -3;
+	for (size_t k = 0; k < n; k++)
+		if (bezier_chords(d, cub + 8 * k, 3, tol / 2, pts) != 0)
+			return d->oom ? -1 : -3;
+	return 0;
+}
+
+/* The fit data after a spline edge's control points, passed over: 97
+ * and its 11/21, then 12/22 and 13/23.  The 97 of fit points and the
+ * path's own 97 (its source objects) look alike: a 97 is taken for
+ * fit points only when what follows it is as DXF writes them (the next
+ * edge's 72, or the path's 97, after the last edge). */
+static void
+spline_fit(const struct dxf *d, size_t *i, int last)
+{
+	size_t j = *i;
+	long nf;
+	double x;
+
+	if (hint(d, &j, 97, 10000000, &nf) == 0) {
+		long k = 0;
+
+		while (k < nf && hnum(d, &j, 11, &x) == 0 &&
+		    hnum(d, &j, 21, &x) == 0)
+			k++;
+		if (k == nf) {
+			size_t s = j;
+
+			if (hnum(d, &j, 12, &x) == 0 && hnum(d, &j, 22, &x) != 0)
+				j = s;
+			s = j;
+			if (hnum(d, &j, 13, &x) == 0 && hnum(d, &j, 23, &x) != 0)
+				j = s;
+			if (j < d->nhp && d->hp[j].code == (last ? 97 : 72))
+				*i = j;
+		}
+		if (*i == j)
+			return;
+	}
+	j = *i;                 /* no fit points: tangents alone */
+	if (hnum(d, &j, 12, &x) == 0 && hnum(d, &j, 22, &x) == 0)
+		*i = j;
+	j = *i;
+	if (hnum(d, &j, 13, &x) == 0 && hnum(d, &j, 23, &x) == 0)
+		*i = j;
+}
+
+/* A spline edge (after its 72): degree 94, rational 73, periodic 74,
+ * knots 95/40, control points 96/10/20 with weights 42, then fit data
+ * (passed over: the control points are the curve); its Bezier pieces
+ * (loft_bspline_bezier, in homogeneous form when rational) as chords,
+ * end too, to pts.  0, -1 (malformed), -3 (too many chords). */
+static int
+hatch_spline(struct dxf *d, const struct frame *f, size_t *i, int last,
+    struct loft__pts *pts)
+{
+	long deg, rat, per, nk, nc;
+	double *t = NULL, *c = NULL, *out = NULL, *cub = NULL;
+	int hd, r = -1;
+	size_t ns;
+
+	if (hint(d, i, 94, LOFT_BSPLINE_MAXDEG, &deg) || deg < 1 ||
+	    hint(d, i, 73, 1, &rat) || hint(d, i, 74, 1, &per) ||
+	    hint(d, i, 95, 10000000, &nk) || hint(d, i, 96, 10000000, &nc) ||
+	    nk != nc + deg + 1 || nc <= deg ||
+	    (size_t)(nk + 2 * nc) > d->nhp - *i)
+		return -1;
+	hd = rat ? 3 : 2;
+	t = malloc((size_t)nk * sizeof *t);
+	c = malloc((size_t)nc * 3 * sizeof *c);
+	cub = malloc(8 * HATCH_RAT_MAX * sizeof *cub);
+	if (t == NULL || c == NULL || cub == NULL)
+		goto oom;
+	for (long k = 0; k < nk; k++)
+		if (hnum(d, i, 40, &t[k]))
+			goto done;
+	for (long k = 0; k < nc; k++) {
+		double *q = c + k * hd, w = 1;
+
+		if (hnum(d, i, 10, &q[0]) || hnum(d, i, 20, &q[1]) ||
+		    (rat && (hnum(d, i, 42, &w) || !(w > 0))))
+			goto done;
+		if (rat)
+			q[0] *= w, q[1] *= w, q[2] = w;
+	}
+	spline_fit(d, i, last);
+	if (loft_bspline_check(t, (size_t)nc, (int)deg, NULL) != 0)
+		goto done;
+	ns = loft_bspline_spans(t, (size_t)nc, (int)deg);
+	if ((out = malloc(ns * (size_t)(deg + 1) * (size_t)hd *
+	    sizeof *out)) == NULL)
+		goto oom;
+	if (loft_bspline_bezier(t, (size_t)nc, (int)deg, c, hd, out, NULL,
+	    NULL) != 0)
+		goto done;
+	for (size_t k = 0; k < ns; k++)
+		if ((r = spline_piece(d, f, out + k * (size_t)(deg + 1) *
+		    (size_t)hd, (int)deg, hd, cub, pts)) != 0)
+			goto done;
+	{
+		const double *e = out + (ns * (size_t)(deg + 1) - 1) *
+		    (size_t)hd;
+		double o[3] = { e[0], e[1], 0 };
+
+		if (rat)
+			o[0] /= e[2], o[1] /= e[2];
+		if (loft__pts_add(pts, o) != 0)
+			goto oom;
+	}
+	r = 0;
+	goto done;
+oom:
+	d->oom = 1;
+	r = -1;
+done:
+	free(t);
+	free(c);
+	free(out);
+	free(cub);
+	return r;
+}
+
+/* The edge in pts (points, its end last) after the edge ending at prev:
+ * turned round when its end, not its start, meets prev; its points but
+ * the end to d->work as vertices of no bulge.  prev becomes its end. */
+static int
+curve_vertices(struct dxf *d, struct loft__pts *pts, double *prev, long k)
+{
+	double *p = pts->p, *e = p + 3 * (pts->n - 1);
+	double db = hypot(e[0] - prev[0], e[1] - prev[1]);
+
+	if (k > 0 && db < hypot(p[0] - prev[0], p[1] - prev[1]) &&
+	    db <= HATCH_MEET * (fabs(prev[0]) + fabs(prev[1]) +
+	    fabs(p[0]) + fabs(p[1])))
+		for (size_t a = 0, b = pts->n - 1; a < b; a++, b--)
+			for (int q = 0; q < 3; q++) {
+				double s = p[3 * a + q];
+
+				p[3 * a + q] = p[3 * b + q];
+				p[3 * b + q] = s;
+			}
+	for (size_t a = 0; a + 1 < pts->n; a++)
+		if (loft__pts_add(&d->work, p + 3 * a) != 0) {
+			d->oom = 1;
+			return -1;
+		}
+	prev[0] = p[3 * (pts->n - 1)];
+	prev[1] = p[3 * (pts->n - 1) + 1];
+	return 0;
+}
+
+/* Whether p and q are one point, to HATCH_MEET of their size. */
+static int
+hatch_meet(const double *p, const double *q)
+{
+	return hypot(p[0] - q[0], p[1] - q[1]) <= HATCH_MEET * (fabs(p[0]) +
+	    fabs(p[1]) + fabs(q[0]) + fabs(q[1]));
+}
+
+/* Before edge k, from a to b as written: where it meets neither end of
+ * the edge before (prev) and that edge closed the loop begun at first,
+ * a row of NaN cuts the loop off and a new one begins at a (one edge
+ * path may hold several loops; ezdxf chains them so too).  A gap in a
+ * loop not yet closed is bridged by a straight chord.  0, or -1. */
+static int
+hatch_cut(struct dxf *d, const double *a, const double *b,
+    const double *prev, double *first, long k)
+{
+	double cut[3] = { NAN, NAN, NAN };
+
+	if (k > 0 && (hatch_meet(a, prev) || hatch_meet(b, prev) ||
+	    !hatch_meet(prev, first)))
+		return 0;
+	first[0] = a[0];
+	first[1] = a[1];
+	if (k > 0 && loft__pts_add(&d->work, cut) != 0) {
+		d->oom = 1;
+		return -1;
+	}
+	return 0;
+}
+
 /* An edge boundary path (after its 92): lines and circular arcs as
  * vertices with bulges (an arc's bulge is tan of a quarter of its
  * sweep, negative clockwise), each edge turned where it runs from the
  * end of the one before to its own start (writers do not orient them);
- * ellipse and spline edges are not read (-2). */
+ * ellipse and spline edges as chords within the tolerance (vertices of
+ * no bulge).  0, -1 (malformed), -3 (too many chords). */
 static int
-hatch_edges(struct dxf *d, size_t *i)
+hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 {
 	long n, type, ccw;
-	double prev[2] = { 0, 0 }, r = 0;
+	double prev[2] = { 0, 0 }, first[2] = { 0, 0 }, r = 0;
+	struct loft__pts pts = { NULL, 0, 0 };
+	int rc = 0;
 
 	if (hint(d, i, 93, 10000000, &n))
 		return -1;
-	for (long k = 0; k < n; k++) {
+	for (long k = 0; k < n && rc == 0; k++) {
 		double a[3] = { 0, 0, 0 }, b[2], c[2], a0, a1, sw, s0, s1;
 
-		if (hint(d, i, 72, 4, &type))
-			return -1;
+		if (hint(d, i, 72, 4, &type) || type == 0) {
+			rc = -1;
+			break;
+		}
+		if (type >= 3) {
+			pts.n = 0;
+			rc = type == 3 ? hatch_ellipse(d, f, i, &pts) :
+			    hatch_spline(d, f, i, k + 1 == n, &pts);
+			if (rc == 0)
+				rc = hatch_cut(d, pts.p, pts.p + 3 * (pts.n - 1),
+				    prev, first, k);
+			if (rc == 0)
+				rc = curve_vertices(d, &pts, prev, k);
+			continue;
+		}
 		if (type == 1) {
 			if (hnum(d, i, 10, &a[0]) || hnum(d, i, 20, &a[1]) ||
 			    hnum(d, i, 11, &b[0]) || hnum(d, i, 21, &b[1]))
-				return -1;
-		} else if (type == 2) {
+				rc = -1;
+		} else {
 			if (hnum(d, i, 10, &c[0]) || hnum(d, i, 20, &c[1]) ||
 			    hnum(d, i, 40, &r) || hnum(d, i, 50, &a0) ||
 			    hnum(d, i, 51, &a1) || hint(d, i, 73, 1, &ccw))
-				return -1;
+				rc = -1;
+			if (rc != 0)
+				break;
 			/* a clockwise arc has its angles mirrored in the
 			 * x axis, and runs clockwise from -50 to -51 */
 			for (sw = a1 - a0; sw <= 0; sw += 360)
@@ -1907,9 +2236,9 @@ hatch_edges(struct dxf *d, size_t *i)
 			b[0] = c[0] + r * cos(s1);
 			b[1] = c[1] + r * sin(s1);
 			a[2] = (ccw ? 1 : -1) * tan(fmin(sw, 360) * M_PI / 720);
-		} else {
-			return -2;
 		}
+		if (rc != 0 || (rc = hatch_cut(d, a, b, prev, first, k)) != 0)
+			break;
 		if (k > 0 && hypot(b[0] - prev[0], b[1] - prev[1]) <
 		    hypot(a[0] - prev[0], a[1] - prev[1]) && hypot(b[0] -
 		    prev[0], b[1] - prev[1]) <= HATCH_MEET * (fabs(prev[0]) +
@@ -1926,8 +2255,40 @@ hatch_edges(struct dxf *d, size_t *i)
 		prev[1] = b[1];
 		if (loft__pts_add(&d->work, a) != 0) {
 			d->oom = 1;
+			rc = -1;
+		}
+	}
+	free(pts.p);
+	return rc;
+}
+
+/* The path in d->work as closed knot records, one a loop (the loops
+ * apart at rows of NaN, hatch_edges's cuts).  0, or -1 after refusing
+ * the entity (what was written of the path stays). */
+static int
+hatch_loops(struct dxf *d, struct ent *e, const struct frame *f, double z)
+{
+	char msg[160];
+
+	for (size_t a = 0, b; a < d->work.n; a = b + 1) {
+		const double *v = d->work.p + 3 * a;
+
+		for (b = a; b < d->work.n && !isnan(d->work.p[3 * b]); b++)
+			;
+		d->seg.n = 0;           /* the bulges, apart */
+		for (size_t q = 0; q < b - a; q++)
+			if (nums_add(&d->seg, v[3 * q + 2]) != 0) {
+				d->oom = 1;
+				return -1;
+			}
+		/* z from the elevation: the third numbers are not read */
+		if (polyline_knots(d, f, v, d->seg.v, b - a, 1, 0, z, msg,
+		    sizeof msg) != 0) {
+			if (!d->oom)
+				refuse(d, e, msg);
 			return -1;
 		}
+		put_knots(d, e->layer, e->nlayer, e->line, 1, NULL, NULL);
 	}
 	return 0;
 }
@@ -1941,7 +2302,6 @@ do_hatch(struct dxf *d, struct ent *e)
 	long np, flags, ns;
 	double elev[3] = { 0, 0, 0 }, ext[3] = { 0, 0, 1 };
 	struct frame f;
-	char msg[160];
 
 	while (i < d->nhp && d->hp[i].code != 91) {     /* the head */
 		const struct pair *h = &d->hp[i++];
@@ -1964,33 +2324,22 @@ do_hatch(struct dxf *d, struct ent *e)
 
 		d->work.n = 0;
 		if (hint(d, &i, 92, 1L << 30, &flags) == 0)
-			r = flags & 2 ? hatch_poly(d, &i) : hatch_edges(d, &i);
+			r = flags & 2 ? hatch_poly(d, &i) :
+			    hatch_edges(d, &f, &i);
 		if (r == 0 && hint(d, &i, 97, 10000000, &ns) == 0)
 			i += (size_t)ns;        /* its source objects, 330 */
 		else if (r == 0)
 			r = -1;
 		if (r != 0) {
 			if (!d->oom)
-				refuse(d, e, r == -2 ? "a boundary path of "
-				    "ellipse or spline edges is not read" :
-				    "its boundary paths are not as DXF writes "
-				    "them");
+				refuse(d, e, r == -3 ? "an ellipse or spline "
+				    "edge needs more chords than the "
+				    "tolerance allows" : "its boundary paths "
+				    "are not as DXF writes them");
 			return;
 		}
-		d->seg.n = 0;           /* the bulges, apart */
-		for (size_t q = 0; q < d->work.n; q++)
-			if (nums_add(&d->seg, d->work.p[3 * q + 2]) != 0) {
-				d->oom = 1;
-				return;
-			}
-		/* z from the elevation: the third numbers are not read */
-		if (polyline_knots(d, &f, d->work.p, d->seg.v, d->work.n, 1, 0,
-		    elev[2], msg, sizeof msg) != 0) {
-			if (!d->oom)
-				refuse(d, e, msg);
+		if (hatch_loops(d, e, &f, elev[2]) != 0)
 			return;
-		}
-		put_knots(d, e->layer, e->nlayer, e->line, 1, NULL, NULL);
 	}
 }
 

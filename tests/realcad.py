@@ -162,7 +162,54 @@ def gen(d):
         b.add_text(size, dxfattribs={"layer": "15"})
         doc.modelspace().add_blockref(size, (0, 0))
     doc.saveas(d + "/d6673.dxf")
+    gen_hatch(d)
 
+
+def gen_hatch(d):
+    """HATCHes whose edge paths hold ellipse and spline edges: ellipse
+    arcs both ways and whole, splines of degree 2 and 3 with and without
+    fit data and tangents, a rational one (an exact arc), a spline as a
+    path's last edge, one HATCH in an OCS; as R2013 and as R2000 (which
+    writes no fit-point count when there are no fit points)."""
+    import ezdxf
+    from ezdxf.math import rational_bspline_from_arc
+    for ver in ("R2013", "R2000"):
+        doc = ezdxf.new(ver)
+        doc.header["$INSUNITS"] = 4
+        msp = doc.modelspace()
+        h = msp.add_hatch()
+        e = h.paths.add_edge_path()             # an ellipse arc, a line
+        g = e.add_ellipse((0, 0), (4, 1), 0.5, 20, 200)
+        e.add_line(g.end_point, g.start_point)
+        e = h.paths.add_edge_path()             # clockwise, then lines
+        g = e.add_ellipse((10, 0), (0, 3), 0.3, 30, 100, ccw=False)
+        e.add_line(g.start_point, (10, 0))
+        e.add_line((10, 0), g.end_point)
+        e = h.paths.add_edge_path()             # a whole ellipse
+        e.add_ellipse((20, 0), (-2, 2), 0.7)
+        h = msp.add_hatch(dxfattribs={"extrusion": (0, 0.6, 0.8),
+                                      "elevation": (0, 0, 2)})
+        e = h.paths.add_edge_path()             # a cubic, fit data too,
+        ctl = [(0, 0), (2, 3), (5, 3), (7, -1), (9, 0)]
+        e.add_spline(fit_points=[(0, 0), (4, 2.5), (9, 0)],
+                     control_points=ctl,
+                     knot_values=[0, 0, 0, 0, 0.4, 1, 1, 1, 1],
+                     start_tangent=(1, 1), end_tangent=(1, 0))
+        e.add_line((0, 0), (9, 0))              # the line written backwards
+        e = h.paths.add_edge_path()             # a line, then a quadratic
+        e.add_line((0, 10), (10, 10))           # spline last, no fit data
+        e.add_spline(control_points=[(10, 10), (12, 14), (6, 16), (3, 12),
+                                     (0, 10)], degree=2,
+                     knot_values=[0, 0, 0, 1, 2, 3, 3, 3])
+        e = h.paths.add_edge_path()             # a rational quarter
+        bs = rational_bspline_from_arc(center=(20, 10), radius=3,
+                                       start_angle=0, end_angle=90)
+        e.add_line((20, 10), (23, 10))
+        e.add_spline(control_points=bs.control_points,
+                     weights=bs.weights(), degree=bs.degree,
+                     knot_values=bs.knots())
+        e.add_line((20, 13), (20, 10))
+        doc.saveas("%s/hatch%s.dxf" % (d, ver[1:]))
 
 
 def gen_svg(d):
@@ -194,9 +241,61 @@ def gen_svg(d):
 """)
 
 
+def edge_ends(g):
+    """The two ends of a HATCH edge (OCS), in either order."""
+    if g.EDGE_TYPE == "LineEdge":
+        return g.start, g.end
+    if g.EDGE_TYPE == "SplineEdge":
+        bs = g.construction_tool()
+        k = bs.knots()
+        return bs.point(k[bs.degree]), bs.point(k[-bs.degree - 1])
+    if g.EDGE_TYPE == "EllipseEdge":
+        return g.start_point, g.end_point
+    return tuple((g.center[0] + g.radius * math.cos(math.radians(a)),
+                  g.center[1] + g.radius * math.sin(math.radians(a)))
+                 for a in (g.start_angle, g.end_angle))
+
+
+def hatch_loops(p):
+    """A boundary path's loops, each a list of its edges ([None] for a
+    polyline path): a new loop where an edge touches neither end of the
+    chain so far and that chain is closed, as ezdxf's path.from_hatch
+    chains them (a gap in an open chain is bridged)."""
+    if not hasattr(p, "edges"):
+        return [None]
+
+    def close(a, b):
+        return math.hypot(a[0] - b[0], a[1] - b[1]) <= 1e-9
+    loops, s, e = [], None, None
+    for g in p.edges:
+        a, b = edge_ends(g)
+        if s is None:
+            loops.append([g])
+            s, e = a, b
+            continue
+        if close(e, a):
+            e = b
+        elif close(e, b):
+            e = a
+        elif close(s, b):
+            s = a
+        elif close(s, a):
+            s, e = e, b
+        elif close(s, e):
+            loops.append([g])
+            s, e = a, b
+            continue
+        else:
+            e = b
+        loops[-1].append(g)
+    return loops
+
+
 def dxf_expected(doc, fills=False):
     """ezdxf's entities of the model space, blocks exploded by ezdxf;
-    with fills, a HATCH's boundary paths too (as ("PATH", hatch, path))."""
+    with fills, a HATCH's boundary paths too, one entry a loop (as
+    ("PATH", hatch, path, its edges, the loop's index in ezdxf's
+    path.from_hatch))."""
     def off(e):
         name = e.dxf.get("layer", "0")
         if not doc.layers.has_entry(name):
@@ -216,8 +315,15 @@ def dxf_expected(doc, fills=False):
                 else:
                     yield from walk(e.virtual_entities(), depth + 1)
             elif t == "HATCH" and fills:
+                from ezdxf import path as ep
+                j = 0
                 for p in e.paths:
-                    yield ("PATH", e, p)
+                    for edges in hatch_loops(p):
+                        yield ("PATH", e, p, edges, j)
+                        j += 1
+                if j != len(list(ep.from_hatch(e))):
+                    sys.exit("HATCH %s: %d loops, ezdxf makes %d" % (
+                        e.dxf.handle, j, len(list(ep.from_hatch(e)))))
             elif t in ("ARC", "CIRCLE") and not e.dxf.radius > 0:
                 continue        # draws nothing: passed over
             elif t in ("LINE", "POINT", "ARC", "CIRCLE", "ELLIPSE",
@@ -369,7 +475,7 @@ def cmp_spline(ck, what, e, rec, mm):
         sys.exit("%s: a %s record" % (what, rec[0][0]))
 
 
-def cmp_path(ck, what, h, p, rec, mm):
+def cmp_path(ck, what, h, p, rec, mm, edges, k):
     """A HATCH path: its vertices, or its edges' starts, knots in order;
     an arc edge's knots on its circle."""
     ocs = h.ocs()
@@ -379,30 +485,112 @@ def cmp_path(ck, what, h, p, rec, mm):
                                 for v in p.vertices], rec, mm)
         return
     starts = []
-    for g in p.edges:
+    for g in edges:
         if g.EDGE_TYPE == "LineEdge":
             starts.append(g.start)
+        elif g.EDGE_TYPE == "EllipseEdge":
+            starts.append(g.start_point if g.ccw else g.end_point)
+        elif g.EDGE_TYPE == "SplineEdge":
+            bs = g.construction_tool()
+            starts.append(bs.point(bs.knots()[bs.degree]))
         else:
-            # ezdxf's clockwise arc: its angles mirrored, end first
-            a = g.start_angle if g.ccw else -g.end_angle
+            # ezdxf keeps a clockwise arc's angles counter-clockwise
+            # (mirrored and swapped on reading): it starts at the end
+            a = g.start_angle if g.ccw else g.end_angle
             starts.append((g.center[0] + g.radius * math.cos(math.radians(a)),
                            g.center[1] + g.radius * math.sin(math.radians(a))))
     cmp_vertices(ck, what, [ocs.to_wcs((v[0], v[1], z)) for v in starts],
                  rec, mm)
+    if any(g.EDGE_TYPE in ("EllipseEdge", "SplineEdge") for g in edges):
+        cmp_curved_path(ck, what, h, edges, rec, mm)
+        return
     # every knot on ezdxf's own boundary, whose arcs are cubic Beziers
     # (2.7e-4 of the radius off a quarter circle, so 3e-4 of the path's
     # size is allowed): an arc drawn the other way round fails here
     from ezdxf import path as ep
-    k = list(h.paths).index(p)
     line = [[x * mm for x in pt3(q)] for q in
             list(ep.from_hatch(h))[k].flattening(1e-7)]
-    size = max(dist(a, b) for a in line[::8] for b in line[::8])
+    few = line[::max(1, len(line) // 64)]
+    size = max(dist(a, b) for a in few for b in few)
     for q in rec[1]:
         dd = min(seg_dist(pt3(q), line[i], line[i + 1])
                  for i in range(len(line) - 1))
         ck.points += 1
         if dd > 3e-4 * size:
             sys.exit("%s: knot %r is %.3g off the boundary" % (what, q, dd))
+
+
+# fromcad -t for the HATCHes of ellipse and spline edges (kind dxf-Ft)
+HATCH_T = 1e-3
+
+
+def edge_samples(g, n):
+    """n points along a HATCH edge by ezdxf's own evaluation (OCS)."""
+    import numpy as np
+    t = g.EDGE_TYPE
+    if t == "LineEdge":
+        return [g.start, g.end]
+    if t == "SplineEdge":
+        bs = g.construction_tool()
+        k = bs.knots()
+        return list(bs.points(np.linspace(k[bs.degree], k[-bs.degree - 1], n)))
+    if t == "EllipseEdge":
+        ce = g.construction_tool()
+        a, b = ce.start_param, ce.end_param
+        b = b + 2 * math.pi if b <= a + 1e-12 else b
+        return list(ce.vertices(np.linspace(a, b, n)))
+    a, b = math.radians(g.start_angle), math.radians(g.end_angle)
+    b = b + 2 * math.pi if b <= a else b
+    return [(g.center[0] + g.radius * math.cos(u),
+             g.center[1] + g.radius * math.sin(u))
+            for u in np.linspace(a, b, n)]
+
+
+def pts_to_segs(P, A, B):
+    """The distance of each point of P to the nearest segment A[i] B[i]."""
+    import numpy as np
+    best = np.full(len(P), np.inf)
+    AB = B - A
+    L = np.maximum((AB * AB).sum(1), 1e-300)
+    for i in range(0, len(P), 2000):
+        Q = P[i:i + 2000, None, :] - A[None, :, :]
+        t = np.clip((Q * AB[None]).sum(2) / L[None], 0, 1)
+        D = Q - t[:, :, None] * AB[None]
+        best[i:i + 2000] = np.sqrt((D * D).sum(2)).min(1)
+    return best
+
+
+def cmp_curved_path(ck, what, h, edges, rec, mm):
+    """A path with ellipse or spline edges, read with -t HATCH_T: its
+    edges sampled by ezdxf (20000 points each: the samples' own chords
+    stand under 2e-7 off) lie within HATCH_T of fromcad's closed polygon
+    (its chords keep the tolerance), and every knot lies on ezdxf's
+    curve: within 2e-6 (the sampling), or HATCH_T / 2 on a path with a
+    rational spline (its cubics take half the tolerance)."""
+    import numpy as np
+    ocs, z = h.ocs(), h.dxf.elevation[2]
+    curve = []
+    for g in edges:
+        curve += [ocs.to_wcs((v[0], v[1], z)) for v in edge_samples(g, 20000)]
+    C = np.array([[x * mm for x in pt3(q)] for q in curve])
+    K = np.array([pt3(q) for q in rec[1]])
+    if len(K) < 3:
+        sys.exit("%s: %d knots" % (what, len(K)))
+    Kn = np.roll(K, -1, axis=0)
+    d1 = pts_to_segs(C, K, Kn)
+    rat = any(g.EDGE_TYPE == "SplineEdge" and len(g.weights)
+              for g in edges)
+    on = HATCH_T / 2 if rat else 2e-6
+    d2 = pts_to_segs(K, C[:-1], C[1:])
+    ck.points += len(C) + len(K)
+    ck.dev = max(ck.dev, d1.max() / HATCH_T, d2.max() / on)
+    ck.hatch = max(getattr(ck, "hatch", 0), d1.max())
+    if d1.max() > HATCH_T:
+        sys.exit("%s: the boundary stands %.3g off the knots' polygon, "
+                 "over -t %g" % (what, d1.max(), HATCH_T))
+    if d2.max() > on:
+        sys.exit("%s: a knot stands %.3g off the boundary" % (what,
+                                                             d2.max()))
 
 
 def cmp_dxf(path, loft, fills=False):
@@ -427,7 +615,7 @@ def cmp_dxf(path, loft, fills=False):
     for i, (e, rec) in enumerate(zip(exp, recs)):
         if isinstance(e, tuple):
             cmp_path(ck, "record %d (HATCH path)" % (i + 1), e[1], e[2],
-                     rec, mm)
+                     rec, mm, e[3], e[4])
             continue
         t = e.dxftype()
         what = "record %d (%s)" % (i + 1, t)
@@ -615,7 +803,7 @@ def batch(kind, listfile):
             if kind == "svg":
                 n, ck = cmp_svg(doc, loft)
             else:
-                n, ck = cmp_dxf(doc, loft, kind == "dxf-F")
+                n, ck = cmp_dxf(doc, loft, kind in ("dxf-F", "dxf-Ft"))
         except SystemExit as e:
             print("FAIL %s: %s" % (doc, e))
             bad += 1

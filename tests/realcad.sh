@@ -50,6 +50,11 @@ else
 	echo "$T/blocks.dxf" >"$T/list"
 	many dxf generated
 	FOPT=-F many dxf-F "generated, HATCH boundaries read (-F)"
+	# HATCH paths of ellipse and spline edges (rational too, fit data
+	# or none, R2013 and R2000) against ezdxf's evaluation, at -t 0.001
+	ls "$T"/hatch20*.dxf >"$T/list"
+	FOPT="-F -t 0.001" many dxf-Ft "generated, HATCH ellipse and spline edges (-F -t 0.001)"
+	echo "$T/blocks.dxf" >"$T/list"
 	# the TEXT noted, the two lines on layers off and frozen passed over
 	run "$F $T/blocks.dxf"
 	status 0
@@ -91,6 +96,15 @@ sys.exit(x != ["size=4.5", "offset=2", "name=heel"] or not d.appids.has_entry("L
 		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
 		    "$T/all" "$T/all" >"$T/list"
 		many dxf librecad
+		# the library's HATCHes, boundaries read (-F): one edge path
+		# may hold several loops (elektro/dev/dev22.dxf), cut as
+		# ezdxf chains them
+		while IFS= read -r f; do
+			grep -q '^HATCH' "$f" && printf '%s\n' "$f"
+		done <"$T/all" >"$T/hatched"
+		awk -v n="$N" 'NR == FNR { t++; next } (FNR - 1) % int((t + n - 1) / n) == 0' \
+		    "$T/hatched" "$T/hatched" >"$T/list"
+		FOPT=-F many dxf-F "librecad, HATCH boundaries read (-F)"
 	fi
 fi
 
