@@ -16,9 +16,16 @@ struct opts {
 	struct loft_run *run;
 };
 
-static const char usage_text[] =
-    "usage: fromcad [-FHS] [-f dxf|svg|csv|step|iges] [-t tolerance] [-p digits] "
-    "[file ...]\n";
+/* The usage text, -f's words from the table of readers. */
+static const char *
+usage(void)
+{
+	static char text[512];
+
+	return loft_usage_words(text, sizeof text, "usage: fromcad [-FHS] "
+	    "[-f ", &loft_cadin_readers[0].name, sizeof loft_cadin_readers[0],
+	    "] [-t tolerance] [-p digits] [file ...]\n");
+}
 
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
 static void
@@ -128,6 +135,7 @@ main(int argc, char *argv[])
 	struct loft_cadin cad = { 0, &run.w, complain, &o, 0, 0, 0, 0, note };
 	struct loft_error err;
 	char *stdin_only[] = { "-" };
+	const char *usage_text = usage();
 	int c;
 
 	o.run = &run;

@@ -9,9 +9,16 @@
 #include "loftprog.h"
 #include "loftcad.h"
 
-static const char usage_text[] =
-    "usage: tocad -f dxf|svg|step|iges|stl|obj [-s] [-b] [-t tolerance] "
-    "[-n steps] [-u mm|cm|m|in] [file ...]\n";
+/* The usage text, -f's words from the table of formats. */
+static const char *
+usage(void)
+{
+	static char text[512];
+
+	return loft_usage_words(text, sizeof text, "usage: tocad -f ",
+	    &loft_cad_formats[0].name, sizeof loft_cad_formats[0], " [-s] [-b] "
+	    "[-t tolerance] [-n steps] [-u mm|cm|m|in] [file ...]\n");
+}
 
 static int
 tocad_record(struct loft_run *run, const struct loft_record *rec,
@@ -66,6 +73,7 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "tocad", .out = stdout, .msg = stderr,
 	    .handle = tocad_record, .ctx = &d };
 	struct loft_error err;
+	const char *usage_text = usage();
 	int c, u;
 
 	loft_opt_long(argc, argv, usage_text);

@@ -51,67 +51,39 @@ loft_bspline_spans(const double *t, size_t nctl, int deg)
 }
 
 /*
- * Insert a = L[p - 1] into the local B-spline of degree p whose span
- * [L[p - 1], L[p]) is to become a Bezier piece: knots L[0..2p), points
- * Q[0..p] (dim each).  Boehm's rule in the span:
- * Q'_r = a_r Q_r + (1 - a_r) Q_(r-1), a_r = (a - L[r-1]) / (L[r+p-1] -
- * L[r-1]), r = 1..p; the piece keeps Q'_1..Q'_p and Q_p, and the knot
- * L[0] drops out.  Repeated until L[0] == a.
+ * Span [a, c) = [t[i], t[i+1]) by knot insertion in O(p^2): with u the
+ * span's 2p knots t[i-p+1 .. i+p] and the blossom f, the control points
+ * are P_k = f(u[k .. k+p-1]), k = 0..p.  First every u before the span
+ * becomes a, R_k = f(a^(p-k), u[p .. p+k-1]); then every u after it
+ * becomes c, b_j = f(a^(p-j), c^j).  Each step is Boehm's affine
+ * interpolation of two blossom values that differ in one argument.
  */
-static void
-insert_left(double *L, double *Q, int p, int dim)
+void
+loft_bspline_span(const double *t, const double *ctl, int p, size_t i,
+    int dim, double *b)
 {
-	double a = L[p - 1];
+	const double *u = t + i + 1 - (size_t)p;
+	double a = t[i], c = t[i + 1];
 
-	while (L[0] < a) {
-		for (int r = 0; r < p; r++) {           /* r + 1 in the rule */
-			double al = (a - L[r]) / (L[r + p] - L[r]);
+	memcpy(b, ctl + (i - (size_t)p) * (size_t)dim, (size_t)((p + 1) *
+	    dim) * sizeof *b);
+	for (int r = 1; r <= p; r++)            /* u[k+r-1] -> a */
+		for (int k = 0; k <= p - r; k++) {
+			double al = (a - u[k + r - 1]) / (u[k + p] -
+			    u[k + r - 1]);
 
-			for (int k = 0; k < dim; k++)
-				Q[r * dim + k] = al * Q[(r + 1) * dim + k] +
-				    (1 - al) * Q[r * dim + k];
+			for (int q = 0; q < dim; q++)
+				b[k * dim + q] += al * (b[(k + 1) * dim + q] -
+				    b[k * dim + q]);
 		}
-		/* Q[0..p-1] now hold Q'_1..Q'_p, Q[p] is Q_p = Q'_(p+1) */
-		/* the knots: L[1..p-1], a, L[p..2p) */
-		memmove(L, L + 1, (size_t)(p - 1) * sizeof *L);
-	}
-}
+	for (int r = 1; r <= p; r++)            /* u[p+k-r] -> c */
+		for (int k = p; k >= r; k--) {
+			double be = (c - a) / (u[p + k - r] - a);
 
-/* Reverse the local spline: its points, and its knots negated. */
-static void
-reverse_local(double *L, double *Q, int p, int dim)
-{
-	for (int i = 0, j = 2 * p - 1; i < j; i++, j--) {
-		double s = L[i];
-
-		L[i] = -L[j];
-		L[j] = -s;
-	}
-	for (int i = 0, j = p; i < j; i++, j--)
-		for (int k = 0; k < dim; k++) {
-			double s = Q[i * dim + k];
-
-			Q[i * dim + k] = Q[j * dim + k];
-			Q[j * dim + k] = s;
+			for (int q = 0; q < dim; q++)
+				b[k * dim + q] = b[(k - 1) * dim + q] + be *
+				    (b[k * dim + q] - b[(k - 1) * dim + q]);
 		}
-}
-
-/* The Bezier points b[0..p] of span i (t[i] < t[i+1]) of the curve. */
-static void
-span_bezier(const double *t, const double *ctl, int p, size_t i, int dim,
-    double *b)
-{
-	double L[2 * LOFT_BSPLINE_MAXDEG];
-
-	memcpy(L, t + i - (size_t)p + 1, 2 * (size_t)p * sizeof *L);
-	memcpy(b, ctl + (i - (size_t)p) * (size_t)dim,
-	    (size_t)(p + 1) * (size_t)dim * sizeof *b);
-	if (p == 1)
-		return;         /* a line's points are its Bezier points */
-	insert_left(L, b, p, dim);
-	reverse_local(L, b, p, dim);
-	insert_left(L, b, p, dim);
-	reverse_local(L, b, p, dim);
 }
 
 int
@@ -129,7 +101,7 @@ loft_bspline_bezier(const double *t, size_t nctl, int deg, const double *ctl,
 	for (size_t i = (size_t)deg; i < nctl; i++) {
 		if (!(t[i] < t[i + 1]))
 			continue;
-		span_bezier(t, ctl, deg, i, dim, out + piece * stride);
+		loft_bspline_span(t, ctl, deg, i, dim, out + piece * stride);
 		if (range != NULL) {
 			range[2 * piece] = t[i];
 			range[2 * piece + 1] = t[i + 1];

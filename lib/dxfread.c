@@ -913,46 +913,6 @@ do_circle(struct dxf *d, struct ent *e)
 }
 
 /*
- * The Bezier control points b[0..p] of span [t[i], t[i+1]) of the
- * B-spline of degree p with knots t and control points ctl (dim each),
- * by knot insertion in O(p^2): with u the span's 2p knots t[i-p+1 ..
- * i+p] (a = u[p-1], c = u[p] its ends) and the blossom f, the control
- * points are P_k = f(u[k .. k+p-1]), k = 0..p.  First every u before
- * the span becomes a, R_k = f(a^(p-k), u[p .. p+k-1]); then every u
- * after it becomes c, b_j = f(a^(p-j), c^j).  Each step is the affine
- * interpolation of two blossom values that differ in one argument.
- * work is unused (kept for the callers' frames).
- */
-static void
-span_bezier(const double *t, const double *ctl, int p, size_t i, int dim,
-    double *b, double *work)
-{
-	const double *u = t + i + 1 - (size_t)p;
-	double a = t[i], c = t[i + 1];
-
-	(void)work;
-	memcpy(b, ctl + (i - (size_t)p) * (size_t)dim, (size_t)((p + 1) *
-	    dim) * sizeof *b);
-	for (int r = 1; r <= p; r++)            /* u[k+r-1] -> a */
-		for (int k = 0; k <= p - r; k++) {
-			double al = (a - u[k + r - 1]) / (u[k + p] -
-			    u[k + r - 1]);
-
-			for (int q = 0; q < dim; q++)
-				b[k * dim + q] += al * (b[(k + 1) * dim + q] -
-				    b[k * dim + q]);
-		}
-	for (int r = 1; r <= p; r++)            /* u[p+k-r] -> c */
-		for (int k = p; k >= r; k--) {
-			double be = (c - a) / (u[p + k - r] - a);
-
-			for (int q = 0; q < dim; q++)
-				b[k * dim + q] = b[(k - 1) * dim + q] + be *
-				    (b[k * dim + q] - b[(k - 1) * dim + q]);
-		}
-}
-
-/*
  * Whether the curve of a SPLINE ends exactly where it starts: the first
  * point of its first span's Bezier form and the last of its last.  A
  * closed curve written as a clamped spline (as tocad writes one) carries
@@ -963,7 +923,6 @@ static int
 ends_meet(const double *t, const double *ctl, int p, size_t n, int dim)
 {
 	double b0[(MAX_DEGREE + 1) * 3], b1[(MAX_DEGREE + 1) * 3];
-	double work[(MAX_DEGREE + 1) * 3];
 	size_t first = n, last = n;
 
 	for (size_t i = (size_t)p; i < n; i++)
@@ -974,8 +933,8 @@ ends_meet(const double *t, const double *ctl, int p, size_t n, int dim)
 		}
 	if (first == n)
 		return 0;
-	span_bezier(t, ctl, p, first, dim, b0, work);
-	span_bezier(t, ctl, p, last, dim, b1, work);
+	loft_bspline_span(t, ctl, p, first, dim, b0);
+	loft_bspline_span(t, ctl, p, last, dim, b1);
 	for (int q = 0; q < dim; q++)
 		if (b0[q] != b1[p * dim + q])
 			return 0;
@@ -1138,7 +1097,7 @@ rat_rows(const double *h, int p, int dim, long k, double *rows, double *work)
 
 /*
  * A rational SPLINE (weights 41 that differ): each span's rational
- * Bezier piece (by knot insertion on the homogeneous points) as cubic
+ * Bezier piece (loft_bspline_span on the homogeneous points) as cubic
  * pieces within the tolerance, halved until they are: c->tol, or
  * LOFT_CADIN_ARC_REL of half the extent of the piece's control points
  * (of the radius, for a circle's quarter).  ctl: the control points in
@@ -1181,7 +1140,7 @@ spline_rational(struct dxf *d, struct ent *e, const double *ctl, int dim,
 
 		if (!(t[i] < t[i + 1]))
 			continue;
-		span_bezier(t, hc, p, i, hd, b, work);
+		loft_bspline_span(t, hc, p, i, hd, b);
 		for (int q = 0; q < dim; q++) {
 			lo[q] = hi[q] = b[q] / b[dim];
 			for (int j = 1; j <= p; j++) {
@@ -1275,7 +1234,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 	const double *t = e->g40.v;
 	int p = (int)e->f71, dim, cubic, closed;
 	size_t hdr = mark;
-	double b[(MAX_DEGREE + 1) * 3], work[(MAX_DEGREE + 1) * 3];
+	double b[(MAX_DEGREE + 1) * 3];
 	double *ctl;
 	struct frame f;
 
@@ -1311,7 +1270,7 @@ spline_ctl(struct dxf *d, struct ent *e)
 	for (size_t i = (size_t)p; i < n; i++) {
 		if (!(t[i] < t[i + 1]))
 			continue;       /* an empty span */
-		span_bezier(t, ctl, p, i, dim, b, work);
+		loft_bspline_span(t, ctl, p, i, dim, b);
 		npieces++;
 		if (cubic && joint_add(d, b, dim) != 0) {
 			loft_writer_cut(w, mark);

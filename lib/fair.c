@@ -584,48 +584,6 @@ descend(struct fair *f, double *x, double *h, double *v, double *e)
 /* Points a segment of the polyline the crossing test follows. */
 #define FAIR_POLY 6
 
-/* Whether the edges ab and cd cross at a point inside both. */
-static int
-edges_cross(const double *a, const double *b, const double *c, const double *d)
-{
-	double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-	double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-	double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
-	double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
-
-	return ((d1 < 0 && d2 > 0) || (d1 > 0 && d2 < 0)) &&
-	    ((d3 < 0 && d4 > 0) || (d3 > 0 && d4 < 0));
-}
-
-/* The cell of each of the np points of pt in a grid of g x g over [lo,
- * lo + g w), column and row, into cell (2 np numbers). */
-static void
-point_cells(const double *pt, size_t np, const double *lo, double w, size_t g,
-    size_t *cell)
-{
-	double iw = 1 / w;
-
-	for (size_t i = 0; i < 2 * np; i++) {
-		double x = (pt[i] - lo[i % 2]) * iw;
-
-		cell[i] = x < 0 ? 0 : x >= g ? g - 1 : (size_t)x;
-	}
-}
-
-/* The cells edge e covers, from its ends' cells: the cell of a point is
- * monotonic in each coordinate, so the box of an edge's ends covers the
- * cells of all its points. */
-static void
-edge_cells(const size_t *cell, size_t np, size_t e, size_t *c0, size_t *c1)
-{
-	const size_t *a = cell + 2 * e, *b = cell + 2 * (e + 1 == np ? 0 : e + 1);
-
-	for (int k = 0; k < 2; k++) {
-		c0[k] = a[k] < b[k] ? a[k] : b[k];
-		c1[k] = a[k] < b[k] ? b[k] : a[k];
-	}
-}
-
 /*
  * Whether the closed polyline of the np points pt is shown simple by
  * being star-shaped: seen from the mean of its points every edge turns
@@ -665,41 +623,65 @@ star_simple(const double *pt, size_t np)
 	return turn > 0 ? up == 1 : down == 1;
 }
 
-/* Whether two edges of the polyline pt (np points, ne edges) that share
- * one of the ncell cells cross, not neighbours: cell c's edges are
- * list[cnt[c - 1] .. cnt[c]) (from 0 for c = 0). */
-static int
-cells_cross(const double *pt, size_t np, size_t ne, int closed,
-    const size_t *cnt, const size_t *list, size_t ncell)
+/* The polyline the crossing test follows, and the edge being tested. */
+struct poly {
+	const double *pt;
+	size_t np, ne, e;
+	double sg[4];           /* edge e */
+	int closed;
+};
+
+/* Edge e of p as a segment x0 y0 x1 y1. */
+static void
+poly_edge(const struct poly *p, size_t e, double *sg)
 {
-	for (size_t c = 0; c < ncell; c++) {
-		size_t from = c > 0 ? cnt[c - 1] : 0;
+	const double *a = p->pt + 2 * e;
+	const double *b = p->pt + 2 * (e + 1 == p->np ? 0 : e + 1);
 
-		for (size_t i = from; i < cnt[c]; i++)
-			for (size_t j = i + 1; j < cnt[c]; j++) {
-				size_t a = list[i], b = list[j];
-
-				if (a > b)
-					a = list[j], b = list[i];
-				if (b == a + 1 || a == b ||
-				    (closed && a == 0 && b == ne - 1))
-					continue;
-				if (edges_cross(pt + 2 * a, pt + 2 * ((a + 1) %
-				    np), pt + 2 * b, pt + 2 * ((b + 1) % np)))
-					return 1;
-			}
-	}
-	return 0;
+	sg[0] = a[0];
+	sg[1] = a[1];
+	sg[2] = b[0];
+	sg[3] = b[1];
 }
 
-/* Edges sorted into a grid of about one cell an edge, pairs tested
- * within cells: O(n) for a curve of even speed. */
+/* Make edge e of p the one tested, and its box lo..hi. */
+static void
+poly_take(struct poly *p, size_t e, double *lo, double *hi)
+{
+	p->e = e;
+	poly_edge(p, e, p->sg);
+	for (int k = 0; k < 2; k++) {
+		lo[k] = fmin(p->sg[k], p->sg[2 + k]);
+		hi[k] = fmax(p->sg[k], p->sg[2 + k]);
+	}
+}
+
+/* loft_grid_each's visit: whether edge id, after p->e and not its
+ * neighbour, crosses it. */
+static int
+edge_meets(void *ctx, size_t id)
+{
+	const struct poly *p = ctx;
+	double t[4];
+
+	if (id <= p->e + 1 || (p->closed && p->e == 0 && id == p->ne - 1))
+		return 0;
+	poly_edge(p, id, t);
+	return loft_segments_cross(p->sg, t);
+}
+
+/* Edges filed by their boxes in a grid (grid.c) of about one cell an
+ * edge, each tested against those after it in its cells: O(n) for a
+ * curve of even speed.  Two edges that cross share the cell of the
+ * crossing, so none is missed. */
 int
 loft_fit_crosses(const double *seg, size_t nseg, int closed)
 {
 	size_t np = nseg * FAIR_POLY + !closed, ne = closed ? np : np - 1;
-	size_t g = (size_t)sqrt((double)ne) + 1, *cnt, *list, *cell, total = 0;
+	size_t g = (size_t)sqrt((double)ne) + 1;
 	double *pt = calloc(2 * np, sizeof *pt), lo[2], hi[2], w;
+	struct loft_grid grid;
+	struct poly p;
 	int found = 0;
 
 	if (pt == NULL)
@@ -724,44 +706,22 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 			hi[k] = z > hi[k] ? z : hi[k];
 		}
 	w = fmax(hi[0] - lo[0], hi[1] - lo[1]) / g * (1 + 1e-9);
-	if (!(w > 0)) {                 /* all at one point */
+	if (!(w > 0) || loft_grid_init(&grid, w, w, lo, ne) != 0) {
 		free(pt);
-		return 0;
+		return w > 0 ? -1 : 0;  /* 0: all at one point */
 	}
-	cell = malloc(2 * np * sizeof *cell);
-	cnt = cell != NULL ? calloc(g * g + 1, sizeof *cnt) : NULL;
-	if (cnt != NULL)
-		point_cells(pt, np, lo, w, g, cell);
-	for (size_t e = 0; cnt != NULL && e < ne; e++) {
-		size_t c0[2], c1[2];
-
-		edge_cells(cell, np, e, c0, c1);
-		for (size_t y = c0[1]; y <= c1[1]; y++)
-			for (size_t x = c0[0]; x <= c1[0]; x++)
-				cnt[y * g + x + 1]++, total++;
+	p = (struct poly){ .pt = pt, .np = np, .ne = ne, .closed = closed };
+	for (size_t e = 0; e < ne && found == 0; e++) {
+		poly_take(&p, e, lo, hi);
+		if (loft_grid_add(&grid, lo, hi, e) != 0)
+			found = -1;
 	}
-	list = cnt != NULL ? malloc((total + 1) * sizeof *list) : NULL;
-	if (list == NULL) {
-		free(pt);
-		free(cell);
-		free(cnt);
-		return -1;
+	for (size_t e = 0; e < ne && found == 0; e++) {
+		poly_take(&p, e, lo, hi);
+		found = loft_grid_each(&grid, lo, hi, edge_meets, &p);
 	}
-	for (size_t c = 1; c <= g * g; c++)
-		cnt[c] += cnt[c - 1];
-	for (size_t e = 0; e < ne; e++) {
-		size_t c0[2], c1[2];
-
-		edge_cells(cell, np, e, c0, c1);
-		for (size_t y = c0[1]; y <= c1[1]; y++)
-			for (size_t x = c0[0]; x <= c1[0]; x++)
-				list[cnt[y * g + x]++] = e;
-	}
-	found = cells_cross(pt, np, ne, closed, cnt, list, g * g);
+	loft_grid_free(&grid);
 	free(pt);
-	free(cell);
-	free(cnt);
-	free(list);
 	return found;
 }
 

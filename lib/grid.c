@@ -2,7 +2,7 @@
  * grid.c: a uniform grid of the plane for finding what lies near a box
  * or along a segment without looking at everything, and the segment
  * tests that go with it (issue 22: loftplot's label placement files its
- * lines and labels here; fair.c's crossing test is the same question).
+ * lines and labels here, and fair.c's loft_fit_crosses its curve's edges).
  *
  * An item (a box, or a segment filed by the cells it passes through)
  * is an entry in each cell it covers; a cell's entries are a chain in

@@ -1555,6 +1555,15 @@ int loft_bspline_bezier(const double *t, size_t nctl, int deg,
     struct loft_error *err);
 
 /*
+ * One piece of loft_bspline_bezier, for a caller that takes them one at
+ * a time: the Bezier points b[0..deg] (dim numbers each) of span i
+ * (deg <= i < nctl, t[i] < t[i + 1]) of a curve loft_bspline_check has
+ * passed.  O(deg^2 dim) work, so a curve costs O(nctl deg^2 dim).
+ */
+void loft_bspline_span(const double *t, const double *ctl, int deg,
+    size_t i, int dim, double *b);
+
+/*
  * The tensor-product B-spline surface of degrees p in u and q in v,
  * knots tu (nu + p + 1) and tv (nv + q + 1), control points P_ij
  * u-major at ctl[(i nv + j) dim], as Bezier patches: patch (a, b), a

@@ -146,6 +146,16 @@ void loft_usage(const char *text, int status)
 	;
 
 /*
+ * A usage text whose option takes the names of a table: head, the names
+ * joined by '|', then tail, into buf (n bytes, cut to fit, always
+ * ended), so that a new entry in the table needs no edit of the
+ * program.  name points at the first entry's name; the next is stride
+ * bytes on (the entries' size), and a NULL name ends them.  Returns buf.
+ */
+const char *loft_usage_words(char *buf, size_t n, const char *head,
+    const char *const *name, size_t stride, const char *tail);
+
+/*
  * A usage error and exit 2: "prog: -opt msg" (or "prog: msg" when opt is
  * 0) on standard error, then the usage text there (loft_usage).  Every
  * option a program cannot take ends here.

@@ -151,6 +151,35 @@ loft_usage(const char *text, int status)
 	exit(written(fp, fputs(text, fp) == EOF ? -1 : 0, text, status));
 }
 
+/* Append s to the text buf[0..len) of n bytes, cut to fit; its length. */
+static size_t
+append(char *buf, size_t n, size_t len, const char *s)
+{
+	size_t k = strlen(s);
+
+	if (k > n - 1 - len)
+		k = n - 1 - len;
+	memcpy(buf + len, s, k);
+	buf[len + k] = '\0';
+	return len + k;
+}
+
+const char *
+loft_usage_words(char *buf, size_t n, const char *head,
+    const char *const *name, size_t stride, const char *tail)
+{
+	size_t len = append(buf, n, 0, head);
+
+	for (size_t i = 0; *name != NULL; i++) {
+		len = append(buf, n, append(buf, n, len, i > 0 ? "|" : ""),
+		    *name);
+		name = (const char *const *)(const void *)((const char *)name +
+		    stride);
+	}
+	(void)append(buf, n, len, tail);
+	return buf;
+}
+
 void
 loft_usage_error(const char *usage, int opt, const char *msg)
 {
