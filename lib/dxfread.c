@@ -1899,8 +1899,10 @@ hatch_ellipse(struct dxf *d, const struct frame *f, size_t *i,
 	    hnum(d, i, 51, &a1) || hint(d, i, 73, 1, &ccw) || !(ra > 0) ||
 	    !(hypot(mj[0], mj[1]) > 0))
 		return -1;
-	for (sw = a1 - a0; sw <= 0; sw += 360)
-		;
+	sw = a1 - a0;           /* in (0, 360]: fmod, as a loop of 360s
+				 * never ends on a huge angle */
+	if (sw <= 0)
+		sw = fmod(sw, 360) + 360;
 	a0 *= M_PI / 180;
 	a1 *= M_PI / 180;
 	/* the parameter of an angle: atan2(sin a / ratio, cos a) */
@@ -2166,6 +2168,8 @@ hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 			pts.n = 0;
 			rc = type == 3 ? hatch_ellipse(d, f, i, &pts) :
 			    hatch_spline(d, f, i, k + 1 == n, &pts);
+			if (rc == 0 && (pts.p == NULL || pts.n == 0))
+				rc = -1;        /* an edge of no point */
 			if (rc == 0)
 				rc = hatch_cut(d, pts.p, pts.p + 3 * (pts.n - 1),
 				    prev, first, k);
@@ -2186,8 +2190,9 @@ hatch_edges(struct dxf *d, const struct frame *f, size_t *i)
 				break;
 			/* a clockwise arc has its angles mirrored in the
 			 * x axis, and runs clockwise from -50 to -51 */
-			for (sw = a1 - a0; sw <= 0; sw += 360)
-				;
+			sw = a1 - a0;   /* in (0, 360], as above */
+			if (sw <= 0)
+				sw = fmod(sw, 360) + 360;
 			s0 = (ccw ? a0 : -a0) * M_PI / 180;
 			s1 = (ccw ? a1 : -a1) * M_PI / 180;
 			a[0] = c[0] + r * cos(s0);
