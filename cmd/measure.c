@@ -206,32 +206,6 @@ measure_record(struct loft_run *run, const struct loft_record *rec,
 	return 0;
 }
 
-/* Parse -f's comma-separated field names into o. */
-static int
-parse_fields(const char *arg, struct opts *o, struct loft_error *err)
-{
-	char word[32];
-
-	o->nfield = 0;
-	for (const char *p = arg;; p++) {
-		size_t len = strcspn(p, ",");
-
-		if (o->nfield == MAXFIELDS)
-			return loft_fail(err, LOFT_EINPUT, -1, "more than %d "
-			    "fields", MAXFIELDS);
-		if (len >= sizeof word)
-			len = sizeof word - 1;
-		memcpy(word, p, len);
-		word[len] = '\0';
-		if (loft_parse_word(word, field_names, &o->field[o->nfield++],
-		    err) != 0)
-			return LOFT_EINPUT;
-		p += strcspn(p, ",");
-		if (*p == '\0')
-			return 0;
-	}
-}
-
 #ifndef LOFT_FUZZ         /* tests/fuzz/ takes the handler without main */
 int
 main(int argc, char *argv[])
@@ -246,7 +220,8 @@ main(int argc, char *argv[])
 	while ((c = getopt(argc, argv, "f:p:h")) != -1) {
 		switch (c) {
 		case 'f':
-			if (parse_fields(optarg, &o, &err))
+			if (loft_opt_fields(optarg, field_names, o.field,
+			    MAXFIELDS, &o.nfield, &err))
 				loft_usage_error(usage_text, c, err.msg);
 			break;
 		case 'p':

@@ -184,6 +184,15 @@ int loft_opt_digits(const char *arg, struct loft_writer *w,
     struct loft_error *err);
 
 /*
+ * The option -f NAME,NAME,... of measure and hydro: each name's index in
+ * names (NULL-ended, as loft_parse_word) into field[0..*n), at most max
+ * of them.  Returns 0, or LOFT_EINPUT with err saying why (a name not
+ * among names, or more than max).
+ */
+int loft_opt_fields(const char *arg, const char *const *names, int *field,
+    int max, int *n, struct loft_error *err);
+
+/*
  * Option opt's levels: "v", or "from:to:step" (from <= to, step > 0; the
  * steps in 15 decimal digits, to itself included where they reach it
  * within rounding), or a comma-separated list of those, appended to the

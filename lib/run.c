@@ -109,6 +109,31 @@ loft_opt_digits(const char *arg, struct loft_writer *w,
 	return 0;
 }
 
+int
+loft_opt_fields(const char *arg, const char *const *names, int *field,
+    int max, int *n, struct loft_error *err)
+{
+	char word[32];
+
+	*n = 0;
+	for (const char *p = arg;; p++) {
+		size_t len = strcspn(p, ",");
+
+		if (*n == max)
+			return loft_fail(err, LOFT_EINPUT, -1, "more than %d "
+			    "fields", max);
+		if (len >= sizeof word)
+			len = sizeof word - 1;
+		memcpy(word, p, len);
+		word[len] = '\0';
+		if (loft_parse_word(word, names, &field[(*n)++], err) != 0)
+			return LOFT_EINPUT;
+		p += strcspn(p, ",");
+		if (*p == '\0')
+			return 0;
+	}
+}
+
 /* The program's name in a usage text "usage: prog ...", *n bytes long. */
 static const char *
 usage_prog(const char *text, int *n)
