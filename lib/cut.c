@@ -721,7 +721,7 @@ join(struct pieces *ps, int dim, double jt, struct loft_cut *out)
 	if (drop_repeats(ps, dim, jt) != 0)
 		return LOFT_ENOMEM;
 	e = malloc((2 * ps->n + 1) * sizeof *e);
-	where = malloc((2 * ps->n + 1) * sizeof *where);
+	where = calloc(2 * ps->n + 1, sizeof *where);   /* each end set below */
 	used = calloc(ps->n + 1, 1);
 	if (e == NULL || where == NULL || used == NULL) {
 		rc = LOFT_ENOMEM;

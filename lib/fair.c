@@ -684,6 +684,10 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 	struct poly p;
 	int found = 0;
 
+	if (nseg == 0) {        /* no segment crosses */
+		free(pt);
+		return 0;
+	}
 	if (pt == NULL)
 		return -1;
 	for (size_t i = 0; i < np; i++) {
@@ -757,7 +761,9 @@ enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, STARTS };
 static double
 unit_chord(const struct fair *f, size_t s, double *u)
 {
-	vsub(u, f->p + ((s + 1) % f->n) * f->dim, f->p + s * f->dim, f->dim);
+	size_t t = f->n > 0 ? (s + 1) % f->n : s;      /* n > 0: a record */
+
+	vsub(u, f->p + t * f->dim, f->p + s * f->dim, f->dim);
 	return vunit(u, f->dim);
 }
 

@@ -445,7 +445,7 @@ cross_norm(const double *a, const double *b, int dim)
 {
 	double c[3];
 
-	if (dim == 2)
+	if (dim < 3)            /* in the plane (dim is 2 or 3) */
 		return fabs(a[0] * b[1] - a[1] * b[0]);
 	c[0] = a[1] * b[2] - a[2] * b[1];
 	c[1] = a[2] * b[0] - a[0] * b[2];

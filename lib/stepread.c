@@ -524,7 +524,7 @@ point_list(struct step *st, size_t l, size_t *n)
 static double *
 knot_list(struct step *st, size_t a, size_t b, size_t want)
 {
-	long nm, nv;
+	long nm;
 	double *t = NULL, *m = NULL, *v = NULL;
 	long *mi = NULL;
 	size_t cap = a != 0 ? st->v[a].n : 0;
@@ -536,8 +536,8 @@ knot_list(struct step *st, size_t a, size_t b, size_t want)
 	mi = malloc(cap * sizeof *mi);
 	t = malloc(want * sizeof *t);
 	if (m == NULL || v == NULL || mi == NULL || t == NULL ||
-	    (nm = numbers(st, a, m, cap)) < 0 || (nv = numbers(st, b, v,
-	    cap)) != nm)
+	    (nm = numbers(st, a, m, cap)) < 0 || numbers(st, b, v, cap) !=
+	    nm)
 		goto bad;
 	for (long i = 0; i < nm; i++) {
 		if (!(m[i] >= 1 && m[i] <= 1e9) || m[i] != floor(m[i]))

@@ -960,7 +960,7 @@ round_rect(struct svg *s, const struct elem *el, const double *m, double x,
 	s->seg.n = 0;
 	for (int k = 0; k < 4; k++) {   /* a side, then a corner */
 		const double *a = se[(k + 3) % 4] + 2, *b = se[k];
-		size_t first = s->seg.n;
+		size_t first;
 
 		if ((a[0] != b[0] || a[1] != b[1]) && line_to(s, a, b) != 0)
 			return;
