@@ -484,7 +484,8 @@ static int
 end_limit(const struct loft__piece *pc, int end, double *k)
 {
 	int n2 = LOFT__DEG(pc, 2), n3 = LOFT__DEG(pc, 3);
-	double a[LOFT_MAXDIM], b[LOFT_MAXDIM], d[LOFT_MAXDIM], na, nb;
+	double a[LOFT_MAXDIM] = { 0 }, b[LOFT_MAXDIM] = { 0 },
+	    d[LOFT_MAXDIM] = { 0 }, na, nb;
 
 	if (!(speed_scale(pc) > 0))
 		return -1;      /* the piece is a point: no tangent anywhere */
