@@ -926,14 +926,11 @@ d=$(printf 'points closed=0\n0 0\n1 0\n1 1\n' | "$B/loftplot" |
 
 # ---- issue 28: labels in linear time ----------------------------------------
 # 5,000 labelled records drawn over each other: the labels of the pile
-# each stand apart (no two texts at one point) and the run ends, where
-# looking at every label before each took minutes (a timeout a hundred
-# times above its time here, not a timed test: a load cannot reach it).
+# each stand apart (no two texts at one point).  How long it takes is
+# make bench's to say, not this test's.
 awk 'BEGIN { for (r = 1; r <= 5000; r++)
 	printf "points id=%d\n0 0\n5 0\n5 5\n\n", r }' >"$T/pile"
-TO=
-command -v timeout >/dev/null 2>&1 && TO="timeout 100"
-if $TO "$B/loftplot" -l id "$T/pile" >"$T/pile.svg" 2>"$T/err"; then
+if "$B/loftplot" -l id "$T/pile" >"$T/pile.svg" 2>"$T/err"; then
 	n=$(grep -c 'class="label' "$T/pile.svg")
 	d=$(sed -n 's/.*class="label.*translate(\([^)]*\)).*/\1/p' \
 	    "$T/pile.svg" | sort -u | wc -l)
