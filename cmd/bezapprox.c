@@ -102,7 +102,8 @@ put_header(struct loft_writer *w, const char *type, const struct opts *o,
 	/* what belongs to the input's type: a patch's id and links, a
 	 * curve's corners (its joints, which one piece does not have) */
 	static const char *const consumed[] = { "closed", "error", "m", "n",
-	    "id", "su", "sv", "u0", "u1", "v0", "v1", "corners", NULL };
+	    "id", "su", "sv", "u0", "u1", "v0", "v1", "corners", "straight",
+	    NULL };
 	char buf[LOFT_NUMBUF];
 
 	loft_put_type(w, type);

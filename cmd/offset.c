@@ -25,7 +25,7 @@ static const char usage_text[] =
 
 /* Attributes of the input that no longer hold for its offset. */
 static const char *const dropped[] = { "closed", "offset", "error", "corners",
-    "start", "end", NULL };
+    "straight", "start", "end", NULL };
 
 /* Write the parts of o->off as cubic records at distance d. */
 static void

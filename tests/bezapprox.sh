@@ -109,9 +109,10 @@ done
 sed -n 1p "$T/out" | grep -q '^bezier error=[^ ]* size=+2$' && ok ||
     no "attributes: $(sed -n 1p "$T/out")"
 # a cubic's corners= name its joints, which the one piece does not have
-run "printf 'cubic closed=0 corners=2 size=3\n0 0 1 0 1 0 1 0\n1 0 1 1 0 1 0 1\n' | $B/bezapprox"
+# and its straight= name its segments, which the one piece does not have
+run "printf 'cubic closed=0 corners=2 straight=1 size=3\n0 0 1 0 1 0 1 0\n1 0 1 1 0 1 0 1\n' | $B/bezapprox"
 sed -n 1p "$T/out" | grep -q '^bezier error=[^ ]* size=3$' && ok ||
-    no "corners=: $(sed -n 1p "$T/out")"
+    no "corners=, straight=: $(sed -n 1p "$T/out")"
 # a closed curve gives P_0 = P_n exactly
 printf '0 0\n1 0\n1 1\n0 1\n' >"$T/square.knots"
 run "$B/splinefit $T/square.knots | $B/bezapprox -n 5"

@@ -64,7 +64,7 @@ echo "dev $dev" >"$T/circle.dev"
 
 # ---- a rectangle of four straight segments, corners at its knots --------
 # [0,4] x [0,2], counter-clockwise; each row's tangents are its chord.
-printf 'cubic closed=1 size=7\n0 0 4 0 4 0 4 0\n4 0 4 2 0 2 0 2\n4 2 0 2 -4 0 -4 0\n0 2 0 0 0 -2 0 -2\n' \
+printf 'cubic closed=1 size=7 straight=1,2,3,4\n0 0 4 0 4 0 4 0\n4 0 4 2 0 2 0 2\n4 2 0 2 -4 0 -4 0\n0 2 0 0 0 -2 0 -2\n' \
     >"$T/rect.cubic"
 # by hand, at distance 0.5 outward: points beside a side are on the line
 # 0.5 from it exactly (|y + 0.5| etc. at rounding); points beyond a corner
