@@ -408,10 +408,13 @@ bad:
 
 /* ---- records ---------------------------------------------------------- */
 
-/* The header of a record of element el: type, closed=, layer=, name=. */
+/* The header of a record of element el: type, closed=, layer=, name=,
+ * corners= when given, and for the nseg segments seg (user space) of a
+ * cubic record, straight= (its lines that a curve meets smoothly: a
+ * tangent's direction is kept by the user space's affine map). */
 static void
 put_header(struct svg *s, const struct elem *el, const char *type, int closed,
-    const char *corners)
+    const char *corners, const double *seg, size_t nseg)
 {
 	struct loft_writer *w = s->c->w;
 	const struct level *lv = &s->st[s->depth - 1];
@@ -424,6 +427,8 @@ put_header(struct svg *s, const struct elem *el, const char *type, int closed,
 		loft__cadin_put_name(w, "name", id->v, id->vn);
 	if (corners != NULL)
 		loft_put_attr(w, "corners", corners);
+	if (seg != NULL)
+		loft__cadin_put_straight(w, seg, nseg, 2, closed);
 	loft_end_line(w);
 }
 
@@ -478,7 +483,8 @@ put_subpath(struct svg *s, const struct elem *el, const double *m, int closed,
 
 	if (n == 0)
 		return;
-	put_header(s, el, straight ? "points" : "cubic", closed, NULL);
+	put_header(s, el, straight ? "points" : "cubic", closed, NULL,
+	    straight ? NULL : g, n);
 	for (size_t i = 0; i < n; i++) {
 		const double *r = g + 8 * i;
 
@@ -903,7 +909,7 @@ do_poly(struct svg *s, const struct elem *el, const double *m, int closed)
 		double y[2];
 
 		mat_apply(m, s->seg.v, y);
-		put_header(s, el, "points", 0, NULL);
+		put_header(s, el, "points", 0, NULL, NULL, 0);
 		loft_put_row(s->c->w, y, 2);
 		loft_end_record(s->c->w);
 		loft__cadin_done(s->c, mark, el->line);
@@ -1016,7 +1022,7 @@ do_rect(struct svg *s, const struct elem *el, const double *m)
 		size_t mark = w->len;
 		double q[2];
 
-		put_header(s, el, "points", 1, "1,2,3,4");
+		put_header(s, el, "points", 1, "1,2,3,4", NULL, 0);
 		for (int k = 0; k < 4; k++) {
 			mat_apply(m, p + 2 * k, q);
 			loft_put_row(w, q, 2);
