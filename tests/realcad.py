@@ -251,6 +251,25 @@ def gen_svg(d):
 <text x="0" y="0">a label</text>
 </svg>
 """)
+    # where svgelements parts from SVG (svg_as_drawn, svg_subpaths), as
+    # breeze's icons have it: path data in error, drawn up to the error
+    # (network-mobile-*-locked), numbers ending in their point
+    # (folder-open), a flowRoot (calindori), an ellipse with no radii
+    # (yast), a rect rounded by 1.6e-7 (gcompris-qt), a subpath back at
+    # its start to a rounding (application-pgp-signature)
+    with open(d + "/inerror.svg", "w") as f:
+        f.write("""<svg xmlns="http://www.w3.org/2000/svg" width="96" height="96"
+ viewBox="0 0 96 96">
+<path d="M 17,5 3,19 h 11 v -3 l 1,-1 h "/><path d="M 13,9 3,19 h 11 l"/>
+<path d="M 3 3 L 3 19 L 12. 5 L 10. 3 z M 9 8 L 18 8 L 18 18 z"/>
+<flowRoot><flowRegion><rect x="1" y="1" width="5" height="5"/>
+</flowRegion><flowPara>a</flowPara></flowRoot>
+<ellipse cx="16" cy="16"/>
+<rect rx="1.6473932e-07" y="60.39374" x="45.8447" height="4.84" width="3.87"/>
+<path d="m 9471.8,4996 c 10,20 30,20 40,0 l 0.1,0 0.2,0 -40.3,0 z"
+ transform="scale(0.001)"/>
+</svg>
+""")
 
 
 def edge_ends(g):

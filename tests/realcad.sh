@@ -126,6 +126,9 @@ else
 	if [ -s "$T/features.svg" ]; then
 		echo "$T/features.svg" >"$T/list"
 		many svg generated
+		# breeze's ways (realcad.py gen_svg): in error, "12.", ...
+		echo "$T/inerror.svg" >"$T/list"
+		many svg "generated, where svgelements parts from SVG"
 		# the hidden two noted, the text noted, -H reads the hidden
 		run "$F $T/features.svg"
 		says "features.svg: 2 path passed over hidden (display:none, visibility:hidden; -H reads them)"
