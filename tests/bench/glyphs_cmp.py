@@ -30,10 +30,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(os.path.dirname(HERE))
 # A run of turns of one sign smaller than this in all (radians) is no
 # bend: it is the rounding of the samples (6 decimals of a font unit on a
-# step of half a unit turn by 1e-6) or a wiggle no one could see (over a
-# span of a hundred units it strays by a few hundredths of a unit).
-BEND = 1e-3
+# step of half a unit turn by 1e-6).  Above it the count is measure(1)'s
+# (splinefit -v's) on 39 of the first 40 contours, the one short a bend
+# between two samples.
+BEND = 1e-4
 PER = 50        # samples a Bezier segment of potrace's, as sample -n 50
+# A turn sharper than this in one step of the samples is a corner, not
+# curvature: glyphs.py's corners turn by more (10 degrees), a curve's
+# steps by a few degrees at most
+KINK = np.radians(10)
 
 
 def records(path):
@@ -61,10 +66,27 @@ def hausdorff(t, c):
     return max(cKDTree(t).query(c)[0].max(), cKDTree(c).query(t)[0].max())
 
 
+def changes(turn, cyclic):
+    """Sign changes between the runs of turns of one sign of turn[],
+    runs turning less than BEND in all left out."""
+    turn = turn[turn != 0]
+    if len(turn) == 0:
+        return 0
+    sign = np.sign(turn)
+    cut = np.flatnonzero(sign[1:] != sign[:-1]) + 1
+    runs = np.add.reduceat(turn, np.concatenate(([0], cut)))
+    runs = np.sign(runs[np.abs(runs) >= BEND])
+    if len(runs) < 2:
+        return 0
+    n = int((runs[1:] != runs[:-1]).sum())
+    return n + int(cyclic and runs[0] != runs[-1])
+
+
 def inflexions(p):
-    """The inflexions of the closed polyline p: the changes of sign
-    between runs of turns of one sign, runs turning less than BEND in
-    all left out."""
+    """The inflexions of the closed polyline p: the changes of sign of
+    its turning, its corners (a turn above KINK in one step, where a
+    smooth curve sampled at 50 points a segment turns a few degrees) left
+    out, as measure(1) counts the sign changes of a curve's curvature."""
     if p is None:
         return 0
     keep = np.any(np.diff(p, axis=0, append=p[:1]) != 0, axis=1)
@@ -75,16 +97,7 @@ def inflexions(p):
     e = np.roll(d, -1, axis=0)
     turn = np.arctan2(d[:, 0] * e[:, 1] - d[:, 1] * e[:, 0],
                       (d * e).sum(axis=1))
-    turn = turn[turn != 0]
-    if len(turn) == 0:
-        return 0
-    sign = np.sign(turn)
-    cut = np.flatnonzero(sign != np.roll(sign, 1))
-    if len(cut) == 0:
-        return 0
-    runs = np.add.reduceat(np.roll(turn, -cut[0]), cut - cut[0])
-    runs = np.sign(runs[np.abs(runs) >= BEND])
-    return int((runs != np.roll(runs, 1)).sum()) if len(runs) > 1 else 0
+    return changes(turn[np.abs(turn) <= KINK], True)
 
 
 def crossings(peers, path):
