@@ -212,8 +212,8 @@ def potrace(truth, out):
             if not subs:
                 f.write("nan nan\n\n")
                 continue
-            area = [abs(np.cross(p, np.roll(p, -1, axis=0)).sum()) for p in
-                    subs]
+            area = [abs((p[:, 0] * np.roll(p[:, 1], -1) - p[:, 1] *
+                         np.roll(p[:, 0], -1)).sum()) for p in subs]
             for x, y in subs[int(np.argmax(area))] + (ox, oy):
                 f.write("%.6f %.6f\n" % (x, y))
             f.write("\n")
