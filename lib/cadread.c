@@ -8,7 +8,9 @@
  */
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cadread.h"
@@ -218,6 +220,43 @@ loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
 	}
 	buf[k] = '\0';
 	loft_put_attr(w, key, buf);
+}
+
+void
+loft__cadin_put_list(struct loft_writer *w, const char *key, const size_t *v,
+    size_t n)
+{
+	char *buf, *p;
+
+	if (n == 0)
+		return;
+	if (n > SIZE_MAX / 24 || (buf = malloc(n * 24 + 1)) == NULL) {
+		w->bad = LOFT_ENOMEM;
+		return;
+	}
+	p = buf;
+	for (size_t j = 0; j < n; j++)
+		p += sprintf(p, "%s%zu", j > 0 ? "," : "", v[j] + 1);
+	loft_put_attr(w, key, buf);
+	free(buf);
+}
+
+void
+loft__cadin_put_straight(struct loft_writer *w, const double *seg,
+    size_t nseg, int dim, int closed)
+{
+	size_t *out;
+
+	if (nseg < 2)
+		return;         /* no neighbour to meet */
+	if (nseg > SIZE_MAX / sizeof *out || (out = malloc(nseg *
+	    sizeof *out)) == NULL) {
+		w->bad = LOFT_ENOMEM;
+		return;
+	}
+	loft__cadin_put_list(w, "straight", out, loft_straight_spans(seg, nseg,
+	    dim, closed, out));
+	free(out);
 }
 
 int

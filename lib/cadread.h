@@ -78,6 +78,17 @@ int loft__cadin_done(struct loft_cadin *c, size_t mark, long line);
  * as %XX (loft.5's attribute values); nothing for n == 0. */
 void loft__cadin_put_name(struct loft_writer *w, const char *key, const char *s,
     size_t n);
+/* Write " key=i,j,..." of the indices v[0..n) counted from 1 (loft.5's
+ * corners= and straight=); nothing for n == 0; w->bad set when out of
+ * memory. */
+void loft__cadin_put_list(struct loft_writer *w, const char *key,
+    const size_t *v, size_t n);
+/* Write " straight=..." naming the segments of seg (nseg rows of 4 dim
+ * numbers, as a cubic record's; closed: the last meets the first) that
+ * are straight lines meeting a curved neighbour with its tangent
+ * (loft_straight_spans), as splinefit's straight= on a cubic record. */
+void loft__cadin_put_straight(struct loft_writer *w, const double *seg,
+    size_t nseg, int dim, int closed);
 /* The pieces an arc of radius r and sweep angle a (radians) needs for
  * c->tol: chords, or cubic pieces; -1 when more than LOFT_CADIN_ARC_MAX. */
 long loft__arc_chords(const struct loft_cadin *c, double r, double a);

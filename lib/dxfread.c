@@ -160,6 +160,7 @@ struct dxf {
 	struct turn *tp;
 	size_t ntp, tpcap;
 	struct nums seg;        /* spline pieces */
+	size_t *straight, nstraight;    /* a polyline's straight spans */
 	struct loft__echo *echo;        /* coordinates' texts (may be NULL) */
 	int oom;
 };
@@ -582,6 +583,47 @@ arc_inside(struct dxf *d, const struct frame *f, const double *c, double r,
 }
 
 /*
+ * The straight spans of a polyline (issue 23): of its edges, the lines
+ * that a bulge's arc meets with the same tangent, as loft_straight_spans
+ * finds them on the edges as segments (a line's tangents its chord, an
+ * arc's the chord turned by a quarter of its included angle 4 atan(b)
+ * either way, in the OCS: a tangent's direction survives the affine maps
+ * to the world), into d->straight as the knot numbers of their first
+ * vertices, first[i] for vertex i.  Nothing when out of memory.
+ */
+static void
+polyline_straight(struct dxf *d, const double *v, const double *b, size_t n,
+    int closed, const size_t *first)
+{
+	size_t ne = closed ? n : n - 1, k;
+	double *seg;
+
+	d->nstraight = 0;
+	if (b == NULL || n < 2 || (seg = malloc(ne * 8 * sizeof *seg)) ==
+	    NULL)
+		return;
+	for (size_t i = 0; i < ne; i++) {
+		const double *p = v + 3 * i, *q = v + 3 * ((i + 1) % n);
+		double *r = seg + 8 * i, c[2] = { q[0] - p[0], q[1] - p[1] };
+		double h = fabs(b[i]) >= DBL_EPSILON ? 2 * atan(b[i]) : 0;
+
+		r[0] = p[0], r[1] = p[1], r[2] = q[0], r[3] = q[1];
+		r[4] = c[0] * cos(h) + c[1] * sin(h);
+		r[5] = c[1] * cos(h) - c[0] * sin(h);
+		r[6] = c[0] * cos(h) - c[1] * sin(h);
+		r[7] = c[1] * cos(h) + c[0] * sin(h);
+	}
+	free(d->straight);
+	if ((d->straight = malloc(ne * sizeof *d->straight)) != NULL) {
+		k = loft_straight_spans(seg, ne, 2, closed, d->straight);
+		for (size_t j = 0; j < k; j++)
+			d->straight[j] = first[d->straight[j]];
+		d->nstraight = k;
+	}
+	free(seg);
+}
+
+/*
  * The vertices v[0..n) with bulges b (OCS, z from elev) as knots: each
  * bulge b != 0 bends the edge to the next vertex into an arc of
  * included angle 4 atan(b), counter-clockwise for b > 0, sampled by
@@ -592,17 +634,24 @@ polyline_knots(struct dxf *d, const struct frame *f, const double *v,
     const double *b, size_t n, int closed, int zfromv, double elev,
     char *msg, size_t msize)
 {
+	size_t *first;
+
 	d->knots.n = 0;
 	if (closed && n > 1 && v[0] == v[3 * (n - 1)] &&
 	    v[1] == v[3 * (n - 1) + 1] && v[2] == v[3 * (n - 1) + 2])
 		n--;            /* the first vertex repeated at the end */
+	if ((first = malloc(n * sizeof *first)) == NULL) {
+		d->oom = 1;
+		return -1;
+	}
 	for (size_t i = 0; i < n; i++) {
 		const double *p = v + 3 * i, *q = v + 3 * ((i + 1) % n);
 		double o[3] = { p[0], p[1], zfromv ? p[2] : elev };
 		double dx = q[0] - p[0], dy = q[1] - p[1], bu = b ? b[i] : 0;
 
+		first[i] = d->knots.n;
 		if (knot(d, f, o) != 0)
-			return -1;
+			return free(first), -1;
 		/* a bulge below DBL_EPSILON stands the arc's middle less
 		 * than the chord's rounding off it: a straight segment */
 		if (fabs(bu) >= DBL_EPSILON && (i + 1 < n || closed) &&
@@ -619,19 +668,21 @@ polyline_knots(struct dxf *d, const struct frame *f, const double *v,
 			if (!isfinite(r) || !isfinite(h)) {
 				snprintf(msg, msize, "vertex %zu: bulge %g "
 				    "makes no arc", i + 1, bu);
-				return -1;
+				return free(first), -1;
 			}
 			if (m < 0) {
 				snprintf(msg, msize, "vertex %zu: its arc needs "
 				    "more than %d chords for the tolerance",
 				    i + 1, LOFT_CADIN_ARC_MAX);
-				return -1;
+				return free(first), -1;
 			}
 			if (arc_inside(d, f, cc, r, atan2(p[1] - cc[1],
 			    p[0] - cc[0]), sweep, m) != 0)
-				return -1;
+				return free(first), -1;
 		}
 	}
+	polyline_straight(d, v, b, n, closed, first);
+	free(first);
 	return 0;
 }
 
@@ -681,7 +732,7 @@ static int
 attr_own(const char *key)
 {
 	static const char *const own[] = { "layer", "block", "closed",
-	    "corners", "piece", "start", "end", NULL };
+	    "corners", "piece", "start", "end", "straight", NULL };
 
 	for (int i = 0; own[i] != NULL; i++)
 		if (strcmp(key, own[i]) == 0)
@@ -733,6 +784,8 @@ put_knots(struct dxf *d, const char *layer, size_t nlayer, long line,
 	loft_put_type(w, "points");
 	loft_put_attr(w, "closed", closed ? "1" : "0");
 	put_where(d, w, layer, nlayer);
+	loft__cadin_put_list(w, "straight", d->straight, d->nstraight);
+	d->nstraight = 0;       /* a polyline's, this once */
 	if (start != NULL) {
 		vector_text(buf, start, dim);
 		loft_put_attr(w, "start", buf);
@@ -2690,6 +2743,7 @@ dxf_free(struct dxf *d)
 	free(d->pl.bulge.v);
 	free(d->verts.p);
 	free(d->knots.p);
+	free(d->straight);
 	free(d->work.p);
 	free(d->kr);
 	free(d->tp);

@@ -408,10 +408,13 @@ bad:
 
 /* ---- records ---------------------------------------------------------- */
 
-/* The header of a record of element el: type, closed=, layer=, name=. */
+/* The header of a record of element el: type, closed=, layer=, name=,
+ * corners= when given, and for the nseg segments seg (user space) of a
+ * cubic record, straight= (its lines that a curve meets smoothly: a
+ * tangent's direction is kept by the user space's affine map). */
 static void
 put_header(struct svg *s, const struct elem *el, const char *type, int closed,
-    const char *corners)
+    const char *corners, const double *seg, size_t nseg)
 {
 	struct loft_writer *w = s->c->w;
 	const struct level *lv = &s->st[s->depth - 1];
@@ -424,6 +427,8 @@ put_header(struct svg *s, const struct elem *el, const char *type, int closed,
 		loft__cadin_put_name(w, "name", id->v, id->vn);
 	if (corners != NULL)
 		loft_put_attr(w, "corners", corners);
+	if (seg != NULL)
+		loft__cadin_put_straight(w, seg, nseg, 2, closed);
 	loft_end_line(w);
 }
 
@@ -478,7 +483,8 @@ put_subpath(struct svg *s, const struct elem *el, const double *m, int closed,
 
 	if (n == 0)
 		return;
-	put_header(s, el, straight ? "points" : "cubic", closed, NULL);
+	put_header(s, el, straight ? "points" : "cubic", closed, NULL,
+	    straight ? NULL : g, n);
 	for (size_t i = 0; i < n; i++) {
 		const double *r = g + 8 * i;
 
@@ -783,21 +789,24 @@ path_numbers(const char **p, const char *e, int up, int rel,
 	return n;
 }
 
-/* Say what is wrong at p in path data ending at e. */
+/* Say what is wrong at p in path data ending at e, and then what
+ * became of the path (tail). */
 static void
 path_bad(struct svg *s, const struct elem *el, const char *why,
-    const char *p, const char *e)
+    const char *p, const char *e, const char *tail)
 {
-	char msg[160], q[13];
+	char msg[200], q[13];
 
 	p = skip_sep(p, e);
-	snprintf(msg, sizeof msg, "%s at '%s': not read", why,
-	    loft__cadin_quote(q, sizeof q, p, (size_t)(e - p)));
+	snprintf(msg, sizeof msg, "%s at '%s': %s", why,
+	    loft__cadin_quote(q, sizeof q, p, (size_t)(e - p)), tail);
 	say_el(s, el, p, msg);
 }
 
-/* Path data: every subpath a record.  The element is read whole or, on
- * an error, not at all. */
+/* Path data: every subpath a record.  On an error in the data the path
+ * is drawn up to the command in error, as SVG renders it (SVG 1.1 F.2,
+ * SVG 2 9.5.4), and the error said; an arc of too many pieces leaves
+ * the element not read at all. */
 static void
 do_path(struct svg *s, const struct elem *el, const double *m)
 {
@@ -806,6 +815,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 	size_t mark = w->len;
 	const char *p, *e, *why = "bad path data";
 	struct pen pn = { { 0, 0 }, { 0, 0 }, { 0, 0 }, 0, 1 };
+	const char *at = NULL;  /* the command in error */
 	int cmd = 0, rc = 0;
 	long nbad = s->c->nbad;
 
@@ -818,6 +828,7 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 		double v[7];
 		int n, up, f1 = 0, f2 = 0;
 
+		at = p;
 		if (strchr("MmLlHhVvCcSsQqTtAaZz", *p) != NULL && *p != '\0')
 			cmd = (unsigned char)*p++;
 		else if (cmd == 0 || cmd == 'Z' || cmd == 'z')
@@ -825,16 +836,20 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 		up = cmd & ~0x20;
 		if (pn.prev == 0 && up != 'M') {
 			why = "path data must start with a moveto (M or m)";
-			p--;
 			break;
 		}
 		if (up == 'Z') {
 			rc = close_subpath(s, el, m, &pn);
+			at = NULL;
 			continue;
 		}
 		if ((n = path_numbers(&p, e, up, cmd >= 'a', pn.cur, v, &f1,
-		    &f2)) < 0)
+		    &f2)) < 0) {
+			if (skip_sep(p, e) != e)
+				at = p; /* point at the number in error */
 			break;
+		}
+		at = NULL;
 		if (up == 'M') {
 			put_subpath(s, el, m, 0, pn.straight);
 			s->seg.n = 0;
@@ -848,22 +863,24 @@ do_path(struct svg *s, const struct elem *el, const double *m)
 		rc = segment(s, m, &pn, up, v, n, f1, f2);
 		pn.prev = up;
 	}
-	if (rc == -2)
-		why = "an arc needs more cubic pieces than the tolerance allows";
 	if (rc == -1 || s->oom) {
 		loft_writer_cut(w, mark);
 		s->oom = 1;
 		return;
 	}
-	if (p != e || rc != 0) {
+	if (rc == -2) {
 		loft_writer_cut(w, mark);
 		w->col = 0;
-		path_bad(s, el, why, p, e);
+		path_bad(s, el, "an arc needs more cubic pieces than the "
+		    "tolerance allows", p, e, "not read");
 		return;
 	}
 	put_subpath(s, el, m, 0, pn.straight);
 	if (s->c->nbad > nbad)
 		loft_writer_cut(w, mark);  /* a record of it failed: none of it */
+	else if (at != NULL)
+		path_bad(s, el, why, at, e, w->len > mark ? "drawn up to there, "
+		    "as SVG renders it" : "not read");
 }
 
 /* polyline and polygon: their points as a knot record. */
@@ -903,7 +920,7 @@ do_poly(struct svg *s, const struct elem *el, const double *m, int closed)
 		double y[2];
 
 		mat_apply(m, s->seg.v, y);
-		put_header(s, el, "points", 0, NULL);
+		put_header(s, el, "points", 0, NULL, NULL, 0);
 		loft_put_row(s->c->w, y, 2);
 		loft_end_record(s->c->w);
 		loft__cadin_done(s->c, mark, el->line);
@@ -1016,7 +1033,7 @@ do_rect(struct svg *s, const struct elem *el, const double *m)
 		size_t mark = w->len;
 		double q[2];
 
-		put_header(s, el, "points", 1, "1,2,3,4");
+		put_header(s, el, "points", 1, "1,2,3,4", NULL, 0);
 		for (int k = 0; k < 4; k++) {
 			mat_apply(m, p + 2 * k, q);
 			loft_put_row(w, q, 2);

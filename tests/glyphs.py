@@ -20,6 +20,7 @@ FONTS = ["/usr/share/fonts/truetype/freefont/FreeSerif.ttf",
          "/usr/share/fonts/opentype/ebgaramond/EBGaramond12-Regular.otf"]
 LETTERS = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789&"
 KINK = math.radians(10)     # a turn sharper than this is a corner
+TINY = 0.01                 # font units: a segment shorter is none
 
 
 def contours(font):
@@ -55,6 +56,11 @@ def contours(font):
             elif op in ("closePath", "endPath"):
                 if cur != start:
                     segs.append([cur, start])
+                # a segment of no length (a lineTo to where the pen is,
+                # or a CFF contour closed a rounding away from its start)
+                # would make two knots one
+                segs = [s for s in segs if any(math.dist(q, s[0]) > TINY
+                                               for q in s[1:])]
                 if len(segs) >= 3:
                     yield ch, segs
                 segs = []
