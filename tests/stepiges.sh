@@ -401,6 +401,95 @@ else
 	:       # said once above
 fi
 
+# ---- tocad's IGES as a sewn shell: the same designs, the same counts --------
+
+# igescount FILE: "faces edges vertices shell loose" from the file itself:
+# the Face entities (510), the counts of the Edge List (504) and the
+# Vertex List (502), the shell (CLOSED: a 514 of form 1 in a 186; OPEN: a
+# 514 of form 2 and no 186), and the surfaces (128) not subordinate
+igescount() {
+	awk 'substr($0, 73, 1) == "D" { d++; t = substr($0, 1, 8) + 0
+		if (d % 2) { st = substr($0, 67, 2); typ = t } else {
+			f = substr($0, 33, 8) + 0
+			if (t == 510) nf++; if (t == 186) solid++
+			if (t == 514) { shells++; form = f }
+			if (t == 128 && st == "00") loose++ } }
+	    substr($0, 73, 1) == "P" { split($0, w, ",")
+		if (w[1] == "504") ne = w[2]; if (w[1] == "502") nv = w[2] }
+	    END { s = "NONE"
+		if (shells == 1 && form == 1 && solid == 1) s = "CLOSED"
+		if (shells == 1 && form == 2 && !solid) s = "OPEN"
+		print nf + 0, ne + 0, nv + 0, s, loose + 0 }' "$1"
+}
+for c in hull.patch:2:7:6:OPEN nudged.patch:2:7:6:OPEN \
+    unlinked.patch:2:8:8:OPEN cube.surf:6:12:8:CLOSED \
+    man/examples/hull.design:24:58:35:OPEN; do
+	set -- $(echo "$c" | tr : ' ')
+	f=$1; [ -f "$f" ] || f=$T/$1
+	$B/tocad -f iges "$f" >"$T/sewn.igs"
+	got=$(igescount "$T/sewn.igs")
+	[ "$got" = "$2 $3 $4 $5 0" ] && ok ||
+	    no "iges shell of $1: faces edges vertices shell loose '$got', want '$2 $3 $4 $5 0'"
+	# each surface once: the shell's structure and its edges' curves
+	# (subordinate) are not read again
+	run "$B/fromcad $T/sewn.igs"
+	status 0
+	[ "$(grep -c '^bezier-surface' "$T/out")" = "$2" ] &&
+	    [ "$(grep -c -v -e '^bezier-surface' -e '^[-0-9]' -e '^$' "$T/out")" = 0 ] &&
+	    ok || no "iges shell of $1: not $2 surfaces and nothing else back"
+done
+if [ -n "$OCCPY" ]; then
+	# occpatch.py FILE PTS: PTS is sample -u's wireframe of the records
+	# (x y z u v), a record's lines ending with two blank lines; each
+	# record against the face of FILE that OpenCASCADE evaluates
+	# (getValue at the same u, v) closest to it.  Prints the faces, the
+	# records, the faces matched (each once), and the worst distance
+	# over the model's size
+	cat >"$T/occpatch.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+faces = [t for d, t in gmsh.model.getEntities(2)]
+recs = [[[float(x) for x in l.split()] for l in r.splitlines() if l.strip()]
+        for r in open(sys.argv[2]).read().split("\n\n\n") if r.strip()]
+worst, used = 0.0, set()
+for r in recs:
+    best, bt = 1e300, None
+    for t in faces:
+        e = max(sum((a - b) ** 2 for a, b in zip(gmsh.model.getValue(
+            2, t, p[3:5]), p[:3])) ** 0.5 for p in r)
+        if e < best:
+            best, bt = e, t
+    worst = max(worst, best)
+    used.add(bt)
+b = gmsh.model.getBoundingBox(-1, -1)
+size = sum((b[k + 3] - b[k]) ** 2 for k in range(3)) ** 0.5
+print(len(faces), len(recs), len(used), worst / size)
+gmsh.finalize()
+PY
+	# OpenCASCADE's vertices, edges, faces, volumes and volume, as for
+	# STEP above; then each face's surface at loft's parameters
+	for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
+	    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
+	    man/examples/hull.design:35:58:24:0:0; do
+		set -- $(echo "$c" | tr : ' ')
+		f=$1; [ -f "$f" ] || f=$T/$1
+		$B/tocad -f iges "$f" >"$T/sewn.igs"
+		got=$("$OCCPY" "$T/topo.py" "$T/sewn.igs" 2>/dev/null | tail -n 1)
+		[ "$got" = "$2 $3 $4 $5 $6" ] && ok ||
+		    no "OpenCASCADE on the IGES shell of $1: '$got', want '$2 $3 $4 $5 $6'"
+		$B/sample -n 6 -u "$f" >"$T/sewn.pts"
+		set -- $("$OCCPY" "$T/occpatch.py" "$T/sewn.igs" "$T/sewn.pts" \
+		    2>/dev/null | tail -n 1) "$4" "$1"
+		[ "$1" = "$5" ] && [ "$2" = "$5" ] && [ "$3" = "$5" ] && ok ||
+		    no "OpenCASCADE on the IGES shell of $6: faces, records, matched '$1 $2 $3', want $5 each"
+		echo "$4" >"$T/val"
+		within "OpenCASCADE on the IGES shell of $6: its faces at loft's (u, v)" 1e-14
+	done
+fi
+
 # ---- degrees above 25: cubic pieces within -t, which OpenCASCADE reads -----
 
 awk 'BEGIN { print "bezier"; for (i = 0; i < 64; i++) print i, i % 2 }' \
