@@ -352,7 +352,9 @@ sew(struct loft_cad_doc *d)
 	param_int(d, (long)nf);
 	for (size_t k = 0; k < nf; k++) {
 		param_int(d, fent[k]);
-		param_int(d, 1);        /* its normal is its surface's */
+		/* its normal is its surface's, or in a closed shell whose
+		 * surfaces' normals point in, the other way round */
+		param_int(d, !w->closed || w->volume >= 0);
 	}
 	if ((shell = end_entity(d, 514, w->closed ? 1 : 2, w->closed ?
 	    SUBORDINATE : INDEPENDENT)) < 0)

@@ -320,6 +320,8 @@ int loft_cad_surface_limited(struct loft_cad_doc *d, const struct loft_bsurf *s,
 struct loft_sew_face {
 	long surf;              /* the writer's entity of its surface */
 	char *name;             /* the writer's name of it */
+	double *ctl;            /* its control points, as loft_bsurf's */
+	int m, n;               /* its degrees */
 	int deg[4];             /* of its sides */
 	double *side[4];        /* their deg + 1 control points, 3 each */
 	long patch;             /* its index in the sewing's design, or -1 */
@@ -348,6 +350,8 @@ struct loft_sew {
 	double *vert;           /* the vertices' points, 3 each */
 	size_t nvert;
 	int closed;             /* every edge bounds two faces (and one is) */
+	double volume;          /* closed: the volume the faces enclose, */
+	                        /* negative when their normals point in */
 	struct loft_design design;      /* the patches' links */
 };
 
@@ -366,7 +370,8 @@ int loft_sew_add(struct loft_sew *w, const struct loft_bsurf *b,
  * link, are one vertex; a side with the same points as another's (either
  * way round), or linked to it, is one edge with it; a side all at one
  * point is no edge.  Fills each face's edge and fwd, the edges, the
- * vertices and closed.  Returns 0 or LOFT_ENOMEM.
+ * vertices, closed and, for a closed shell, volume (the divergence
+ * theorem, exact to rounding).  Returns 0 or LOFT_ENOMEM.
  */
 int loft_sew_run(struct loft_sew *w);
 

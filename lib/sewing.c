@@ -39,10 +39,16 @@ loft_sew_add(struct loft_sew *w, const struct loft_bsurf *b,
 	f = memset(w->face + w->nface, 0, sizeof *w->face);
 	f->surf = surf;
 	f->patch = -1;
-	if ((f->name = malloc(strlen(name) + 1)) == NULL)
+	f->m = m;
+	f->n = n;
+	w->nface++;
+	if ((f->name = malloc(strlen(name) + 1)) == NULL || (f->ctl =
+	    malloc(3 * (size_t)(m + 1) * (size_t)(n + 1) * sizeof *f->ctl)) ==
+	    NULL)
 		return LOFT_ENOMEM;
 	strcpy(f->name, name);
-	w->nface++;
+	memcpy(f->ctl, b->ctl, 3 * (size_t)(m + 1) * (size_t)(n + 1) *
+	    sizeof *f->ctl);
 	for (int e = 0; e < 4; e++) {
 		int deg = e % 2 ? n : m;
 
@@ -268,6 +274,74 @@ number_vertices(struct loft_sew *w)
 	return 0;
 }
 
+/*
+ * The k-point Gauss-Legendre rule on [0, 1] into x and wt (k <= MAXGAUSS),
+ * exact for polynomials of degree 2k - 1: the roots of the Legendre
+ * polynomial P_k by Newton's method from cos(pi (i - 1/4) / (k + 1/2)).
+ */
+#define MAXGAUSS 100
+static void
+gauss(int k, double *x, double *wt)
+{
+	for (int i = 0; i < (k + 1) / 2; i++) {
+		double t = cos(M_PI * (i + 0.75) / (k + 0.5)), dp = 1;
+
+		for (int it = 0; it < 100; it++) {
+			double p0 = 1, p1 = t, step;    /* P_0, P_1 */
+
+			for (int j = 2; j <= k; j++) {
+				double p2 = ((2 * j - 1) * t * p1 - (j - 1) * p0) / j;
+
+				p0 = p1;
+				p1 = p2;
+			}
+			/* p1 is P_k(t), p0 P_(k-1)(t); dp P_k'(t) */
+			dp = k * (t * p1 - p0) / (t * t - 1);
+			step = p1 / dp;
+			t -= step;
+			if (fabs(step) < 1e-15)
+				break;
+		}
+		x[i] = (1 - t) / 2;
+		x[k - 1 - i] = (1 + t) / 2;
+		wt[i] = wt[k - 1 - i] = 1 / ((1 - t * t) * dp * dp);
+	}
+}
+
+/*
+ * The volume the faces enclose, by the divergence theorem: a third of
+ * the sum over the faces of the integral of F . (F_u x F_v) over the
+ * unit square, positive when their normals f_u x f_v point out.  The
+ * integrand is of degree 3m - 1 in u and 3n - 1 in v: Gauss's rule of
+ * 3 max(m, n) / 2 + 1 points each way is exact.
+ */
+static double
+signed_volume(const struct loft_sew *w)
+{
+	double x[MAXGAUSS], wt[MAXGAUSS], vol = 0;
+
+	for (size_t f = 0; f < w->nface; f++) {
+		const struct loft_sew_face *F = w->face + f;
+		int k = 3 * (F->m > F->n ? F->m : F->n) / 2 + 1;
+
+		if (k > MAXGAUSS)
+			k = MAXGAUSS;
+		gauss(k, x, wt);
+		for (int i = 0; i < k; i++)
+			for (int j = 0; j < k; j++) {
+				double p[3], pu[3], pv[3];
+
+				loft_bezier_surface_eval(F->ctl, F->m, F->n, x[i],
+				    x[j], p, pu, pv);
+				vol += wt[i] * wt[j] * (p[0] * (pu[1] * pv[2] -
+				    pu[2] * pv[1]) + p[1] * (pu[2] * pv[0] -
+				    pu[0] * pv[2]) + p[2] * (pu[0] * pv[1] -
+				    pu[1] * pv[0])) / 3;
+			}
+	}
+	return vol;
+}
+
 int
 loft_sew_run(struct loft_sew *w)
 {
@@ -295,6 +369,7 @@ loft_sew_run(struct loft_sew *w)
 	w->closed = w->nedge > 0;
 	for (size_t k = 0; k < w->nedge; k++)
 		w->closed &= w->edge[k].uses == 2;
+	w->volume = w->closed ? signed_volume(w) : 0;
 	rc = 0;
 done:
 	free(up);
@@ -307,6 +382,7 @@ loft_sew_free(struct loft_sew *w)
 {
 	for (size_t i = 0; i < w->nface; i++) {
 		free(w->face[i].name);
+		free(w->face[i].ctl);
 		for (int e = 0; e < 4; e++)
 			free(w->face[i].side[e]);
 	}
