@@ -332,6 +332,10 @@ sew(struct loft_cad_doc *d)
 	size_t nf = 0;
 	int rc = LOFT_ENOMEM;
 
+	if (w->nface == 0) {
+		free(fent);
+		return 0;
+	}
 	if (fent == NULL || loft_sew_run(w) != 0)
 		goto done;
 	rc = 0;

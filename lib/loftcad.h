@@ -371,7 +371,8 @@ int loft_sew_add(struct loft_sew *w, const struct loft_bsurf *b,
  * way round), or linked to it, is one edge with it; a side all at one
  * point is no edge.  Fills each face's edge and fwd, the edges, the
  * vertices, closed and, for a closed shell, volume (the divergence
- * theorem, exact to rounding).  Returns 0 or LOFT_ENOMEM.
+ * theorem, exact to rounding).  Called once, after the last
+ * loft_sew_add.  Returns 0 or LOFT_ENOMEM.
  */
 int loft_sew_run(struct loft_sew *w);
 

@@ -346,9 +346,13 @@ int
 loft_sew_run(struct loft_sew *w)
 {
 	size_t nc = 4 * w->nface;
-	long *up = malloc(nc * sizeof *up), *force = malloc(nc * sizeof *force);
+	long *up, *force;
 	int rc = LOFT_ENOMEM;
 
+	if (nc == 0)
+		return 0;
+	up = malloc(nc * sizeof *up);
+	force = malloc(nc * sizeof *force);
 	if (up == NULL || force == NULL)
 		goto done;
 	weld(w, up, force);
