@@ -390,6 +390,22 @@ shellcount() {
 awk '/^bezier/ { r = 0; print; next } NF == 3 { R[++r] = $0
     if (r == 4) print R[1] "\n" R[3] "\n" R[2] "\n" R[4]; next } { print }' \
     "$T/cube.surf" >"$T/cubeflip.surf"
+# a box 3 x 3 x 3 of bicubic patches (cube.surf's, stretched, made
+# cubic; their points on whole numbers, so that sides meet exactly), the
+# top's four inner points raised by 1: its volume is 27 + 9/4 = 29.25
+# (each inner Bernstein function of degree 3 averages 1/4)
+awk '/^bezier/ { r = 0; rec++; next }
+    NF == 3 { P[++r] = ($1 * 3 / 2) " " ($2 * 3) " " $3; if (r < 4) next
+	split(P[1], a); split(P[2], b); split(P[3], c); split(P[4], d)
+	print "bezier-surface m=3 n=3"
+	for (i = 0; i <= 3; i++) for (j = 0; j <= 3; j++) { l = ""
+	    for (q = 1; q <= 3; q++) {
+		x = (3 - i) * (3 - j) * a[q] + (3 - i) * j * b[q]
+		x = (x + i * (3 - j) * c[q] + i * j * d[q]) / 9
+		if (q == 3 && rec == 2 && i % 3 && j % 3) x += 1
+		l = l (q > 1 ? " " : "") x }
+	    print l }
+	print "" }' "$T/cube.surf" >"$T/bulge.surf"
 # igesshell.awk: what IGES's B-rep must hold, checked in the file: for
 # each face (510), its loop's edges (508, with their senses) follow each
 # other head to tail; no edge of the edge list (504) is run twice the
@@ -458,7 +474,8 @@ AWK
 for fmt in step iges; do
 	for c in hull.patch:2:7:6:OPEN nudged.patch:2:7:6:OPEN \
 	    unlinked.patch:2:8:8:OPEN cube.surf:6:12:8:CLOSED \
-	    cubeflip.surf:6:12:8:CLOSED man/examples/hull.design:24:58:35:OPEN; do
+	    cubeflip.surf:6:12:8:CLOSED bulge.surf:6:12:8:CLOSED \
+	    man/examples/hull.design:24:58:35:OPEN; do
 		set -- $(echo "$c" | tr : ' ')
 		f=$1; [ -f "$f" ] || f=$T/$1
 		$B/tocad -f $fmt "$f" >"$T/sewn.$fmt"
@@ -533,7 +550,7 @@ PY
 	for fmt in step iges; do
 		for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
 		    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
-		    cubeflip.surf:8:12:6:1:6 \
+		    cubeflip.surf:8:12:6:1:6 bulge.surf:8:12:6:1:29.25 \
 		    man/examples/hull.design:35:58:24:0:0; do
 			set -- $(echo "$c" | tr : ' ')
 			f=$1; [ -f "$f" ] || f=$T/$1
