@@ -46,7 +46,8 @@ PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o \
 # the CAD output formats (lib/loftcad.h): the document protocol, the
 # format table, one module a format, and loftplot's picture
 CADOBJ  = lib/cad.o lib/cadformats.o lib/dxf.o lib/svgcad.o lib/step.o \
-          lib/iges.o lib/stl.o lib/obj.o lib/svgplot.o lib/cadlimit.o
+          lib/iges.o lib/stl.o lib/obj.o lib/svgplot.o lib/cadlimit.o \
+          lib/sewing.o
 # the CAD readers (lib/cadread.h): what they share, their table, one
 # module a reader
 CADINOBJ = lib/cadread.o lib/cadreaders.o lib/dxfread.o lib/svgread.o \

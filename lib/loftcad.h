@@ -307,4 +307,75 @@ int loft_cad_curve_limited(struct loft_cad_doc *d, const struct loft_bcurve *c,
 int loft_cad_surface_limited(struct loft_cad_doc *d, const struct loft_bsurf *s,
     double tol, int (*write)(struct loft_cad_doc *, const struct loft_bsurf *));
 
+
+/* ------------------------------------------------------------------ */
+/* Patches sewn into one shell (sewing.c), for STEP and IGES           */
+
+/*
+ * A patch kept for the shell.  Its sides, in the order its loop runs
+ * them (counterclockwise in (u, v), so that the face's normal is
+ * f_u x f_v): 0 is v = 0, 1 is u = 1, 2 is v = 1, 3 is u = 0, each
+ * side's points in the direction of its surface parameter.
+ */
+struct loft_sew_face {
+	long surf;              /* the writer's entity of its surface */
+	char *name;             /* the writer's name of it */
+	double *ctl;            /* its control points, as loft_bsurf's */
+	int m, n;               /* its degrees */
+	int deg[4];             /* of its sides */
+	double *side[4];        /* their deg + 1 control points, 3 each */
+	long patch;             /* its index in the sewing's design, or -1 */
+	/* after loft_sew_run: */
+	long edge[4];           /* the edge each side is, or -1: a pole */
+	int fwd[4];             /* the loop runs along that edge's curve */
+};
+
+/* An edge: a Bezier curve of one piece over [0, 1], the points of the
+ * side (face, side), from vertex from to vertex to. */
+struct loft_sew_edge {
+	long from, to;          /* vertex numbers */
+	long face;
+	int side;
+	int uses;               /* faces it bounds: 1, or 2 when shared */
+	long ent;               /* the writer's, 0 until it sets it */
+};
+
+/* A shell being sewn; zero it before the first loft_sew_add. */
+struct loft_sew {
+	struct loft_sew_face *face;
+	size_t nface, facecap;
+	/* after loft_sew_run: */
+	struct loft_sew_edge *edge;
+	size_t nedge, edgecap;
+	double *vert;           /* the vertices' points, 3 each */
+	size_t nvert;
+	int closed;             /* every edge bounds two faces (and one is) */
+	double volume;          /* closed: the volume the faces enclose, */
+	                        /* negative when their normals point in */
+	struct loft_design design;      /* the patches' links */
+};
+
+/*
+ * Keep the patch b (its points are copied), written by the caller as
+ * its entity surf and called name, for the shell.  rec, when not NULL,
+ * is its record: a patch with an id brings its links, which make the
+ * sides they join one edge even where rounding made their points differ
+ * (a link over a whole side, loft.5).  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_sew_add(struct loft_sew *w, const struct loft_bsurf *b,
+    const struct loft_record *rec, const char *name, long surf);
+
+/*
+ * Sew the patches kept: corners at the same point, or put together by a
+ * link, are one vertex; a side with the same points as another's (either
+ * way round), or linked to it, is one edge with it; a side all at one
+ * point is no edge.  Fills each face's edge and fwd, the edges, the
+ * vertices, closed and, for a closed shell, volume (the divergence
+ * theorem, exact to rounding).  Called once, after the last
+ * loft_sew_add.  Returns 0 or LOFT_ENOMEM.
+ */
+int loft_sew_run(struct loft_sew *w);
+
+void loft_sew_free(struct loft_sew *w);
+
 #endif

@@ -1,10 +1,11 @@
 #!/bin/sh
-# stepiges.sh: fromcad's STEP and IGES readers, and tocad's STEP as a
-# sewn shell.  References: the records tocad was given (a round trip
+# stepiges.sh: fromcad's STEP and IGES readers, and tocad's STEP and
+# IGES as sewn shells.  References: the records tocad was given (a round trip
 # comes back to rounding, by sampling both at the same parameters);
 # closed forms for conics written by hand; OpenCASCADE (python3-gmsh)
 # for files it writes, its own evaluation of its surfaces, and its
-# reading of tocad's shells (edges, faces, volumes).  What needs gmsh
+# reading and evaluation of tocad's shells (vertices, edges, faces,
+# volumes; each face at loft's parameters).  What needs gmsh
 # skips with one line when it is missing.
 # The last line is "stepiges: N passed, M failed".
 
@@ -309,7 +310,7 @@ else
 	echo "stepiges: skipped: no python3-gmsh (OpenCASCADE): its files, shells and degree 63"
 fi
 
-# ---- tocad's STEP as a sewn shell ------------------------------------------
+# ---- tocad's STEP and IGES as sewn shells -----------------------------------
 
 # a closed box of six bilinear patches, each normal outward
 cat >"$T/cube.surf" <<'EOF'
@@ -356,22 +357,151 @@ awk '/^patch id=3/ { p = 1 } /^$/ { p = 0 } !p || /^patch/ { print; next }
     { for (i = 1; i <= NF; i++) $i = sprintf("%.17g", $i * (1 + 1e-15)); print }' \
     "$T/hull.patch" >"$T/nudged.patch"
 sed -E 's/ (u0|u1|v0|v1)=[0-9]+//g' "$T/nudged.patch" >"$T/unlinked.patch"
-# counted in the file: faces, edges, vertices, the shell
-for c in hull.patch:2:7:6:OPEN_SHELL nudged.patch:2:7:6:OPEN_SHELL \
-    unlinked.patch:2:8:8:OPEN_SHELL cube.surf:6:12:8:CLOSED_SHELL \
-    man/examples/hull.design:24:58:35:OPEN_SHELL; do
-	set -- $(echo "$c" | tr : ' ')
-	f=$1; [ -f "$f" ] || f=$T/$1
-	$B/tocad -f step "$f" >"$T/sewn.step"
-	got=$(awk '/ADVANCED_FACE/ { f++ } /EDGE_CURVE/ { e++ } /VERTEX_POINT/ { v++ }
-	    /CLOSED_SHELL/ { s = "CLOSED_SHELL" } /OPEN_SHELL/ { s = "OPEN_SHELL" }
-	    END { print f + 0, e + 0, v + 0, s }' "$T/sewn.step")
-	[ "$got" = "$2 $3 $4 $5" ] && ok ||
-	    no "step shell of $1: faces edges vertices '$got', want '$2 $3 $4 $5'"
-	run "$B/fromcad $T/sewn.step"
-	status 0
-	[ "$(grep -c '^bezier-surface' "$T/out")" = "$2" ] && ok ||
-	    no "step shell of $1: not $2 surfaces back"
+# shellcount FILE: "faces edges vertices shell loose", counted in a STEP
+# or IGES file itself: its faces, edges and vertices; its shell, CLOSED
+# (STEP: a CLOSED_SHELL; IGES: a shell (514) of form 1 in a manifold
+# solid (186)) or OPEN (an OPEN_SHELL; a 514 of form 2 and no 186) or
+# NONE; and its surfaces in no face (STEP: B-spline surfaces beyond the
+# faces; IGES: 128s not subordinate)
+shellcount() {
+	case $1 in
+	*.step) awk '/ADVANCED_FACE/ { f++ } /EDGE_CURVE/ { e++ }
+	    /VERTEX_POINT/ { v++ } /B_SPLINE_SURFACE_WITH_KNOTS/ { b++ }
+	    /CLOSED_SHELL/ { s = "CLOSED" } /OPEN_SHELL/ { s = "OPEN" }
+	    END { print f + 0, e + 0, v + 0, s ? s : "NONE", b - f }' "$1" ;;
+	# IGES: the Face entities (510), the counts of the Edge List (504)
+	# and the Vertex List (502), whose parameters begin a line
+	*) awk 'substr($0, 73, 1) == "D" { d++; t = substr($0, 1, 8) + 0
+		if (d % 2) { st = substr($0, 67, 2) } else {
+			f = substr($0, 33, 8) + 0
+			if (t == 510) nf++; if (t == 186) solid++
+			if (t == 514) { shells++; form = f }
+			if (t == 128 && st == "00") loose++ } }
+	    substr($0, 73, 1) == "P" { split($0, w, ",")
+		if (w[1] == "504") ne = w[2]; if (w[1] == "502") nv = w[2] }
+	    END { s = "NONE"
+		if (shells == 1 && form == 1 && solid == 1) s = "CLOSED"
+		if (shells == 1 && form == 2 && !solid) s = "OPEN"
+		print nf + 0, ne + 0, nv + 0, s, loose + 0 }' "$1" ;;
+	esac
+}
+# the same box with each patch's u and v swapped: its normals the other
+# way round
+awk '/^bezier/ { r = 0; print; next } NF == 3 { R[++r] = $0
+    if (r == 4) print R[1] "\n" R[3] "\n" R[2] "\n" R[4]; next } { print }' \
+    "$T/cube.surf" >"$T/cubeflip.surf"
+# a box 3 x 3 x 3 of bicubic patches (cube.surf's, stretched, made
+# cubic; their points on whole numbers, so that sides meet exactly), the
+# top's four inner points raised by 1: its volume is 27 + 9/4 = 29.25
+# (each inner Bernstein function of degree 3 averages 1/4)
+awk '/^bezier/ { r = 0; rec++; next }
+    NF == 3 { P[++r] = ($1 * 3 / 2) " " ($2 * 3) " " $3; if (r < 4) next
+	split(P[1], a); split(P[2], b); split(P[3], c); split(P[4], d)
+	print "bezier-surface m=3 n=3"
+	for (i = 0; i <= 3; i++) for (j = 0; j <= 3; j++) { l = ""
+	    for (q = 1; q <= 3; q++) {
+		x = (3 - i) * (3 - j) * a[q] + (3 - i) * j * b[q]
+		x = (x + i * (3 - j) * c[q] + i * j * d[q]) / 9
+		if (q == 3 && rec == 2 && i % 3 && j % 3) x += 1
+		l = l (q > 1 ? " " : "") x }
+	    print l }
+	print "" }' "$T/cube.surf" >"$T/bulge.surf"
+# igesshell.awk: what IGES's B-rep must hold, checked in the file: for
+# each face (510), its loop's edges (508, with their senses) follow each
+# other head to tail; no edge of the edge list (504) is run twice the
+# same way; each edge's curve (126) begins and ends at its vertices
+# (502), to 1e-10 (the designs here are about 10 across); and the loop
+# turns counterclockwise about its surface's normal (its vector area,
+# from the loop's control points, against the cross of the surface's
+# diagonals).  Prints the faces, the counts of those
+# broken, and the volume the shell (514) encloses with its faces' and
+# its solid's senses, exact for plane quadrilaterals (the divergence
+# theorem: a third of the sum of each plane's point times its area)
+cat >"$T/igesshell.awk" <<'AWK'
+# the parameters of each entity, by its directory line
+substr($0, 73, 1) == "P" { k = substr($0, 66, 7) + 0; P[k] = P[k] substr($0, 1, 64) }
+substr($0, 73, 1) == "D" { if (++d % 2) type[d] = substr($0, 1, 8) + 0 }
+function pt(k, i, q) { return W[k, i + q] + 0 }
+# the loop's vertex numbers: its edge j's start (end 0) or end (end 1)
+function vtx(k, j, e,   el, x, of) { el = W[k, 4 + 5 * (j - 1)]; x = W[k, 5 + 5 * (j - 1)]
+	of = W[k, 6 + 5 * (j - 1)]; return W[el, 3 + 5 * (x - 1) + ((e == of) ? 4 : 2)] }
+END {
+	for (k in P) { s = P[k]; gsub(/[ ;]/, "", s); sub(/,$/, "", s)
+		n = split(s, w, ","); for (i = 1; i <= n; i++) W[k, i] = w[i] }
+	for (k = 1; k < d; k += 2) if (type[k] == 510) {
+		nl++; L = W[k, 5]; S = W[k, 2]; N = W[L, 2]
+		# the loop closes head to tail
+		for (j = 1; j <= N; j++)
+			if (vtx(L, j, 1) != vtx(L, j % N + 1, 0)) chain++
+		# each edge once each way; its curve's ends at its vertices
+		area[0] = area[1] = area[2] = 0
+		for (j = 1; j <= N; j++) {
+			el = W[L, 4 + 5 * (j - 1)]; x = W[L, 5 + 5 * (j - 1)]
+			of = W[L, 6 + 5 * (j - 1)]
+			if (use[el, x, of]++) share++
+			c = W[el, 3 + 5 * (x - 1)]; K = W[c, 2]; M = W[c, 3]
+			o = 7 + (K + M + 2) + (K + 1)
+			for (e = 0; e < 2; e++) { v = W[el, 3 + 5 * (x - 1) + 2 + 2 * e]
+				vl = W[el, 3 + 5 * (x - 1) + 1 + 2 * e]
+				for (q = 1; q <= 3; q++) { dd = pt(c, o + 3 * K * e, q) - pt(vl, 2 + 3 * (v - 1), q)
+					if (dd * dd > 1e-20) ends++ } }
+			# the loop's polygon of control points, in its sense
+			for (i = 0; i <= K; i++) { ii = of ? i : K - i
+				for (q = 1; q <= 3; q++) p[q] = pt(c, o + 3 * ii, q)
+				if (j > 1 || i > 0) { area[0] += pr[2] * p[3] - pr[3] * p[2]
+					area[1] += pr[3] * p[1] - pr[1] * p[3]; area[2] += pr[1] * p[2] - pr[2] * p[1] }
+				else { for (q = 1; q <= 3; q++) p0[q] = p[q] }
+				for (q = 1; q <= 3; q++) pr[q] = p[q] } }
+		area[0] += pr[2] * p0[3] - pr[3] * p0[2]; area[1] += pr[3] * p0[1] - pr[1] * p0[3]
+		area[2] += pr[1] * p0[2] - pr[2] * p0[1]
+		# the surface's normal, the cross of its diagonals
+		K1 = W[S, 2]; K2 = W[S, 3]; o = 10 + (K1 + W[S, 4] + 2) + (K2 + W[S, 5] + 2) + (K1 + 1) * (K2 + 1)
+		for (q = 1; q <= 3; q++) { a[q] = pt(S, o + 3 * ((K1 + 1) * (K2 + 1) - 1), q) - pt(S, o, q)
+			b[q] = pt(S, o + 3 * K2 * (K1 + 1), q) - pt(S, o + 3 * K1, q) }
+		nx = a[2] * b[3] - a[3] * b[2]; ny = a[3] * b[1] - a[1] * b[3]
+		nz = a[1] * b[2] - a[2] * b[1]
+		if (nx * area[0] + ny * area[1] + nz * area[2] <= 0) turn++
+		fl[k] = nx * pt(S, o, 1) + ny * pt(S, o, 2) + nz * pt(S, o, 3)
+	}
+	# the volume of a shell of plane quadrilaterals, by the divergence
+	# theorem, with its faces' and its solid's senses
+	for (k = 1; k < d; k += 2) if (type[k] == 514) { sh = k
+		for (j = 1; j <= W[k, 2]; j++) vol += (W[k, 2 + 2 * j] ? 1 : -1) * fl[W[k, 1 + 2 * j]] / 6 }
+	for (k = 1; k < d; k += 2) if (type[k] == 186 && W[k, 2] == sh && !W[k, 3]) vol = -vol
+	print nl + 0, chain + 0, share + 0, ends + 0, turn + 0, vol + 0
+}
+AWK
+for fmt in step iges; do
+	for c in hull.patch:2:7:6:OPEN nudged.patch:2:7:6:OPEN \
+	    unlinked.patch:2:8:8:OPEN cube.surf:6:12:8:CLOSED \
+	    cubeflip.surf:6:12:8:CLOSED bulge.surf:6:12:8:CLOSED \
+	    man/examples/hull.design:24:58:35:OPEN; do
+		set -- $(echo "$c" | tr : ' ')
+		f=$1; [ -f "$f" ] || f=$T/$1
+		$B/tocad -f $fmt "$f" >"$T/sewn.$fmt"
+		got=$(shellcount "$T/sewn.$fmt")
+		[ "$got" = "$2 $3 $4 $5 0" ] && ok ||
+		    no "$fmt shell of $1: faces edges vertices shell loose '$got', want '$2 $3 $4 $5 0'"
+		if [ $fmt = iges ]; then
+			set -- $(awk -f "$T/igesshell.awk" "$T/sewn.iges") "$@"
+			[ "$1 $2 $3 $4 $5" = "$8 0 0 0 0" ] && ok ||
+			    no "iges shell of $7: faces, loops broken, edges twice, ends off, turned '$1 $2 $3 $4 $5', want '$8 0 0 0 0'"
+			# the closed boxes: 2 x 3 x 1, out (the sign of either)
+			case $7 in cube*)
+				echo "$6" | awk '{ d = $1 - 6; print (d < 0 ? -d : d) }' >"$T/val"
+				within "iges shell of $7: the volume it encloses, 6" 1e-12 ;;
+			esac
+			shift 6
+		fi
+		# each surface once: the shell's structure and its edges'
+		# curves are not read again
+		run "$B/fromcad $T/sewn.$fmt"
+		status 0
+		[ "$(grep -c '^bezier-surface' "$T/out")" = "$2" ] &&
+		    [ "$(grep -c -v -e '^bezier-surface' -e '^[-0-9]' -e '^$' \
+		    "$T/out")" = 0 ] &&
+		    ok || no "$fmt shell of $1: not $2 surfaces and nothing else back"
+	done
 done
 if [ -n "$OCCPY" ]; then
 	# OpenCASCADE reads one connected shell: vertices, edges, faces,
@@ -387,15 +517,57 @@ v = sum(gmsh.model.occ.getMass(3, t) for d, t in gmsh.model.getEntities(3))
 print(*n, "%.12g" % v)
 gmsh.finalize()
 PY
-	for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
-	    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
-	    man/examples/hull.design:35:58:24:0:0; do
-		set -- $(echo "$c" | tr : ' ')
-		f=$1; [ -f "$f" ] || f=$T/$1
-		$B/tocad -f step "$f" >"$T/sewn.step"
-		got=$("$OCCPY" "$T/topo.py" "$T/sewn.step" 2>/dev/null | tail -n 1)
-		[ "$got" = "$2 $3 $4 $5 $6" ] && ok ||
-		    no "OpenCASCADE on the shell of $1: '$got', want '$2 $3 $4 $5 $6'"
+	# occpatch.py FILE PTS: PTS is sample -u's wireframe of the records
+	# (x y z u v), a record's lines ending with two blank lines; each
+	# record against the face of FILE that OpenCASCADE evaluates
+	# (getValue at the same u, v) closest to it.  Prints the faces, the
+	# records, the faces matched (each once), and the worst distance
+	# over the model's size
+	cat >"$T/occpatch.py" <<'PY'
+import sys, gmsh
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.importShapes(sys.argv[1])
+gmsh.model.occ.synchronize()
+faces = [t for d, t in gmsh.model.getEntities(2)]
+recs = [[[float(x) for x in l.split()] for l in r.splitlines() if l.strip()]
+        for r in open(sys.argv[2]).read().split("\n\n\n") if r.strip()]
+worst, used = 0.0, set()
+for r in recs:
+    best, bt = 1e300, None
+    for t in faces:
+        e = max(sum((a - b) ** 2 for a, b in zip(gmsh.model.getValue(
+            2, t, p[3:5]), p[:3])) ** 0.5 for p in r)
+        if e < best:
+            best, bt = e, t
+    worst = max(worst, best)
+    used.add(bt)
+b = gmsh.model.getBoundingBox(-1, -1)
+size = sum((b[k + 3] - b[k]) ** 2 for k in range(3)) ** 0.5
+print(len(faces), len(recs), len(used), worst / size)
+gmsh.finalize()
+PY
+	for fmt in step iges; do
+		for c in hull.patch:6:7:2:0:0 nudged.patch:6:7:2:0:0 \
+		    unlinked.patch:8:8:2:0:0 cube.surf:8:12:6:1:6 \
+		    cubeflip.surf:8:12:6:1:6 bulge.surf:8:12:6:1:29.25 \
+		    man/examples/hull.design:35:58:24:0:0; do
+			set -- $(echo "$c" | tr : ' ')
+			f=$1; [ -f "$f" ] || f=$T/$1
+			$B/tocad -f $fmt "$f" >"$T/sewn.$fmt"
+			got=$("$OCCPY" "$T/topo.py" "$T/sewn.$fmt" 2>/dev/null |
+			    tail -n 1)
+			[ "$got" = "$2 $3 $4 $5 $6" ] && ok ||
+			    no "OpenCASCADE on the $fmt shell of $1: '$got', want '$2 $3 $4 $5 $6'"
+			# each face's surface at loft's parameters
+			$B/sample -n 6 -u "$f" >"$T/sewn.pts"
+			set -- $("$OCCPY" "$T/occpatch.py" "$T/sewn.$fmt" \
+			    "$T/sewn.pts" 2>/dev/null | tail -n 1) "$4" "$1"
+			[ "$1" = "$5" ] && [ "$2" = "$5" ] && [ "$3" = "$5" ] &&
+			    ok || no "OpenCASCADE on the $fmt shell of $6: faces, records, matched '$1 $2 $3', want $5 each"
+			echo "$4" >"$T/val"
+			within "OpenCASCADE on the $fmt shell of $6: its faces at loft's (u, v)" 1e-14
+		done
 	done
 else
 	:       # said once above
