@@ -252,12 +252,19 @@ put_edges(struct loft_cad_doc *d)
 	free(vent);
 }
 
-/* The face f's loop and face; returns the ADVANCED_FACE's number. */
+/*
+ * The face f's loop and face; returns the ADVANCED_FACE's number.  In a
+ * closed shell whose surfaces' normals point in (its volume negative),
+ * each face is the other way round from its surface, and so its bound:
+ * the solid is not inside out.
+ */
 static long
 put_face(struct loft_cad_doc *d, const struct loft_sew_face *f)
 {
 	struct step *s = d->state;
 	long oe[4], n = 0, loop, bound, face;
+	const char *sense = !s->sew.closed || s->sew.volume >= 0 ?
+	    ".T.);\n" : ".F.);\n";
 
 	for (int e = 0; e < 4; e++)
 		if (f->edge[e] >= 0)
@@ -269,12 +276,14 @@ put_face(struct loft_cad_doc *d, const struct loft_sew_face *f)
 	loft_cad_puts(d, "));\n");
 	bound = s->next++;
 	put_long(d, "#%ld=FACE_OUTER_BOUND('',", bound);
-	put_long(d, "#%ld,.T.);\n", loop);
+	put_long(d, "#%ld,", loop);
+	loft_cad_puts(d, sense);
 	face = s->next++;
 	put_long(d, "#%ld=ADVANCED_FACE('", face);
 	loft_cad_puts(d, f->name);
 	put_long(d, "',(#%ld),", bound);
-	put_long(d, "#%ld,.T.);\n", f->surf);
+	put_long(d, "#%ld,", f->surf);
+	loft_cad_puts(d, sense);
 	return face;
 }
 

@@ -312,7 +312,8 @@ fi
 
 # ---- tocad's STEP and IGES as sewn shells -----------------------------------
 
-# a closed box of six bilinear patches, each normal outward
+# a closed box of six bilinear patches, each normal inward (cubeflip.surf
+# below is the same box with its normals out)
 cat >"$T/cube.surf" <<'EOF'
 bezier-surface m=1 n=1
 0 0 0
@@ -471,6 +472,48 @@ END {
 	print nl + 0, chain + 0, share + 0, ends + 0, turn + 0, vol + 0
 }
 AWK
+# stepshell.awk: for the boxes of bilinear faces, the CLOSED_SHELL of
+# tocad's STEP (an entity a line): its faces, those whose outer bound
+# does not turn counterclockwise about the face's normal (the surface's,
+# Su x Sv, times the face's sense), and the volume enclosed, by the
+# divergence theorem from each bound's vector area and a point of it:
+# a solid inside out gives it negative
+cat >"$T/stepshell.awk" <<'AWK'
+# tocad's STEP, one entity a line: "#n=TYPE(args);"
+/^#[0-9]+=/ { n = substr($0, 2, index($0, "=") - 2); s = substr($0, index($0, "=") + 1)
+	T[n] = substr(s, 1, index(s, "(") - 1); A[n] = substr(s, index(s, "(")) }
+function refs(s, r,   k, m) { m = 0; while (match(s, /#[0-9]+/)) {
+	r[++m] = substr(s, RSTART + 1, RLENGTH - 1); s = substr(s, RSTART + RLENGTH) } return m }
+function flag(s) { return s ~ /\.T\.\);$/ }
+function xyz(p,   s) { s = A[p]; sub(/^\('',\(/, "", s); sub(/\)\);$/, "", s); return split(s, X, ",") }
+END {
+	for (k in T) if (T[k] == "CLOSED_SHELL") { nf = refs(A[k], F)
+		for (f = 1; f <= nf; f++) {
+			refs(A[F[f]], fr); bound = fr[1]; surf = fr[2]
+			sense = flag(A[F[f]]) ? 1 : -1
+			refs(A[bound], br); sense2 = flag(A[bound]) ? 1 : -1
+			refs(A[surf], sr)
+			for (i = 1; i <= 4; i++) { xyz(sr[i]); for (q = 1; q <= 3; q++) P[i, q] = X[q] }
+			for (q = 1; q <= 3; q++) {
+				u[q] = P[3, q] - P[1, q] + P[4, q] - P[2, q]
+				v[q] = P[2, q] - P[1, q] + P[4, q] - P[3, q] }
+			N[1] = sense * (u[2] * v[3] - u[3] * v[2]); N[2] = sense * (u[3] * v[1] - u[1] * v[3])
+			N[3] = sense * (u[1] * v[2] - u[2] * v[1])
+			ne = refs(A[br[1]], E); a[1] = a[2] = a[3] = 0
+			for (j = 1; j <= ne; j++) { refs(A[E[j]], er); refs(A[er[1]], cr)
+				vt = flag(A[E[j]]) ? cr[1] : cr[2]; refs(A[vt], vr); xyz(vr[1]); for (q = 1; q <= 3; q++) Q[j, q] = X[q] }
+			for (j = 1; j <= ne; j++) { jj = j % ne + 1
+				a[1] += Q[j, 2] * Q[jj, 3] - Q[j, 3] * Q[jj, 2]
+				a[2] += Q[j, 3] * Q[jj, 1] - Q[j, 1] * Q[jj, 3]
+				a[3] += Q[j, 1] * Q[jj, 2] - Q[j, 2] * Q[jj, 1] }
+			d = sense2 * (a[1] * N[1] + a[2] * N[2] + a[3] * N[3])
+			if (d <= 0) turned++
+			# the plane's flux of x / 3: its area vector, the face's way
+			vol += sense2 * (a[1] * Q[1, 1] + a[2] * Q[1, 2] + a[3] * Q[1, 3]) / 6
+		} }
+	print nf + 0, turned + 0, vol + 0
+}
+AWK
 for fmt in step iges; do
 	for c in hull.patch:2:7:6:OPEN nudged.patch:2:7:6:OPEN \
 	    unlinked.patch:2:8:8:OPEN cube.surf:6:12:8:CLOSED \
@@ -492,6 +535,15 @@ for fmt in step iges; do
 				within "iges shell of $7: the volume it encloses, 6" 1e-12 ;;
 			esac
 			shift 6
+		else
+			case $1 in cube*)
+				set -- $(awk -f "$T/stepshell.awk" "$T/sewn.step") "$@"
+				[ "$1 $2" = "6 0" ] && ok ||
+				    no "step shell of $4: faces, bounds turned '$1 $2', want '6 0'"
+				echo "$3" | awk '{ d = $1 - 6; print (d < 0 ? -d : d) }' >"$T/val"
+				within "step shell of $4: the volume it encloses, 6" 1e-12
+				shift 3 ;;
+			esac
 		fi
 		# each surface once: the shell's structure and its edges'
 		# curves are not read again
