@@ -10,6 +10,7 @@
  * frame's larger side.
  * Program layer (loftcad.h, on loftprog.h): a format.
  */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -22,9 +23,15 @@
  * 1/1600 of a pixel of a 640-pixel picture: below anything a screen or
  * printer shows, yet short text. */
 #define RESOLUTION 1e-6
-/* Decimals of a coordinate at most: the smallest subnormal, 4.9e-324,
- * at RESOLUTION of itself, needs 330. */
-#define MAX_DECIMALS 340
+/* Coordinates are written in fixed notation (123.4567) while the
+ * place of their last digit, 10^-decimals, lies between these powers of
+ * ten: a frame from about 1e-6 to 1e9 units, where that is short.  Beyond,
+ * they are written as a mantissa and a power of ten (1.234567e82) to the
+ * same place, so that a drawing of 1e80 or 1e-300 units is the picture
+ * of the same drawing in units of 1, every number's digits the same
+ * (issue 28); fixed notation would write 80 or 300 digits. */
+#define FIXED_MIN_DECIMALS (-3)
+#define FIXED_MAX_DECIMALS 12
 /* Marker radius of points and control points, in pixels. */
 #define KNOT_PX 2.5
 /* The halo of the background's colour under each letter, in pixels of
@@ -55,7 +62,9 @@ enum part { IN_LINES, AFTER_LINES, IN_LABELS };
 
 struct plot {
 	double px;              /* one pixel in the drawing's units */
-	int decimals;           /* of every coordinate */
+	int decimals;           /* of every coordinate: its last digit is */
+	                        /* at 10^-decimals (may be negative) */
+	int fixed;              /* decimals in the fixed range */
 	const char *ground;     /* the background's colour */
 	enum part part;         /* of the picture being written */
 	const struct loft_cad_item *it;        /* the record being written */
@@ -119,35 +128,90 @@ fixed_fast(char *buf, double x, int decimals)
 	return n;
 }
 
-/* x to p->decimals places, without trailing zeros or "-0". */
+/*
+ * x in fixed notation to p->decimals places (0 <= decimals <=
+ * FIXED_MAX_DECIMALS), without trailing zeros or "-0", into buf (at
+ * least 64 bytes); returns the length.
+ */
+static int
+fixed_text(char *buf, double x, int decimals)
+{
+	int n;
+
+	if ((n = fixed_fast(buf, x, decimals)) > 0)
+		return n;
+	n = snprintf(buf, 64, "%.*f", decimals, x);
+	if (n < 0 || n >= 64)           /* far from the origin: every digit */
+		return snprintf(buf, 64, "%.17g", x);
+	if (memchr(buf, '.', (size_t)n) != NULL) {
+		while (buf[n - 1] == '0')
+			n--;
+		if (buf[n - 1] == '.')
+			n--;
+	}
+	return n;
+}
+
+/* The significant digits a double has (more would be noise). */
+#define MAX_DIGITS 17
+
+/*
+ * x to the place 10^-decimals as a mantissa and a power of ten, printf's
+ * %e made short: no trailing zeros, no '+' or leading zeros in the
+ * exponent ("-1.5e82", "2e-300"), "0" where x rounds to 0 at that place.
+ * Every double, subnormals too, by printf's exact conversion: nothing is
+ * multiplied by a power of ten that could overflow.  Into buf (at least
+ * 64 bytes); returns the length.
+ */
+static int
+sci_text(char *buf, double x, int decimals)
+{
+	char tmp[64], *e;
+	int ex, sig, n;
+
+	if (x == 0)
+		return snprintf(buf, 64, "0");
+	snprintf(tmp, sizeof tmp, "%.*e", MAX_DIGITS - 1, x);
+	ex = atoi(strchr(tmp, 'e') + 1);        /* |x| = d.ddd 10^ex */
+	sig = ex + decimals + 1;                /* digits down to the place */
+	if (sig <= 0) {
+		/* 0, or one unit of the place where |x| is half of it */
+		if (sig < 0 || tmp[x < 0] < '5')
+			return snprintf(buf, 64, "0");
+		return snprintf(buf, 64, "%s1e%d", x < 0 ? "-" : "",
+		    -decimals);
+	}
+	snprintf(tmp, sizeof tmp, "%.*e", (sig < MAX_DIGITS ? sig :
+	    MAX_DIGITS) - 1, x);
+	e = strchr(tmp, 'e');
+	n = (int)(e - tmp);
+	if (memchr(tmp, '.', (size_t)n) != NULL) {
+		while (tmp[n - 1] == '0')
+			n--;
+		if (tmp[n - 1] == '.')
+			n--;
+	}
+	return snprintf(buf, 64, "%.*se%d", n, tmp, atoi(e + 1));
+}
+
+/* x to the place 10^-p->decimals, without trailing zeros or "-0": in
+ * fixed notation or as a mantissa and a power of ten (p->fixed). */
 static void
 put_fixed(struct loft_cad_doc *d, double x)
 {
 	const struct plot *p = d->state;
-	char buf[400];
+	char buf[64];
 	int n;
 
 	if (!isfinite(x)) {
 		d->out.bad = LOFT_EGEOM;
 		return;
 	}
-	if ((n = fixed_fast(buf, x, p->decimals)) > 0) {
-		loft_cad_put(d, buf, (size_t)n);
-		return;
-	}
-	n = snprintf(buf, sizeof buf, "%.*f", p->decimals, x);
-	if (n < 0 || n >= (int)sizeof buf) {
-		/* a tiny drawing far from the origin: every digit */
-		n = snprintf(buf, sizeof buf, "%.17g", x);
-	} else if (memchr(buf, '.', (size_t)n) != NULL) {
-		while (buf[n - 1] == '0')
-			n--;
-		if (buf[n - 1] == '.')
-			n--;
-	}
+	n = p->fixed ? fixed_text(buf, x, p->decimals) :
+	    sci_text(buf, x, p->decimals);
 	if (n == 2 && memcmp(buf, "-0", 2) == 0)
 		loft_cad_put(d, "0", 1);
-	else
+	else if (n > 0 && n < (int)sizeof buf)
 		loft_cad_put(d, buf, (size_t)n);
 }
 
@@ -196,9 +260,12 @@ plot_begin(struct loft_cad_doc *d)
 	if ((p = d->state = calloc(1, sizeof *p)) == NULL)
 		return LOFT_ENOMEM;
 	p->px = big / (double)picture;
-	/* a subnormal drawing: RESOLUTION * big underflows to 0 */
 	dec = ceil(-log10(RESOLUTION * big));
-	p->decimals = dec > 0 ? (int)fmin(dec, MAX_DECIMALS) : 0;
+	/* a drawing of less than 1e-302: RESOLUTION * big underflows */
+	if (!(RESOLUTION * big >= DBL_MIN))
+		dec = ceil(-log10(RESOLUTION) - log10(big));
+	p->fixed = dec <= FIXED_MAX_DECIMALS && dec >= FIXED_MIN_DECIMALS;
+	p->decimals = p->fixed && dec < 0 ? 0 : (int)dec;
 	p->ground = d->o.background ? d->o.background : "#fff";
 	loft_cad_puts(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
