@@ -1960,7 +1960,9 @@ void loft_hydro_free(struct loft_hydro *h);
  * loft_clip_integrate), exact to rounding on polynomial surfaces.
  * Returns 0, or LOFT_EGEOM (the waterline at or below the hull's lowest
  * point or above its top, or the hull open below it other than at the
- * centreplane of a half) with err saying which.
+ * centreplane of a half) with err saying which.  Where the hull is
+ * open, err->row is the index of the first surface with a side below the
+ * waterline that no other surface shares (-1: none found).
  */
 int loft_hydro_at(const struct loft_hydro *h, double wl,
     struct loft_hydrostatics *out, struct loft_error *err);
