@@ -923,13 +923,16 @@ awk -f tests/svgcmp.awk "$f" "$T/digit.svg" >/dev/null && ok ||
 # scale with every number times the scale: the comb's points divided by
 # it agree with the unit picture's within 0.05 mm, a tenth of a pixel of
 # its 640 (the digits written of a number of 1e160 are fewer; a comb scaled
-# through squares of 1e-320 or 1e320 was refused, or lost).
+# through squares of 1e-320 or 1e320 was refused, or lost).  Its numbers
+# are in units of its data-unit, where it has one (svgplot.c).
 combs() {
 	awk -v s="$1" '/^[0-9-]/ { print $1 * s, $2 * s; next } { print }' \
 	    man/figures/insole.knots | "$B/splinefit" | "$B/loftplot" -c |
-	    awk -v s="$1" '/class="comb"/ { sub(/.* d="/, ""); sub(/".*/, "")
+	    awk -v s="$1" 'BEGIN { u = 1 }
+		/data-unit="/ { u = $0; sub(/.*data-unit="/, "", u); sub(/".*/, "", u) }
+		/class="comb"/ { sub(/.* d="/, ""); sub(/".*/, "")
 		gsub(/[ML]/, " "); n = split($0, v, " ")
-		for (i = 1; i <= n; i++) printf "%.4f\n", v[i] / s }'
+		for (i = 1; i <= n; i++) printf "%.4f\n", v[i] * u / s }'
 }
 combs 1 >"$T/comb1"
 for sc in 1e160 1e-160; do

@@ -134,7 +134,11 @@ compare() {
 
 # compare_svg S FILE1 FILES: loftplot's picture (svgplot.c) of a drawing
 # scaled by S is the picture at scale 1 with every length times S, and
-# nothing else changed.  The invariant, exactly: the same elements,
+# nothing else changed.  A picture's lengths are in units of its svg
+# element's data-unit (1 without; svgplot.c names a power of ten
+# beyond frames of 1e-6 to 1e9 units, where browsers would show
+# nothing), so a length is its number times that unit; the unit is not
+# compared.  The invariant, exactly: the same elements,
 # attributes and texts in the same order (labels print the records'
 # own attribute values, text); the same numbers where they are not
 # lengths (the page's width and height in pixels, font size and halo in
@@ -142,11 +146,11 @@ compare() {
 # coordinates of paths, rects and label positions, stroke widths,
 # dashes, marker radii, a label's scale) within REL of the largest
 # length of the picture of S times its value at scale 1.  svgplot.c
-# writes every length to 1e-6 of the frame's larger side, so REL 1.5e-6
-# is one unit of the last place written, where a value at scale S and
-# at 1 round either side of a tie: a page that grows by a pixel, a
-# number in fixed notation losing digits, a comb or label placed
-# otherwise, all fail it.
+# writes every length to a place of 1e-7 to 1e-6 of the frame's larger
+# side, so REL 1.5e-6 of the largest length is 1.5 to 15 units of that
+# place: a value at scale S and at 1 may round either side of a tie,
+# while a page that grows by a tenth of a pixel, a length off by 1e-5 of
+# the frame, a lost exponent, a comb or label placed otherwise, all fail.
 compare_svg() {
 	awk -v s="$1" -v tol="${REL:-1.5e-6}" '
 	function isnum(x) { return x ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
@@ -181,7 +185,7 @@ compare_svg() {
 		else if (name == "stroke-opacity") put(0, v)
 		else put(-9, v)
 	}
-	FNR == 1 { f++ }
+	FNR == 1 { f++; U[f] = 1 }
 	{
 		line = $0
 		while (line != "") {
@@ -196,6 +200,9 @@ compare_svg() {
 			while (match(rest, /[a-zA-Z:-]+="[^"]*"/)) {
 				a = substr(rest, RSTART, RLENGTH); rest = substr(rest, RSTART + RLENGTH)
 				j = index(a, "=")
+				if (substr(a, 1, j - 1) == "data-unit") {       # lengths in it
+					U[f] = substr(a, j + 2, length(a) - j - 2); continue
+				}
 				attribute(name, labels, substr(a, 1, j - 1), substr(a, j + 2, length(a) - j - 2))
 			}
 			put(-9, rest)           # "/", "?" and what is not an attribute
@@ -205,7 +212,7 @@ compare_svg() {
 		if (N[1] != N[2]) { print N[1] " and " N[2] " words"; exit 1 }
 		for (k = 1; k <= N[1]; k++) {
 			if (P[1, k] != 1) continue
-			x = V[1, k] * s; if (x < 0) x = -x
+			x = V[1, k] * U[1] * s; if (x < 0) x = -x
 			if (x > M) M = x
 		}
 		for (k = 1; k <= N[1]; k++) {
@@ -215,7 +222,8 @@ compare_svg() {
 				continue
 			}
 			if (!isnum(b)) { print "line " LN[2, k] ": " b " is not a number"; exit 1 }
-			want = p == 1 ? a * s : a + 0; d = b - want; if (d < 0) d = -d
+			want = p == 1 ? a * U[1] * s : a + 0
+			d = (p == 1 ? b * U[2] : b) - want; if (d < 0) d = -d
 			if (!(d <= (p == 1 ? tol * M : 1e-12 * (want < 0 ? -want : want)))) {
 				printf "line %d: %s, want %.17g (%s times s^%d)\n", LN[2, k], b, want, a, p
 				exit 1
@@ -359,6 +367,18 @@ same_as "patchdrag -w 0,0,1e-320" \
     '"$B/patchdrag" -i 8 -u 0.5 -v 0.5 -b 1,2,3 -w 0,0,1 $T/hull.design'
 same_as "patchloft -S 0,0,1e-300" '"$B/patchloft" -S 0,0,1e-300 $T/hull.cubic' \
     '"$B/patchloft" -S 0,0,1 $T/hull.cubic'
+
+# loftplot's picture of a drawing whose frame is 100 to 1000 units (the
+# insole, 286 of them) is at every scale the same text as at scale 1,
+# but for the svg element's data-unit="1eK" at scale 1eK: svgplot.c
+# moves the point of the same digits of %e
+"$B/loftplot" -c -t -l id "$T/insole.cubic" >"$T/plot1"
+for S in $SCALES; do
+	scale "$S" <"$T/insole.cubic" | "$B/loftplot" -c -t -l id |
+	    sed "s/ data-unit=\"$S\"//" >"$T/plots"
+	cmp -s "$T/plot1" "$T/plots" && ok ||
+	    no "loftplot at scale $S: not the picture at 1: $(diff "$T/plot1" "$T/plots" | head -3 | cut -c1-200)"
+done
 
 # the refusals, for the record (each was "a clear refusal")
 sed 's/^/note: /' "$T/refusals"
