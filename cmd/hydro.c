@@ -53,10 +53,25 @@ field_value(const struct opts *o, const struct loft_hydrostatics *h, int f)
 	return v[f];
 }
 
+/* Report err of the hull of recs[0..n): at the record of the surface
+ * err->row names where the hull is open (loft_hydro_at), else at the
+ * first. */
+static void
+report(struct loft_run *run, const struct loft_record *recs, size_t n,
+    struct loft_error *err)
+{
+	const struct loft_record *rec = &recs[0];
+
+	if (err->row >= 0 && (size_t)err->row < n)
+		rec = &recs[err->row];
+	err->row = -1;
+	loft_report(run, rec, err);
+}
+
 /* One row per waterline. */
 static int
 table(struct loft_run *run, const struct loft_hydro *h,
-    const struct loft_record *rec)
+    const struct loft_record *recs, size_t nrec)
 {
 	const struct opts *o = run->ctx;
 	int all[F_AM + 1], n = o->nfield, k = 0;
@@ -75,7 +90,7 @@ table(struct loft_run *run, const struct loft_hydro *h,
 
 		err.line = 0;
 		if (loft_hydro_at(h, o->z[i], &hs, &err) != 0) {
-			loft_report(run, rec, &err);
+			report(run, recs, nrec, &err);
 			return 1;
 		}
 		for (int j = 0; j < n; j++)
@@ -89,7 +104,7 @@ table(struct loft_run *run, const struct loft_hydro *h,
 /* -s: per waterline, station x against immersed area. */
 static int
 sections(struct loft_run *run, const struct loft_hydro *h,
-    const struct loft_record *rec)
+    const struct loft_record *recs, size_t nrec)
 {
 	const struct opts *o = run->ctx;
 	char num[LOFT_NUMBUF];
@@ -115,7 +130,7 @@ sections(struct loft_run *run, const struct loft_hydro *h,
 			    (size_t)o->stations, a, &err);
 		}
 		if (rc != 0) {
-			loft_report(run, rec, &err);
+			report(run, recs, nrec, &err);
 			break;
 		}
 		loft_put_type(&run->w, "points");
@@ -154,8 +169,8 @@ hydro_design(struct loft_run *run, const struct loft_record *recs, size_t n)
 		free(s);
 		return 1;
 	}
-	rc = o->stations > 0 ? sections(run, &h, &recs[0]) :
-	    table(run, &h, &recs[0]);
+	rc = o->stations > 0 ? sections(run, &h, recs, n) :
+	    table(run, &h, recs, n);
 	loft_hydro_free(&h);
 	free(s);
 	return rc;

@@ -341,9 +341,19 @@ extreme_params(const double *cp, int k, double *t)
 {
 	double b0 = cp[k], b1 = cp[2 + k], b2 = cp[4 + k], b3 = cp[6 + k];
 	double a = b3 - 3 * b2 + 3 * b1 - b0, b = b2 - 2 * b1 + b0, c = b1 - b0;
-	double r[2], disc;
+	double r[2], disc, big = fmax(fabs(a), fmax(fabs(b), fabs(c)));
 	int n = 0, m = 0;
 
+	/* the roots are those of the coefficients over a power of two near
+	 * their largest (exact): b * b - a * c neither overflows for a
+	 * drawing of 1e160 nor underflows for one of 1e-160 (issue 28) */
+	if (big > 0 && isfinite(big)) {
+		int e = ilogb(big);
+
+		a = ldexp(a, -e);
+		b = ldexp(b, -e);
+		c = ldexp(c, -e);
+	}
 	if (a == 0) {
 		if (b != 0)
 			r[n++] = -c / (2 * b);
@@ -640,14 +650,10 @@ line_steps(const struct pic *pc, const struct loft_surface *sf, int dir,
 	if (pc->steps_set)
 		return pc->steps;
 	for (int k = 0; k <= LINE_PROBES; k++) {
-		double len = 0;
-
 		line_point(sf, dir, a, (double)k / LINE_PROBES, p, d2);
-		for (int q = 0; q < sf->dim; q++)
-			len += d2[q] * d2[q];
-		most = fmax(most, sqrt(len));
+		most = fmax(most, vnorm(d2, sf->dim));  /* of any units */
 	}
-	n = ceil(sqrt(LINE_MARGIN * most / (8 * tol)));
+	n = ceil(sqrt(LINE_MARGIN * (most / tol) / 8));
 	return !(n < MAX_LINE_STEPS) ? MAX_LINE_STEPS : n < 1 ? 1 : (long)n;
 }
 

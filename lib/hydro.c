@@ -305,6 +305,127 @@ in_range(const struct loft_hydro *h, double wl, struct loft_error *err)
 	return 0;
 }
 
+/* Points sampled along each side of a surface, to match it with the
+ * side of another: sides shared by neighbouring patches pass through
+ * the same points, ends first or last. */
+#define SIDE_PTS 5
+/* Two sides are one, a side lies on the centreplane or a point is
+ * above the waterline within this part of the hull's size: sides
+ * shared by patches that patchloft or patchjoin made agree to rounding,
+ * and a true gap is far wider. */
+#define SIDE_TOL 1e-7
+
+struct side {
+	double p[SIDE_PTS][3];
+	size_t surf;
+};
+
+static int
+by_middle_x(const void *a, const void *b)
+{
+	double x = ((const struct side *)a)->p[SIDE_PTS / 2][0],
+	    y = ((const struct side *)b)->p[SIDE_PTS / 2][0];
+
+	return (x > y) - (x < y);
+}
+
+/* Whether sides a and b pass through the same points, either way. */
+static int
+same_side(const struct side *a, const struct side *b, double tol)
+{
+	int fwd = 1, back = 1;
+
+	for (int j = 0; j < SIDE_PTS; j++)
+		for (int k = 0; k < 3; k++) {
+			fwd &= fabs(a->p[j][k] - b->p[j][k]) <= tol;
+			back &= fabs(a->p[j][k] - b->p[SIDE_PTS - 1 - j][k]) <=
+			    tol;
+		}
+	return fwd || back;
+}
+
+/* Whether side a matters to the hull's closing below wl: it reaches
+ * below the waterline, is not a point or a line of one point (a keel
+ * or stem where the side collapses), and for a half does not lie on
+ * the centreplane y = 0, where the mirror closes it. */
+static int
+side_matters(const struct loft_hydro *h, const struct side *a, double wl,
+    double tol)
+{
+	int below = 0, point = 1, centre = 1;
+
+	for (int j = 0; j < SIDE_PTS; j++) {
+		below |= a->p[j][2] < wl - tol;
+		centre &= fabs(a->p[j][1]) <= tol;
+		for (int k = 0; k < 3; k++)
+			point &= fabs(a->p[j][k] - a->p[0][k]) <= tol;
+	}
+	return below && !point && !(centre && !h->whole);
+}
+
+/*
+ * The first surface of h (in input order) with a side below the
+ * waterline wl that no other side shares: where an open hull is open,
+ * for its message to name.  -1 when none is found (or memory ran
+ * out).  The sides sorted by the x of their middles, so that each is
+ * matched against the few near it: n log n for n surfaces.
+ */
+static long
+open_surface(const struct loft_hydro *h, double wl)
+{
+	size_t n = 4 * h->ns;
+	struct side *sd = malloc(n * sizeof *sd);
+	double tol = SIDE_TOL * h->scale;
+	long first = -1;
+
+	if (sd == NULL)
+		return -1;
+	for (size_t i = 0; i < h->ns; i++)
+		for (int e = 0; e < 4; e++) {
+			struct side *a = &sd[4 * i + e];
+
+			a->surf = i;
+			for (int j = 0; j < SIDE_PTS; j++) {
+				double t = (double)j / (SIDE_PTS - 1),
+				    u = e < 2 ? e : t, v = e < 2 ? t : e - 2;
+
+				loft_surface_eval(&h->s[i], u, v, a->p[j], NULL,
+				    NULL);
+			}
+		}
+	qsort(sd, n, sizeof *sd, by_middle_x);
+	for (size_t k = 0; k < n; k++) {
+		int shared = 0;
+		double x = sd[k].p[SIDE_PTS / 2][0];
+
+		if ((first >= 0 && sd[k].surf >= (size_t)first) ||
+		    !side_matters(h, &sd[k], wl, tol))
+			continue;
+		for (size_t m = k; !shared && m-- > 0 &&
+		    sd[m].p[SIDE_PTS / 2][0] >= x - tol;)
+			shared = same_side(&sd[k], &sd[m], tol);
+		for (size_t m = k + 1; !shared && m < n &&
+		    sd[m].p[SIDE_PTS / 2][0] <= x + tol; m++)
+			shared = same_side(&sd[k], &sd[m], tol);
+		if (!shared)
+			first = (long)sd[k].surf;
+	}
+	free(sd);
+	return first;
+}
+
+/* The hull open below wl: the message, and in err->row the surface
+ * open_surface finds (-1: none). */
+static int
+open_hull(const struct loft_hydro *h, double wl, const char *where,
+    struct loft_error *err)
+{
+	loft_fail(err, LOFT_EGEOM, -1, "the hull is open below the waterline "
+	    "z = %g: %s", wl, where);
+	err->row = open_surface(h, wl);
+	return LOFT_EGEOM;
+}
+
 /* The waterline's checks, and the moments below it with the hull's
  * normals turned outward (*sg: -1 when they were turned); zn: the
  * waterline inside. */
@@ -336,17 +457,14 @@ below(const struct loft_hydro *h, double wl, double *m, double *zn,
 	for (int k = 0; k < 3; k++)
 		v[k] *= *sg;
 	if (!(fabs(v[0] - v[big]) <= CLOSE_TOL * w))
-		return loft_fail(err, LOFT_EGEOM, -1, "the hull is open below "
-		    "the waterline z = %g: its bottom does not close", wl);
+		return open_hull(h, wl, "its bottom does not close", err);
 	if (!(fabs(m[M_NX]) <= CLOSE_TOL * w && fabs(v[1] - v[0]) <=
 	    CLOSE_TOL * w))
-		return loft_fail(err, LOFT_EGEOM, -1, "the hull is open below "
-		    "the waterline z = %g: its ends do not close", wl);
+		return open_hull(h, wl, "its ends do not close", err);
 	if (!(fabs(v[2] - v[0]) <= CLOSE_TOL * w) || (h->whole &&
 	    !(fabs(m[M_NY]) <= CLOSE_TOL * w)))
-		return loft_fail(err, LOFT_EGEOM, -1, "the hull is open below "
-		    "the waterline z = %g: its sides do not close%s", wl,
-		    h->whole ? "" : " at the centreplane y = 0");
+		return open_hull(h, wl, h->whole ? "its sides do not close" :
+		    "its sides do not close at the centreplane y = 0", err);
 	return 0;
 }
 

@@ -29,6 +29,14 @@
  * of loftplot's 13. */
 #define GAP 0.15
 
+/* A label of the last resort moved down this many lines is in a crowd
+ * (thousands of records over one spot): walking down past every label
+ * of the crowd would make the placement quadratic in the labels.  It
+ * goes instead on a shelf below the picture, where labels stand left to
+ * right in rows: found in constant time, and the picture grows by a
+ * line per row of them, not per label (issue 28). */
+#define LAST_MOVES 32
+
 /* Any record, for lines_meet. */
 #define ANYREC (-2)
 
@@ -66,6 +74,10 @@ struct place {
 	double origin[2];       /* of the grids */
 	struct stack { double x, y, at; } *stack;       /* last_resort's */
 	size_t nstack;          /* a power of two */
+	double bottom;          /* the lowest of the frame and the labels */
+	double left, right;     /* the frame's sides */
+	double shelf_y, shelf_x;        /* the shelf's row and next spot */
+	int shelf;              /* a shelf is begun */
 	int spot[NSPOT][2], lead[NLEADSPOT][2];
 };
 
@@ -322,11 +334,12 @@ file_lines(struct place *p)
  * within far (twice as far), so that it reads as its own record's even
  * where the curves converge (a graded set at its heel); with strict 2,
  * no line at all within far, for a label in the open, tied to its
- * curve by a leader.  1: placed (box in *b).
+ * curve by a leader.  1: placed (box in *b).  *open is set where a
+ * spot meets no line and no label (one strict 0 would take).
  */
 static int
 try_spots(struct place *p, struct loft_label *l, int nanc,
-    const int (*spot)[2], int nspot, int strict, struct box *b)
+    const int (*spot)[2], int nspot, int strict, struct box *b, int *open)
 {
 	double font = p->font, near = font, far = 2 * near, sg[4];
 	struct box w;
@@ -341,6 +354,7 @@ try_spots(struct place *p, struct loft_label *l, int nanc,
 			widen(&w, b, GAP * font);
 			if (lines_meet(&p->o, &w, ANYREC))
 				continue;
+			*open = 1;      /* a spot strict 0 would take */
 			if (strict == 0)
 				return 1;
 			widen(&w, b, far);
@@ -433,6 +447,39 @@ stack_slot(const struct place *p, double x, double y)
 	return h;
 }
 
+/*
+ * Label i on the shelf: the row of labels below everything placed and
+ * drawn, each a gap right of the one before it; a new row, a line
+ * below the lowest box, where the row is full.  It overlaps no label:
+ * every other lies above the row or left of its next spot.
+ */
+static void
+on_shelf(struct place *p, size_t i)
+{
+	struct loft_label *l = &p->lb[i];
+	struct box *b = &p->placed[i];
+	int full = !p->shelf || (p->shelf_x > p->left &&
+	    p->shelf_x + l->width > p->right);
+
+	/* (a label placed near its curve since the row began may stand in
+	 * its way: then a new row, below it too) */
+	for (int row = 0; row < 2; row++) {
+		if (full || row > 0) {
+			p->shelf = 1;
+			p->shelf_x = p->left;
+			p->shelf_y = p->bottom - 0.6 * p->font;
+		}
+		l->at[0] = 0;
+		l->at[1] = p->shelf_y;
+		set_box(p, l, b);
+		l->at[0] = p->shelf_x - b->lo[0];       /* the box from shelf_x */
+		set_box(p, l, b);
+		if (first_label(p, b) == (size_t)-1)
+			break;
+	}
+	p->shelf_x = b->hi[0] + p->font / 2;
+}
+
 /* Where all spots are taken: label i at its rightmost point, moved down
  * a line at a time while it overlaps a label placed before it, below
  * the first (in input order) it overlaps.  A pile of records with one
@@ -444,12 +491,17 @@ last_resort(struct place *p, size_t i)
 {
 	struct loft_label *l = &p->lb[i];
 	size_t j, h = stack_slot(p, l->anchor[0], l->anchor[1]);
+	int moves = 0;
 
 	l->at[0] = l->anchor[0];
 	l->at[1] = p->stack[h].at == p->stack[h].at ? p->stack[h].at :
 	    l->anchor[1];
 	set_box(p, l, &p->placed[i]);
 	while ((j = first_label(p, &p->placed[i])) != (size_t)-1) {
+		if (++moves > LAST_MOVES) {
+			on_shelf(p, i);
+			return;
+		}
 		l->at[1] = p->placed[j].lo[1] - 0.6 * p->font;
 		set_box(p, l, &p->placed[i]);
 	}
@@ -502,17 +554,22 @@ place_one(struct place *p, size_t i)
 {
 	struct loft_label *l = &p->lb[i];
 	struct box *b = &p->placed[i];
-	int rc;
+	int rc, open = 0, lead = 0;
 
 	if (!l->centred && (rc = own_lines(p, l->rec)) != 0)
 		return rc;
-	if (l->centred || !(try_spots(p, l, l->nanc, p->spot, NSPOT, 1, b) ||
-	    try_on_curve(p, l, b) ||
-	    (l->leader = try_spots(p, l, 1, p->lead, NLEADSPOT, 2, b)) ||
-	    try_spots(p, l, l->nanc, p->spot, NSPOT, 0, b)))
+	/* (where (1) found no spot clear of lines and labels, (4), which
+	 * tries the same spots for that alone, finds none either: in a
+	 * crowd, a third of the looks saved) */
+	if (l->centred || !(try_spots(p, l, l->nanc, p->spot, NSPOT, 1, b,
+	    &open) || try_on_curve(p, l, b) ||
+	    (l->leader = try_spots(p, l, 1, p->lead, NLEADSPOT, 2, b,
+	    &lead)) || (open && try_spots(p, l, l->nanc, p->spot, NSPOT, 0,
+	    b, &open))))
 		last_resort(p, i);
 	memcpy(l->lo, b->lo, sizeof l->lo);
 	memcpy(l->hi, b->hi, sizeof l->hi);
+	p->bottom = fmin(p->bottom, b->lo[1]);
 	if ((rc = loft_grid_add(&p->g, b->lo, b->hi, i)) == 0 && l->leader) {
 		double sg[4];
 
@@ -540,7 +597,8 @@ setup(struct place *p, const double *seg, const int *segrec, size_t nseg,
 	    sizeof *p->placed)) == NULL ||
 	    (p->byrec = malloc((nseg > 0 ? nseg : 1) *
 	    sizeof *p->byrec)) == NULL ||
-	    loft_grid_init(&p->g, cw, p->font, origin, p->n) != 0 ||
+	    /* (a label's box covers about 2 by 2 cells: 4 entries each) */
+	    loft_grid_init(&p->g, cw, p->font, origin, 4 * p->n) != 0 ||
 	    loft_grid_init(&p->o.g, p->font, p->font, origin, nseg) != 0 ||
 	    file_lines(p) != 0)
 		return LOFT_ENOMEM;
@@ -558,8 +616,66 @@ setup(struct place *p, const double *seg, const int *segrec, size_t nseg,
 	return 0;
 }
 
+/* Every length of the placement times 2^e: exact, so a placement in
+ * units scaled by a power of two is the placement scaled (the labels'
+ * own numbers, the frame lo..hi and the lines seg). */
+static void
+scale_all(struct loft_label *lb, size_t n, double *seg, size_t nseg,
+    double *lo, double *hi, int e)
+{
+	for (size_t i = 0; i < n; i++) {
+		struct loft_label *l = &lb[i];
+
+		l->width = ldexp(l->width, e);
+		for (int k = 0; k < 2; k++) {
+			l->anchor[k] = ldexp(l->anchor[k], e);
+			l->at[k] = ldexp(l->at[k], e);
+			l->lo[k] = ldexp(l->lo[k], e);
+			l->hi[k] = ldexp(l->hi[k], e);
+			for (int a = 0; a < l->nanc && a < LOFT_LABEL_ANCHORS;
+			    a++)
+				l->anc[a][k] = ldexp(l->anc[a][k], e);
+		}
+	}
+	for (size_t k = 0; k < 4 * nseg; k++)
+		seg[k] = ldexp(seg[k], e);
+	for (int k = 0; k < 2; k++) {
+		lo[k] = ldexp(lo[k], e);
+		hi[k] = ldexp(hi[k], e);
+	}
+}
+
+static int place_labels(struct loft_label *lb, size_t n, const double *seg,
+    const int *segrec, size_t nseg, double font, double *lo, double *hi);
+
+/*
+ * The placement is made in units of a power of two near the font's
+ * height (issue 28): in the drawing's own units, a drawing of 1e160
+ * squares its lengths past the largest double when it asks whether two
+ * segments cross (grid.c), and one of 1e-160 to 0; in these, the same
+ * question of any drawing is asked of the same numbers, and a power of
+ * two scales them exactly both ways.
+ */
 int
 loft_place_labels(struct loft_label *lb, size_t n, const double *seg,
+    const int *segrec, size_t nseg, double font, double *lo, double *hi)
+{
+	double *own = malloc((nseg > 0 ? 4 * nseg : 1) * sizeof *own);
+	int e = font > 0 && isfinite(font) ? ilogb(font) : 0, rc;
+
+	if (own == NULL)
+		return LOFT_ENOMEM;
+	if (nseg > 0)
+		memcpy(own, seg, 4 * nseg * sizeof *own);
+	scale_all(lb, n, own, nseg, lo, hi, -e);
+	rc = place_labels(lb, n, own, segrec, nseg, ldexp(font, -e), lo, hi);
+	scale_all(lb, n, own, 0, lo, hi, e);
+	free(own);
+	return rc;
+}
+
+static int
+place_labels(struct loft_label *lb, size_t n, const double *seg,
     const int *segrec, size_t nseg, double font, double *lo, double *hi)
 {
 	struct place *p = calloc(1, sizeof *p);
@@ -571,6 +687,9 @@ loft_place_labels(struct loft_label *lb, size_t n, const double *seg,
 	p->lb = lb;
 	p->n = n;
 	p->font = font;
+	p->bottom = lo[1];
+	p->left = lo[0];
+	p->right = hi[0];
 	for (size_t i = 0; i < n; i++) {
 		lb[i].at[0] = lb[i].anchor[0];
 		lb[i].at[1] = lb[i].anchor[1];

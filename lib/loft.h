@@ -1506,7 +1506,10 @@ struct loft_label {
  * that crosses no earlier label or leader (and that later labels keep
  * clear of); (4) the spots of (1) without their condition; (5) its
  * rightmost point, moved down a line at a time below the first label
- * placed before it that it overlaps.  A centred label (a patch's)
+ * placed before it that it overlaps (after LAST_MOVES of labels.c
+ * moves, on rows below everything instead: linear time in a crowd).
+ * All in units of a power of two near font: a drawing of any units.
+ * A centred label (a patch's)
  * stays at its anchor, moved as in (5) only.  The lines are the nseg
  * segments seg (4 numbers each), segrec[k] the record of segment k.
  * The labels' boxes are added to the box lo..hi, whose lo is the
@@ -1957,7 +1960,9 @@ void loft_hydro_free(struct loft_hydro *h);
  * loft_clip_integrate), exact to rounding on polynomial surfaces.
  * Returns 0, or LOFT_EGEOM (the waterline at or below the hull's lowest
  * point or above its top, or the hull open below it other than at the
- * centreplane of a half) with err saying which.
+ * centreplane of a half) with err saying which.  Where the hull is
+ * open, err->row is the index of the first surface with a side below the
+ * waterline that no other surface shares (-1: none found).
  */
 int loft_hydro_at(const struct loft_hydro *h, double wl,
     struct loft_hydrostatics *out, struct loft_error *err);

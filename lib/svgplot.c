@@ -10,6 +10,7 @@
  * frame's larger side.
  * Program layer (loftcad.h, on loftprog.h): a format.
  */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -22,9 +23,18 @@
  * 1/1600 of a pixel of a 640-pixel picture: below anything a screen or
  * printer shows, yet short text. */
 #define RESOLUTION 1e-6
-/* Decimals of a coordinate at most: the smallest subnormal, 4.9e-324,
- * at RESOLUTION of itself, needs 330. */
-#define MAX_DECIMALS 340
+/* Coordinates are written in the drawing's units while the place of
+ * their last digit, 10^-decimals, lies between these powers of ten: a
+ * frame from about 1e-6 to 1e9 units.  Beyond, fixed notation would
+ * write 80 or 300 digits, and a browser, whose coordinates are single
+ * precision (to about 1e38), would show nothing: they are written in
+ * units of 10^unit, a power of ten that makes the frame's larger side
+ * 100 to 1000 of them, named by the svg element's data-unit attribute;
+ * the digits are printf's %e of each number, the point moved, so that
+ * the picture of a drawing of 1e80 or 1e-300 units is the picture of the
+ * same drawing in units of 1, exactly (issue 28). */
+#define FIXED_MIN_DECIMALS (-3)
+#define FIXED_MAX_DECIMALS 12
 /* Marker radius of points and control points, in pixels. */
 #define KNOT_PX 2.5
 /* The halo of the background's colour under each letter, in pixels of
@@ -55,7 +65,10 @@ enum part { IN_LINES, AFTER_LINES, IN_LABELS };
 
 struct plot {
 	double px;              /* one pixel in the drawing's units */
-	int decimals;           /* of every coordinate */
+	int decimals;           /* of every coordinate: its last digit is */
+	                        /* at 10^-decimals (may be negative) */
+	int fixed;              /* decimals in the fixed range */
+	int unit;               /* otherwise lengths are in 10^unit */
 	const char *ground;     /* the background's colour */
 	enum part part;         /* of the picture being written */
 	const struct loft_cad_item *it;        /* the record being written */
@@ -119,35 +132,147 @@ fixed_fast(char *buf, double x, int decimals)
 	return n;
 }
 
-/* x to p->decimals places, without trailing zeros or "-0". */
+/*
+ * x in fixed notation to p->decimals places (0 <= decimals <=
+ * FIXED_MAX_DECIMALS), without trailing zeros or "-0", into buf (at
+ * least 64 bytes); returns the length.
+ */
+static int
+fixed_text(char *buf, double x, int decimals)
+{
+	int n;
+
+	if ((n = fixed_fast(buf, x, decimals)) > 0)
+		return n;
+	n = snprintf(buf, 64, "%.*f", decimals, x);
+	if (n < 0 || n >= 64)           /* far from the origin: every digit */
+		return snprintf(buf, 64, "%.17g", x);
+	if (memchr(buf, '.', (size_t)n) != NULL) {
+		while (buf[n - 1] == '0')
+			n--;
+		if (buf[n - 1] == '.')
+			n--;
+	}
+	return n;
+}
+
+/* The significant digits a double has (more would be noise). */
+#define MAX_DIGITS 17
+
+/*
+ * x to the place 10^-decimals as a mantissa and a power of ten, printf's
+ * %e made short: no trailing zeros, no '+' or leading zeros in the
+ * exponent ("-1.5e82", "2e-300"), "0" where x rounds to 0 at that place.
+ * Every double, subnormals too, by printf's exact conversion: nothing is
+ * multiplied by a power of ten that could overflow.  Into buf (at least
+ * 64 bytes); returns the length.
+ */
+static int
+sci_text(char *buf, double x, int decimals)
+{
+	char tmp[64], *e;
+	int ex, sig, n;
+
+	if (x == 0)
+		return snprintf(buf, 64, "0");
+	snprintf(tmp, sizeof tmp, "%.*e", MAX_DIGITS - 1, x);
+	ex = atoi(strchr(tmp, 'e') + 1);        /* |x| = d.ddd 10^ex */
+	sig = ex + decimals + 1;                /* digits down to the place */
+	if (sig <= 0) {
+		/* 0, or one unit of the place where |x| is half of it */
+		if (sig < 0 || tmp[x < 0] < '5')
+			return snprintf(buf, 64, "0");
+		return snprintf(buf, 64, "%s1e%d", x < 0 ? "-" : "",
+		    -decimals);
+	}
+	snprintf(tmp, sizeof tmp, "%.*e", (sig < MAX_DIGITS ? sig :
+	    MAX_DIGITS) - 1, x);
+	e = strchr(tmp, 'e');
+	n = (int)(e - tmp);
+	if (memchr(tmp, '.', (size_t)n) != NULL) {
+		while (tmp[n - 1] == '0')
+			n--;
+		if (tmp[n - 1] == '.')
+			n--;
+	}
+	return snprintf(buf, 64, "%.*se%d", n, tmp, atoi(e + 1));
+}
+
+/* Where a number in units of 10^unit is written in fixed notation: its
+ * leading digit from 10^-7 to 10^15 (the frame is 100 to 1000 units; a
+ * number far beyond is a drawing far from the origin). */
+#define SHIFT_MIN (-7)
+#define SHIFT_MAX 15
+
+/*
+ * The number sci, as sci_text or printf's %e writes it ("-1.25e82",
+ * "1e-300", "0"), divided by 10^unit, exactly: its point moved, in fixed
+ * notation where its exponent is from SHIFT_MIN to SHIFT_MAX, else with
+ * the exponent less unit.  Into buf (at least 64 bytes); the length.
+ */
+static int
+shift_text(char *buf, const char *sci, int unit)
+{
+	char dig[MAX_DIGITS + 2];
+	const char *e = strchr(sci, 'e');
+	int nd = 0, n = 0, ex, neg = sci[0] == '-';
+
+	if (e == NULL)                          /* "0" */
+		return snprintf(buf, 64, "%s", sci);
+	ex = atoi(e + 1) - unit;
+	for (const char *c = sci + neg; c < e && nd <= MAX_DIGITS; c++)
+		if (*c >= '0' && *c <= '9')
+			dig[nd++] = *c;
+	while (nd > 1 && dig[nd - 1] == '0')
+		nd--;
+	if (ex < SHIFT_MIN || ex > SHIFT_MAX)
+		return snprintf(buf, 64, "%s%c%s%.*se%d", neg ? "-" : "",
+		    dig[0], nd > 1 ? "." : "", nd - 1, dig + 1, ex);
+	if (neg)
+		buf[n++] = '-';
+	if (ex < 0) {                           /* 0.000ddd */
+		buf[n++] = '0';
+		buf[n++] = '.';
+		for (int i = 0; i < -ex - 1; i++)
+			buf[n++] = '0';
+		for (int i = 0; i < nd; i++)
+			buf[n++] = dig[i];
+	} else {                                /* ddd[.ddd] */
+		for (int i = 0; i <= ex; i++)
+			buf[n++] = i < nd ? dig[i] : '0';
+		if (nd > ex + 1) {
+			buf[n++] = '.';
+			for (int i = ex + 1; i < nd; i++)
+				buf[n++] = dig[i];
+		}
+	}
+	buf[n] = '\0';
+	return n;
+}
+
+/* A length x to the place 10^-p->decimals, without trailing zeros or
+ * "-0": in fixed notation in the drawing's units (p->fixed), or in
+ * units of 10^p->unit (shift_text). */
 static void
 put_fixed(struct loft_cad_doc *d, double x)
 {
 	const struct plot *p = d->state;
-	char buf[400];
+	char buf[64], sci[64];
 	int n;
 
 	if (!isfinite(x)) {
 		d->out.bad = LOFT_EGEOM;
 		return;
 	}
-	if ((n = fixed_fast(buf, x, p->decimals)) > 0) {
-		loft_cad_put(d, buf, (size_t)n);
-		return;
-	}
-	n = snprintf(buf, sizeof buf, "%.*f", p->decimals, x);
-	if (n < 0 || n >= (int)sizeof buf) {
-		/* a tiny drawing far from the origin: every digit */
-		n = snprintf(buf, sizeof buf, "%.17g", x);
-	} else if (memchr(buf, '.', (size_t)n) != NULL) {
-		while (buf[n - 1] == '0')
-			n--;
-		if (buf[n - 1] == '.')
-			n--;
+	if (p->fixed) {
+		n = fixed_text(buf, x, p->decimals);
+	} else {
+		sci_text(sci, x, p->decimals);
+		n = shift_text(buf, sci, p->unit);
 	}
 	if (n == 2 && memcmp(buf, "-0", 2) == 0)
 		loft_cad_put(d, "0", 1);
-	else
+	else if (n > 0 && n < (int)sizeof buf)
 		loft_cad_put(d, buf, (size_t)n);
 }
 
@@ -196,9 +321,14 @@ plot_begin(struct loft_cad_doc *d)
 	if ((p = d->state = calloc(1, sizeof *p)) == NULL)
 		return LOFT_ENOMEM;
 	p->px = big / (double)picture;
-	/* a subnormal drawing: RESOLUTION * big underflows to 0 */
 	dec = ceil(-log10(RESOLUTION * big));
-	p->decimals = dec > 0 ? (int)fmin(dec, MAX_DECIMALS) : 0;
+	/* a drawing of less than 1e-302: RESOLUTION * big underflows */
+	if (!(RESOLUTION * big >= DBL_MIN))
+		dec = ceil(-log10(RESOLUTION) - log10(big));
+	p->fixed = dec <= FIXED_MAX_DECIMALS && dec >= FIXED_MIN_DECIMALS;
+	p->decimals = p->fixed && dec < 0 ? 0 : (int)dec;
+	/* the frame's larger side 100 to 1000 units of 10^unit */
+	p->unit = p->fixed ? 0 : (int)floor(log10(big)) - 2;
 	p->ground = d->o.background ? d->o.background : "#fff";
 	loft_cad_puts(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
 	    "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
@@ -206,6 +336,10 @@ plot_begin(struct loft_cad_doc *d)
 	put_printf(d, "%.1f", (double)picture * (vb[2] / big));
 	loft_cad_puts(d, "\" height=\"");
 	put_printf(d, "%.1f", (double)picture * (vb[3] / big));
+	if (!p->fixed) {
+		loft_cad_puts(d, "\" data-unit=\"1e");
+		put_printf(d, "%.0f", (double)p->unit);
+	}
 	loft_cad_puts(d, "\" viewBox=\"");
 	for (int k = 0; k < 4; k++) {
 		loft_cad_puts(d, k ? " " : "");
@@ -438,7 +572,16 @@ plot_label(struct loft_cad_doc *d, const double *at, double size, int middle,
 	if (middle)
 		loft_cad_puts(d, " text-anchor=\"middle\" dy=\"0.35em\"");
 	put_point(d, " transform=\"translate(", at);
-	put_printf(d, ") scale(%.6g)\">", size / LOFT_PLOT_FONT_PX);
+	if (p->fixed) {
+		put_printf(d, ") scale(%.6g)\">", size / LOFT_PLOT_FONT_PX);
+	} else {                /* 6 digits, in units of 10^unit */
+		char sci[64], buf[64];
+
+		snprintf(sci, sizeof sci, "%.5e", size / LOFT_PLOT_FONT_PX);
+		loft_cad_puts(d, ") scale(");
+		loft_cad_put(d, buf, (size_t)shift_text(buf, sci, p->unit));
+		loft_cad_puts(d, ")\">");
+	}
 	for (const char *s = text; *s; s++)
 		switch (*s) {
 		case '&': loft_cad_puts(d, "&amp;"); break;

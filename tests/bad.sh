@@ -2203,6 +2203,23 @@ hydro_cases() {
 	OPTS="-z -1"
 	alone_in "a waterline below the hull" "waterline z = -1 is at or below the hull's lowest point"
 	opts
+	# an open hull (issue 28): the aft half's stern station does not
+	# close (breadth 1/8 at x = -2, no transom); named at that record's
+	# line, after the fore half, not at the input's first line; nothing
+	# written, at each waterline and with -s
+	{ hydro_good 2; echo; hydro_wigley -2 0.5,1,1; } >"$T/in"
+	at=$(($(hydro_good 2 | wc -l) + 2))
+	for o in "-z 0" "-z -0.1" "-z -0.1 -s 5"; do
+		OPTS=$o
+		z=${o#-z }
+		tc="an open hull ($o)"
+		run "$T/in"
+		status 1
+		message_at "$T/in" $at
+		says "the hull is open below the waterline z = ${z%% *}: its ends do not close"
+		[ ! -s "$T/out" ] && ok || no "$what: output"
+	done
+	opts
 }
 
 # ---- offsets --------------------------------------------------------------------

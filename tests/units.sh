@@ -43,6 +43,10 @@ scale_dxf() {
 sc() {
 	awk -v v="$1" -v s="$S" 'BEGIN { printf "%.17g", v * s }'
 }
+# sc2 V: V times the scale squared (loftplot -C: a length times a length)
+sc2() {
+	awk -v v="$1" -v s="$S" 'BEGIN { printf "%.17g", v * s * s }'
+}
 
 # compare MODE S FILE1 FILES: FILES is FILE1 scaled by S, by MODE:
 #   rows       numbers of rows power 1; header words equal, but for the
@@ -51,8 +55,9 @@ sc() {
 #   cols:P...  column i of rows power P_i (measure's fields)
 #   obj        OBJ: v lines power 1, the rest equal
 #   stl        ASCII STL: vertex lines power 1, facet normals 0
-#   svg        every number power 1 but width= and height= (0)
+#   svg        loftplot's picture, by compare_svg
 compare() {
+	[ "$1" = svg ] && { compare_svg "$2" "$3" "$4"; return; }
 	awk -v mode="$1" -v s="$2" '
 	function isnum(x) { return x ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
 	function pw(x, p) {
@@ -127,6 +132,106 @@ compare() {
 	}' tol="${REL:-1e-9}" "$3" "$4"
 }
 
+# compare_svg S FILE1 FILES: loftplot's picture (svgplot.c) of a drawing
+# scaled by S is the picture at scale 1 with every length times S, and
+# nothing else changed.  A picture's lengths are in units of its svg
+# element's data-unit (1 without; svgplot.c names a power of ten
+# beyond frames of 1e-6 to 1e9 units, where browsers would show
+# nothing), so a length is its number times that unit; the unit is not
+# compared.  The invariant, exactly: the same elements,
+# attributes and texts in the same order (labels print the records'
+# own attribute values, text); the same numbers where they are not
+# lengths (the page's width and height in pixels, font size and halo in
+# font pixels, opacities, arc flags); and each length (viewBox,
+# coordinates of paths, rects and label positions, stroke widths,
+# dashes, marker radii, a label's scale) within REL of the largest
+# length of the picture of S times its value at scale 1.  svgplot.c
+# writes every length to a place of 1e-7 to 1e-6 of the frame's larger
+# side, so REL 1.5e-6 of the largest length is 1.5 to 15 units of that
+# place: a value at scale S and at 1 may round either side of a tie,
+# while a page that grows by a tenth of a pixel, a length off by 1e-5 of
+# the frame, a lost exponent, a comb or label placed otherwise, all fail.
+compare_svg() {
+	awk -v s="$1" -v tol="${REL:-1.5e-6}" '
+	function isnum(x) { return x ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }
+	# token: its power (0, 1; -9 text) and its text
+	function put(p, v) { n = ++N[f]; P[f, n] = p; V[f, n] = v; LN[f, n] = FNR }
+	# path data: numbers power 1 but the 3rd to 5th of each 7 of an arc
+	function pathdata(d,   c, k, i, m, t) {
+		gsub(/[A-DF-Za-df-z]/, " & ", d)
+		m = split(d, t, /[ ,]+/); c = ""; k = 0
+		for (i = 1; i <= m; i++) {
+			if (t[i] == "") continue
+			if (!isnum(t[i])) { c = t[i]; k = 0; put(-9, t[i]); continue }
+			put((c == "a" || c == "A") && (k % 7 >= 2 && k % 7 <= 4) ? 0 : 1, t[i])
+			k++
+		}
+	}
+	# numbers of a list (viewBox, dasharray, transform), power p
+	function numbers(v, p,   i, m, t) {
+		gsub(/[(),]/, " & ", v)
+		m = split(v, t, / +/)
+		for (i = 1; i <= m; i++)
+			if (t[i] != "") put(isnum(t[i]) ? p : -9, t[i])
+	}
+	function attribute(tag, labels, name, v) {
+		put(-9, name)
+		if (tag == "svg" && (name == "width" || name == "height")) put(0, v)
+		else if (tag == "svg" && name == "viewBox") numbers(v, 1)
+		else if (tag == "g" && (name == "font-size" || name == "stroke-width")) put(labels ? 0 : 1, v)
+		else if (tag == "path" && name == "d") pathdata(v)
+		else if (name == "stroke-width" || name == "stroke-dasharray" || name == "transform") numbers(v, 1)
+		else if (tag == "rect" && name ~ /^(x|y|width|height)$/) put(1, v)
+		else if (name == "stroke-opacity") put(0, v)
+		else put(-9, v)
+	}
+	FNR == 1 { f++; U[f] = 1 }
+	{
+		line = $0
+		while (line != "") {
+			if (substr(line, 1, 1) != "<") {        # text
+				i = index(line, "<"); if (i == 0) i = length(line) + 1
+				put(-9, substr(line, 1, i - 1)); line = substr(line, i); continue
+			}
+			i = index(line, ">"); tag = substr(line, 2, i - 2); line = substr(line, i + 1)
+			match(tag, /^[^ ]*/); name = substr(tag, 1, RLENGTH); put(-9, "<" name)
+			rest = substr(tag, RLENGTH + 1)
+			labels = rest ~ /font-family=/
+			while (match(rest, /[a-zA-Z:-]+="[^"]*"/)) {
+				a = substr(rest, RSTART, RLENGTH); rest = substr(rest, RSTART + RLENGTH)
+				j = index(a, "=")
+				if (substr(a, 1, j - 1) == "data-unit") {       # lengths in it
+					U[f] = substr(a, j + 2, length(a) - j - 2); continue
+				}
+				attribute(name, labels, substr(a, 1, j - 1), substr(a, j + 2, length(a) - j - 2))
+			}
+			put(-9, rest)           # "/", "?" and what is not an attribute
+		}
+	}
+	END {
+		if (N[1] != N[2]) { print N[1] " and " N[2] " words"; exit 1 }
+		for (k = 1; k <= N[1]; k++) {
+			if (P[1, k] != 1) continue
+			x = V[1, k] * U[1] * s; if (x < 0) x = -x
+			if (x > M) M = x
+		}
+		for (k = 1; k <= N[1]; k++) {
+			a = V[1, k]; b = V[2, k]; p = P[1, k]
+			if (p == -9) {
+				if (a != b) { print "line " LN[2, k] ": " b " but " a; exit 1 }
+				continue
+			}
+			if (!isnum(b)) { print "line " LN[2, k] ": " b " is not a number"; exit 1 }
+			want = p == 1 ? a * U[1] * s : a + 0
+			d = (p == 1 ? b * U[2] : b) - want; if (d < 0) d = -d
+			if (!(d <= (p == 1 ? tol * M : 1e-12 * (want < 0 ? -want : want)))) {
+				printf "line %d: %s, want %.17g (%s times s^%d)\n", LN[2, k], b, want, a, p
+				exit 1
+			}
+		}
+	}' "$2" "$3"
+}
+
 # sweep NAME MODE PREP CMD: CMD (a shell command using $S and $IN) run
 # on PREP's output (PREP: "scale", "scale_csv" or "scale_dxf" of the file
 # $SRC) at every scale, against scale 1
@@ -173,6 +278,7 @@ awk 'BEGIN { print "points closed=1"; for (i = 0; i < 16; i++)
 # two patches that share a side, unjoined
 "$B/patchnew" -i 1 -c 0,0,0 -c 1,0,0.2 -c 1,1,0 -c 0,1,0.3 |
     "$B/patchsplit" -u 0.5 | sed 's/ [uv][01]=[0-9]*//g' >"$T/two.design"
+"$B/grade" -r -2:2 -l 1 -w 0.5 $K | "$B/splinefit" >"$T/graded.cubic"
 # issue 28's curve: extrema 2 at scale 1, 0 at 1e80; and in space
 printf 'bezier\n0 0\n1 2\n3 0\n4 1\n' >"$T/b.bezier"
 printf 'bezier\n0 0 0\n1 2 1\n3 0 -1\n4 1 2\n' >"$T/b3.bezier"
@@ -204,11 +310,11 @@ sweep "measure, plane" "cols:$PP" scale '"$B/measure" -f $PF $IN'
 sweep "measure, area" "cols:2" scale '"$B/measure" -f area $IN'
 sweep "patchdrag, a curve" rows scale '"$B/patchdrag" -u 3.5 -b $(sc 1),$(sc 2) $IN'
 sweep "tocad -f obj, a curve" obj scale '"$B/tocad" -f obj $IN'
-# loftplot (helper h27's in issue 28) is left out: its picture at 1e+-80
-# and beyond is not yet the picture at 1 (the page's height moves, and
-# numbers are written in fixed notation); UNITS_LOFTPLOT=1 runs it
-[ -n "$UNITS_LOFTPLOT" ] &&
-    REL=1e-5 sweep "loftplot" svg scale '"$B/loftplot" $IN'
+# loftplot: the picture is the same at every scale (compare_svg)
+sweep "loftplot" svg scale '"$B/loftplot" $IN'
+sweep "loftplot -c -t" svg scale '"$B/loftplot" -c -t $IN'
+sweep "loftplot -C" svg scale '"$B/loftplot" -C $(sc2 300) -n 8 $IN'
+sweep "loftplot -v iso -l" svg scale '"$B/loftplot" -v iso -l id -B white $IN'
 SRC=$T/circle.cubic
 # (not minradius_u: on a circle where the radius is least is rounding)
 sweep "measure, a circle" "cols:1:1:1:1:0:0:-1" scale \
@@ -228,11 +334,16 @@ sweep "patchdrag -w" rows scale '"$B/patchdrag" -i 8 -u 0.5 -v 0.5 -b $(sc 0.1),
 sweep "patchcut" rows scale '"$B/patchcut" -x $(sc 3) -z $(sc 0.5) $IN'
 sweep "bezapprox, a surface" rows scale '"$B/patchsplit" -u 0.5 $IN | "$B/bezapprox" -n 3,3'
 sweep "tocad -f obj" obj scale '"$B/tocad" -f obj $IN'
+sweep "loftplot, a surface" svg scale '"$B/loftplot" -v iso -b -g 6 -l id $IN'
 sweep "tocad -f stl" stl scale '"$B/tocad" -f stl $IN'
 SRC=$T/two.design
 sweep "patchjoin" rows scale '"$B/patchjoin" -P 2 -S 3 $IN'
 SRC=/dev/null
 sweep "patchnew" rows scale '"$B/patchnew" -c $(sc 0),$(sc 0),0 -c $(sc 1),0,$(sc 0.2) -c $(sc 1),$(sc 1),0 -c 0,$(sc 1),$(sc 0.3)'
+SRC=$T/graded.cubic
+sweep "loftplot -l, a graded set" svg scale '"$B/loftplot" -l size -c $IN'
+SRC=$K
+sweep "loftplot -m, points" svg scale '"$B/loftplot" -m $IN'
 SRC=$T/pts.csv
 sweep "fromcad, CSV" rows scale_csv '"$B/fromcad" $IN'
 SRC=$T/c.dxf
@@ -256,6 +367,18 @@ same_as "patchdrag -w 0,0,1e-320" \
     '"$B/patchdrag" -i 8 -u 0.5 -v 0.5 -b 1,2,3 -w 0,0,1 $T/hull.design'
 same_as "patchloft -S 0,0,1e-300" '"$B/patchloft" -S 0,0,1e-300 $T/hull.cubic' \
     '"$B/patchloft" -S 0,0,1 $T/hull.cubic'
+
+# loftplot's picture of a drawing whose frame is 100 to 1000 units (the
+# insole, 286 of them) is at every scale the same text as at scale 1,
+# but for the svg element's data-unit="1eK" at scale 1eK: svgplot.c
+# moves the point of the same digits of %e
+"$B/loftplot" -c -t -l id "$T/insole.cubic" >"$T/plot1"
+for S in $SCALES; do
+	scale "$S" <"$T/insole.cubic" | "$B/loftplot" -c -t -l id |
+	    sed "s/ data-unit=\"$S\"//" >"$T/plots"
+	cmp -s "$T/plot1" "$T/plots" && ok ||
+	    no "loftplot at scale $S: not the picture at 1: $(diff "$T/plot1" "$T/plots" | head -3 | cut -c1-200)"
+done
 
 # the refusals, for the record (each was "a clear refusal")
 sed 's/^/note: /' "$T/refusals"

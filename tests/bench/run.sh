@@ -37,6 +37,14 @@ done
 # time once), and a bezier-surface of 64 x 64 control points
 awk 'BEGIN { for (i = 0; i < 20000; i++) printf "points id=%d\n%d %d\n%d %d\n\n",
     i, i % 140, int(i / 140), i % 140 + 1, int(i / 140) }' >$W/labels.pts
+# issue 28: 10^4 and 10^3 labelled segments placed at random on a
+# square (one seed), a crowd on loftplot's 640 pixels either way
+for n in 1000 10000; do
+	awk -v n=$n 'BEGIN { srand(28); side = sqrt(n); for (i = 0; i < n; i++) {
+	    x = rand() * side; y = rand() * side
+	    printf "points id=%d\n%.4f %.4f\n%.4f %.4f\n\n", i, x, y, x + rand(), y + rand() } }' \
+	    >$W/labels$n.pts
+done
 awk 'BEGIN { print "bezier-surface m=63 n=63"; for (i = 0; i < 64; i++)
     for (j = 0; j < 64; j++) printf "%d %d %.6f\n", i, j, sin(i / 9) * cos(j / 7) }' \
     >$W/surface63.bez
@@ -127,6 +135,8 @@ while [ "$rep" -le "$REPS" ]; do
 	case_ fromcad-path "$B/fromcad $W/path1000000.svg"
 	case_ fromcad-path-small "$B/fromcad $W/path100000.svg"
 	case_ loftplot-labels "$B/loftplot -l id $W/labels.pts"
+	case_ labels-1e4 "$B/loftplot -l id $W/labels10000.pts"
+	case_ labels-1e3 "$B/loftplot -l id $W/labels1000.pts"
 	case_ surface-63 "$B/sample -n 100 $W/surface63.bez"
 	case_ outline-fit "$B/splinefit $W/outline.knots"
 	case_ space "$B/splinefit $W/space.knots | $B/sample -n 20"
@@ -180,3 +190,6 @@ $W/timeit -r $OUT unroll/stl-plate
 echo "bench: hydro's table of 20 waterlines of a 1000-patch hull (under" \
     "1 s), over patchcut's 20 waterlines of it"
 $W/timeit -r $OUT hydro/patchcut-wl
+echo "bench: loftplot -l of 10^4 labelled segments at random over 10^3 of" \
+    "them (linear: about 10)"
+$W/timeit -r $OUT labels-1e4/labels-1e3
