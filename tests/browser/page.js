@@ -196,6 +196,46 @@ async function surfaces(browser) {
   return requests;
 }
 
+// the insole at 1e12 units: loftplot writes its lengths in units of the
+// svg's data-unit there, and the page's knots must sit on the curve and
+// move with the mouse in the plane's own units
+async function scaled(browser) {
+  const knots = rows(fs.readFileSync("man/figures/insole.knots", "utf8"))
+    .map(r => r.map(x => x * 1e12).join(" ")).join("\n") + "\n";
+  const kf = path.join(dir, "big.knots"), html = path.join(dir, "big.html");
+  fs.writeFileSync(kf, knots);
+  const fitted = sh("splinefit", [], knots);
+  const u = /<svg[^>]* data-unit="([^"]*)"/.exec(sh("loftplot", ["-c"], fitted));
+  const unit = u ? Number(u[1]) : 1;
+  check(unit !== 1, `loftplot names a data-unit at 1e12: ${unit}`);
+  fs.writeFileSync(html, execFileSync(path.join(B, "loftplot"),
+    ["-i", "-c", "-K", kf], { input: fitted }));
+  const page = await open(browser, html, []);
+  const K = 7, want = rows(knots);
+  const at = await page.evaluate(k => {
+    const r = document.querySelector(`[data-k="0"][data-i="${k}"]`)
+      .getBoundingClientRect(), m = document.getElementById("draw")
+      .getScreenCTM();
+    return { x: r.x + r.width / 2, y: r.y + r.height / 2, a: m.a, e: m.e,
+      f: m.f, step: window.loftPage.S.step };
+  }, K);
+  // the knot drawn where the plane point (x, y) is: the screen point
+  // (e + a x / unit, f - a y / unit), within a pixel
+  const sx = at.e + at.a * want[K][0] / unit, sy = at.f - at.a * want[K][1] / unit;
+  check(Math.abs(at.x - sx) <= 1 && Math.abs(at.y - sy) <= 1,
+    `at 1e12 the knot is drawn at (${at.x}, ${at.y}), want (${sx}, ${sy})`);
+  const dx = 40, dy = -30;
+  await drag(page, at.x, at.y, dx, dy);
+  const got = rows(await page.evaluate(() => window.loftPage.saved().knots));
+  const ex = want[K][0] + dx * unit / at.a, ey = want[K][1] - dy * unit / at.a;
+  check(got.length === want.length &&
+    Math.abs(got[K][0] - ex) <= at.step / 2 + 1e-9 * Math.abs(ex) &&
+    Math.abs(got[K][1] - ey) <= at.step / 2 + 1e-9 * Math.abs(ey),
+    `at 1e12 the dragged knot is at (${got[K]}), want (${ex}, ${ey}) ` +
+    `within ${at.step / 2}`);
+  await page.close();
+}
+
 async function shot(browser) {
   const html = path.join(dir, "shot.html");
   fs.writeFileSync(html, execFileSync(path.join(B, "loftplot"),
@@ -250,6 +290,7 @@ async function bench(browser) {
       await shot(browser);
     } else {
       const req = (await curves(browser)).concat(await surfaces(browser));
+      await scaled(browser);
       const far = req.filter(u => !/^(file|data|blob):/.test(u) ||
         (/^file:/.test(u) && !/\.html$/.test(u)));
       check(req.length >= 2 && far.length === 0,
