@@ -898,6 +898,10 @@ least_speed(const double *seg, size_t nseg, int dim, double *kmax)
 	return least;
 }
 
+/* The relative rounding of the root finder's least radius: a curve
+ * whose least radius is the chord spline's to this is not sharper. */
+#define FAIR_RADIUS_EPS 1e-9
+
 /* The best curve found so far and what it is judged against. */
 struct best {
 	double *x;              /* its log intervals and factors */
@@ -907,23 +911,62 @@ struct best {
 	                         * -1 not yet known */
 	double *cseg;           /* room for the chord spline's segments */
 	int found;              /* whether x is a descent's, not the chord's */
+	int have_cseg;          /* whether cseg holds it (0 where it fails) */
+	double rchord;          /* its least radius, exactly: -1 unknown */
 };
+
+/* The chord spline into b->cseg, once; 0, or 1 where it fails. */
+static int
+chord_spline(struct fair *f, struct best *b, double *h)
+{
+	struct loft_error err;
+
+	if (b->have_cseg == 0) {
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = vdist(f->p + ((s + 1) % f->n) * f->dim,
+			    f->p + s * f->dim, f->dim);
+		b->have_cseg = loft__cspline_h(f->o, f->p, f->n, f->dim, h,
+		    NULL, b->cseg, f->work, &err) != 0 ? -1 : 1;
+	}
+	return b->have_cseg < 0;
+}
+
+/* The least radius of the nseg segments seg by measure.c's root finder
+ * (exact, where the samples of max_curvature and least_speed may step
+ * over a cusp); 0 at a cusp or a retracted handle. */
+static double
+least_radius(const struct fair *f, const double *seg)
+{
+	struct loft_curve c;
+	struct loft_error err;
+	double r, u;
+
+	loft_curve_cubic(&c, seg, f->nseg, f->dim, f->o->closed);
+	return loft_curve_min_radius(&c, &r, &u, &err) == 0 && r > 0 ? r : 0;
+}
+
+/* Whether the curve in f->seg bends more sharply anywhere than the
+ * chord spline does (the guarantee), by the exact least radius of
+ * both: a descent may slip a cusp between the points of the sampled
+ * caps, whose energy is then unbounded. */
+static int
+sharper(struct fair *f, struct best *b, double *h)
+{
+	if (chord_spline(f, b, h) != 0)
+		return 0;
+	if (b->rchord < 0)
+		b->rchord = least_radius(f, b->cseg);
+	return least_radius(f, f->seg) < b->rchord * (1 - FAIR_RADIUS_EPS);
+}
 
 /* Whether the chord spline crosses itself (plane curves; once); -1 out
  * of memory. */
 static int
 chord_loops(struct fair *f, struct best *b, double *h)
 {
-	struct loft_error err;
-
-	if (b->chord_loops < 0) {
-		for (size_t s = 0; s < f->nseg; s++)
-			h[s] = vdist(f->p + ((s + 1) % f->n) * f->dim,
-			    f->p + s * f->dim, f->dim);
-		b->chord_loops = loft__cspline_h(f->o, f->p, f->n, f->dim, h,
-		    NULL, b->cseg, f->work, &err) != 0 ? 0 :
+	if (b->chord_loops < 0)
+		b->chord_loops = chord_spline(f, b, h) != 0 ? 0 :
 		    loft_fit_crosses(b->cseg, f->nseg, f->o->closed);
-	}
 	return b->chord_loops;
 }
 
@@ -947,7 +990,7 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 	if (!(e < b->score) || !(e <= b->echord * (f->scalefree ? len : 1)) ||
 	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap) ||
 	    (f->scalefree && (!(least_speed(f->seg, f->nseg, f->dim, &kmax) >=
-	    FAIR_CUSP) || !(kmax <= f->kcap))))
+	    FAIR_CUSP) || !(kmax <= f->kcap))) || sharper(f, b, h))
 		return 0;
 	loops = f->dim == 2 ? loft_fit_crosses(f->seg, f->nseg, f->o->closed) :
 	    0;
@@ -1018,7 +1061,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	size_t nseg = o->closed ? n : n - 1, m = 2 * n;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, NULL, 0, 0, NULL,
 	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
-	struct best b = { NULL, 0, 0, -1, NULL, 0 };
+	struct best b = { NULL, 0, 0, -1, NULL, 0, 0, -1 };
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc, more = 0;
 
