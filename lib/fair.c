@@ -755,7 +755,8 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 #define FAIR_SETTLED_FINE 1e-6
 
 /* The starts of a thorough search, in order (see start_intervals). */
-enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, STARTS };
+enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, START_SPIRAL,
+    STARTS };
 
 /* The unit chord of segment s into u; returns its length. */
 static double
@@ -789,6 +790,377 @@ estimate_tangent(const struct fair *f, size_t i, double *t)
 	vaxpy(t, w0, u1, f->dim);
 	if (!(vunit(t, f->dim) > 0))
 		vcopy(t, u1, f->dim);
+}
+
+/* ---- a direction estimate in Spiro's manner ------------------------- */
+
+/* Records of at most this many knots get the start below: its Newton
+ * step solves a dense system, n^3, which at 64 knots costs about what a
+ * thorough descent does. */
+#define SPIRAL_MAXKNOTS 64
+
+/* Newton's iterations at most, and the residual that ends them: the
+ * curvature jump over the knots' mean curvature 1 / chord, and the
+ * chord equation of a spiral, both to near rounding. */
+#define SPIRAL_ITER 40
+#define SPIRAL_TOL 1e-11
+
+/* No end angle of a spiral beyond this from its chord: past it the
+ * spiral curls, and no cubic of tame tangents follows it. */
+#define SPIRAL_MAXANGLE 2.5
+
+/*
+ * The Euler spiral (curvature linear in arc length) that leaves its
+ * chord at angle psi0 and meets it at psi1 (radians, from the chord,
+ * anticlockwise): its end curvatures times its length into k[0], k[1],
+ * its length over its chord into *len.  Along it, the angle from the
+ * chord is psi0 + (psi1 - psi0) t + d/2 (t^2 - t), t the arc length
+ * over the length, and d, its change of curvature times the length, is
+ * the root of the chord's condition: the integral of the sine of that
+ * angle is 0.  Newton from d = 6 (psi0 + psi1), the small-angle root.
+ * 0, or -1 where it does not converge.
+ */
+static int
+spiral(double psi0, double psi1, double *k, double *len)
+{
+	double d = 6 * (psi0 + psi1), turn = psi1 - psi0;
+
+	if (!(fabs(psi0) < SPIRAL_MAXANGLE && fabs(psi1) < SPIRAL_MAXANGLE))
+		return -1;
+	for (int it = 0; it < SPIRAL_ITER; it++) {
+		double g = 0, dg = 0, c = 0;
+
+		for (int part = 0; part < 4; part++)
+			for (int j = 0; j < GAUSS; j++) {
+				double t = (part + gauss_u[j]) / 4, w = gauss_w[j] / 4;
+				double a = psi0 + turn * t + d / 2 * (t * t - t);
+
+				g += w * sin(a);
+				c += w * cos(a);
+				dg += w * cos(a) * (t * t - t) / 2;
+			}
+		if (fabs(g) < SPIRAL_TOL) {
+			k[0] = turn - d / 2;
+			k[1] = turn + d / 2;
+			*len = 1 / c;
+			return c > 0 ? 0 : -1;
+		}
+		if (!(dg < 0))
+			return -1;
+		d -= fmax(-2, fmin(2, g / dg));
+	}
+	return -1;
+}
+
+/* The state of the angle solve: knot i's tangent angle is ref[i] +
+ * x[i]; segment s leaves knot s at psi0[s] from its chord, of angle
+ * phi[s] and length c[s], and meets knot s + 1 at psi1[s]. */
+struct angles {
+	size_t n;
+	double *ref, *phi, *c, *x, *k0, *k1, *len, *r, *jac, *dx, *xn;
+	double scale;           /* the mean chord */
+};
+
+/* a - b wrapped into (-pi, pi]. */
+static double
+angle_diff(double a, double b)
+{
+	double d = a - b;
+
+	return atan2(sin(d), cos(d));
+}
+
+/* The spirals of x and the curvature jumps at the knots, times the mean
+ * chord, into a->r; the largest jump, or HUGE_VAL where a spiral fails. */
+static double
+residuals(struct angles *a, const double *x)
+{
+	size_t n = a->n;
+	double big = 0, k[2], len;
+
+	for (size_t s = 0; s < n; s++) {
+		size_t t = (s + 1) % n;
+		double p0 = angle_diff(a->ref[s], a->phi[s]) + x[s];
+		double p1 = angle_diff(a->ref[t], a->phi[s]) + x[t];
+
+		if (spiral(p0, p1, k, &len) != 0)
+			return HUGE_VAL;
+		a->len[s] = len * a->c[s];
+		a->k0[s] = k[0] / a->len[s];
+		a->k1[s] = k[1] / a->len[s];
+	}
+	for (size_t i = 0; i < n; i++) {
+		a->r[i] = (a->k1[(i + n - 1) % n] - a->k0[i]) * a->scale;
+		big = fmax(big, fabs(a->r[i]));
+	}
+	return big;
+}
+
+/* Gaussian elimination with partial pivoting of the n x n system m z =
+ * r (m row-major, spoiled; r becomes z); 0, or -1 when singular. */
+static int
+dense_solve(double *m, double *r, size_t n)
+{
+	for (size_t c = 0; c < n; c++) {
+		size_t p = c;
+
+		for (size_t i = c + 1; i < n; i++)
+			if (fabs(m[i * n + c]) > fabs(m[p * n + c]))
+				p = i;
+		if (!(fabs(m[p * n + c]) > 1e-300))
+			return -1;
+		for (size_t j = 0; j < n; j++) {
+			double t = m[c * n + j];
+
+			m[c * n + j] = m[p * n + j];
+			m[p * n + j] = t;
+		}
+		{
+			double t = r[c];
+
+			r[c] = r[p];
+			r[p] = t;
+		}
+		for (size_t i = c + 1; i < n; i++) {
+			double q = m[i * n + c] / m[c * n + c];
+
+			for (size_t j = c; j < n; j++)
+				m[i * n + j] -= q * m[c * n + j];
+			r[i] -= q * r[c];
+		}
+	}
+	for (size_t i = n; i-- > 0;) {
+		for (size_t j = i + 1; j < n; j++)
+			r[i] -= m[i * n + j] * r[j];
+		r[i] /= m[i * n + i];
+	}
+	return 0;
+}
+
+/* A Newton step of the knots' angles: the Jacobian by differences of
+ * 1e-7 radian, the step capped at 0.3 radian and halved until the
+ * largest jump falls.  Returns the new largest jump, HUGE_VAL where
+ * none falls. */
+static double
+newton_step(struct angles *a, double big)
+{
+	size_t n = a->n;
+	double step = 1e-7, most = 0, t = 1;
+
+	for (size_t j = 0; j < n; j++) {
+		memcpy(a->xn, a->x, n * sizeof *a->xn);
+		a->xn[j] += step;
+		if (!(residuals(a, a->xn) < HUGE_VAL))
+			return HUGE_VAL;
+		for (size_t i = 0; i < n; i++)
+			a->jac[i * n + j] = a->r[i];
+	}
+	residuals(a, a->x);
+	for (size_t i = 0; i < n; i++) {
+		for (size_t j = 0; j < n; j++)
+			a->jac[i * n + j] = (a->jac[i * n + j] - a->r[i]) / step;
+		a->dx[i] = -a->r[i];
+	}
+	if (dense_solve(a->jac, a->dx, n) != 0)
+		return HUGE_VAL;
+	for (size_t i = 0; i < n; i++)
+		most = fmax(most, fabs(a->dx[i]));
+	if (most > 0.3)
+		t = 0.3 / most;
+	for (int half = 0; half < 12; half++, t /= 2) {
+		double e;
+
+		for (size_t i = 0; i < n; i++)
+			a->xn[i] = a->x[i] + t * a->dx[i];
+		if ((e = residuals(a, a->xn)) < big) {
+			memcpy(a->x, a->xn, n * sizeof *a->x);
+			return e;
+		}
+	}
+	return HUGE_VAL;
+}
+
+/* The samples of the scan for g2_magnitudes' roots, over tangent
+ * magnitudes from 0 to FAIR_MAXMAG chords: fine enough to part the
+ * roots of the quartic a cubic's two ends make. */
+#define SPIRAL_SCAN 256
+
+/* g2_magnitudes' second condition at a, b its first's: b into *b. */
+static double
+g2_rest(double a, double c, double psi0, double psi1, double k0, double k1,
+    double s01, double *b)
+{
+	*b = -(k0 * a * a + 6 * c * sin(psi0)) / (2 * s01);
+	return k1 * *b * *b - 6 * c * sin(psi1) + 2 * a * s01;
+}
+
+/*
+ * The tangent magnitudes a, b of the cubic from 0 to the chord (c, 0)
+ * that leaves at angle psi0 with curvature k0 and arrives at psi1 with
+ * k1 (de Boor, Hollig and Sabin's G2 Hermite conditions): with the
+ * second derivative 6 C - 4 a T0 - 2 b T1 at the start and -6 C + 2 a
+ * T0 + 4 b T1 at the end, k0 a^2 + 6 c sin psi0 + 2 b sin(psi1 - psi0)
+ * = 0 and k1 b^2 - 6 c sin psi1 + 2 a sin(psi1 - psi0) = 0.  The first
+ * gives b of a; the roots of the second in a are scanned for and
+ * bisected, and of those with both magnitudes positive and tame, the
+ * one nearest a = b = len (the spiral's length) is taken.  0, or -1
+ * where there is none.
+ */
+static int
+g2_magnitudes(double c, double psi0, double psi1, double k0, double k1,
+    double len, double *a, double *b)
+{
+	double s01 = sin(psi1 - psi0), top = FAIR_MAXMAG * c, best = HUGE_VAL;
+	double a0 = 0, b0, g0;
+
+	if (!(fabs(s01) > 1e-6))
+		return -1;
+	g0 = g2_rest(a0, c, psi0, psi1, k0, k1, s01, &b0);
+	for (int j = 1; j <= SPIRAL_SCAN; j++) {
+		double a1 = top * j / SPIRAL_SCAN, b1, g1, lo = a0, hi = a1, gl = g0;
+
+		g1 = g2_rest(a1, c, psi0, psi1, k0, k1, s01, &b1);
+		if ((g0 < 0) != (g1 < 0)) {
+			for (int it = 0; it < 60; it++) {
+				double mid = (lo + hi) / 2, bm, gm;
+
+				gm = g2_rest(mid, c, psi0, psi1, k0, k1, s01, &bm);
+				if ((gm < 0) == (gl < 0))
+					lo = mid, gl = gm;
+				else
+					hi = mid;
+			}
+			g2_rest(lo, c, psi0, psi1, k0, k1, s01, &b0);
+			if (lo > 0 && b0 > 0 && b0 <= top && fabs(lo - len) +
+			    fabs(b0 - len) < best) {
+				best = fabs(lo - len) + fabs(b0 - len);
+				*a = lo;
+				*b = b0;
+			}
+		}
+		a0 = a1, g0 = g1;
+	}
+	return best < HUGE_VAL ? 0 : -1;
+}
+
+/*
+ * Spiro's manner (Levien 2009: a curve of clothoid pieces, G2 at the
+ * knots, by Newton on the knots' tangent angles): the angles at which
+ * the Euler spirals through consecutive knots meet with equal
+ * curvature, Newton from estimate_tangent's, into a (its room in *mem,
+ * for the caller to free).  Closed plane records of at most
+ * SPIRAL_MAXKNOTS knots.  0, 1 where it is not to be had (*mem NULL),
+ * -1 out of memory.
+ */
+static int
+spiral_solve(const struct fair *f, struct angles *a, double **mem)
+{
+	size_t n = f->n;
+	double big;
+
+	*mem = NULL;
+	if (f->dim != 2 || !f->o->closed || n < 3 || n > SPIRAL_MAXKNOTS)
+		return 1;
+	if ((*mem = malloc((10 * n + n * n) * sizeof **mem)) == NULL)
+		return -1;
+	a->n = n;
+	a->scale = 0;
+	a->ref = *mem, a->phi = a->ref + n, a->c = a->phi + n;
+	a->x = a->c + n, a->k0 = a->x + n, a->k1 = a->k0 + n;
+	a->len = a->k1 + n, a->r = a->len + n, a->dx = a->r + n;
+	a->xn = a->dx + n, a->jac = a->xn + n;
+	for (size_t i = 0; i < n; i++) {
+		double u[2], t[2];
+
+		a->c[i] = unit_chord(f, i, u);
+		a->phi[i] = atan2(u[1], u[0]);
+		a->scale += a->c[i] / n;
+		estimate_tangent(f, i, t);
+		a->ref[i] = atan2(t[1], t[0]);
+		a->x[i] = 0;
+	}
+	big = residuals(a, a->x);
+	for (int it = 0; it < SPIRAL_ITER && big < HUGE_VAL &&
+	    big > SPIRAL_TOL; it++)
+		big = newton_step(a, big);
+	if (big <= SPIRAL_TOL)
+		return 0;
+	free(*mem);
+	*mem = NULL;
+	return 1;
+}
+
+/*
+ * The spirals of spiral_solve as cubics, each with its spiral's end
+ * tangents and curvatures (g2_magnitudes), into f->seg: a G2 curve
+ * that is the circle, to the error of a cubic arc, where the knots are
+ * on one.  0, 1 where it is not to be had, -1 out of memory.
+ */
+static int
+spiral_start(struct fair *f)
+{
+	struct angles a;
+	double *mem;
+	int rc = spiral_solve(f, &a, &mem);
+
+	for (size_t s = 0; s < f->n && rc == 0; s++) {
+		size_t t = (s + 1) % f->n;
+		double *q = f->seg + 8 * s, th0 = a.ref[s] + a.x[s];
+		double th1 = a.ref[t] + a.x[t], ma = 0, mb = 0;
+
+		if (g2_magnitudes(a.c[s], angle_diff(th0, a.phi[s]),
+		    angle_diff(th1, a.phi[s]), a.k0[s], a.k1[s], a.len[s],
+		    &ma, &mb) != 0)
+			rc = 1;
+		memcpy(q, f->p + 2 * s, 2 * sizeof *q);
+		memcpy(q + 2, f->p + 2 * t, 2 * sizeof *q);
+		q[4] = ma * cos(th0), q[5] = ma * sin(th0);
+		q[6] = mb * cos(th1), q[7] = mb * sin(th1);
+	}
+	free(mem);
+	return rc;
+}
+
+/*
+ * The start of the spirals' angles and lengths in the descent's terms,
+ * into x: each interval its spiral's length, and each diagonal factor
+ * the one that makes row i of cspline.c's system hold, along the
+ * tangent, for knot derivatives the spirals' unit tangents (the
+ * least-squares fit of the one number to the row's two).  0, 1 where
+ * it is not to be had, -1 out of memory.
+ */
+static int
+spiral_intervals(const struct fair *f, double *x)
+{
+	struct angles a;
+	double *mem;
+	size_t n = f->n;
+	int rc = spiral_solve(f, &a, &mem);
+
+	for (size_t i = 0; i < n && rc == 0; i++)
+		x[i] = log(a.len[i]);
+	for (size_t i = 0; i < n && rc == 0; i++) {
+		size_t hm = (i + n - 1) % n, j = (i + 1) % n;
+		double h0 = a.len[hm], h1 = a.len[i], d = 0, q;
+
+		for (int k = 0; k < 2; k++) {
+			double tk = k == 0 ? cos(a.ref[i] + a.x[i]) :
+			    sin(a.ref[i] + a.x[i]);
+			double tm = k == 0 ? cos(a.ref[hm] + a.x[hm]) :
+			    sin(a.ref[hm] + a.x[hm]);
+			double tp = k == 0 ? cos(a.ref[j] + a.x[j]) :
+			    sin(a.ref[j] + a.x[j]);
+			double rhs = 3 * (h1 * (f->p[2 * i + k] - f->p[2 * hm +
+			    k]) / h0 + h0 * (f->p[2 * j + k] - f->p[2 * i + k]) /
+			    h1);
+
+			d += tk * (rhs - h1 * tm - h0 * tp);
+		}
+		q = d / (h0 + h1) - 1;
+		x[n + i] = log(fmax(q, 1e-3));
+	}
+	free(mem);
+	return rc;
 }
 
 /* Manning's solution's intervals: each segment's mean tangent magnitude
@@ -839,6 +1211,8 @@ start_intervals(const struct fair *f, int which, double *x)
 		x[f->nseg + i] = 0;
 	if (which == START_MANNING)
 		return manning_intervals(f, x);
+	if (which == START_SPIRAL)
+		return spiral_intervals(f, x);
 	for (size_t s = 0; s < f->nseg; s++) {
 		double u[LOFT_MAXDIM], t0[LOFT_MAXDIM], t1[LOFT_MAXDIM];
 		double w = unit_chord(f, s, u), a;
@@ -910,7 +1284,9 @@ struct best {
 	int chord_loops;        /* whether the chord spline crosses itself:
 	                         * -1 not yet known */
 	double *cseg;           /* room for the chord spline's segments */
-	int found;              /* whether x is a descent's, not the chord's */
+	int found;              /* 0 the chord spline's, 1 x a descent's, 2
+	                         * sseg the spiral start's */
+	double *sseg;           /* room for the spiral start's segments */
 	int have_cseg;          /* whether cseg holds it (0 where it fails) */
 	double rchord;          /* its least radius, exactly: -1 unknown */
 };
@@ -1001,8 +1377,11 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 	if (loops == 2)
 		return 0;
 	b->score = e;
-	b->found = 1;
-	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	b->found = x != NULL ? 1 : 2;
+	if (x != NULL)
+		memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	else
+		memcpy(b->sseg, f->seg, 4 * f->dim * f->nseg * sizeof *f->seg);
 	return 0;
 }
 
@@ -1014,10 +1393,17 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 static int
 thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 {
-	double e, len, k;
-	int steps = 0;
+	double e, len, k, slow, kcap, slow0 = f->slow;
+	int steps = 0, rc;
 	struct loft_error err;
 
+	if (chord_spline(f, b, h) == 0 && b->rchord < 0)
+		b->rchord = least_radius(f, b->cseg);
+	/* the chord spline's largest curvature, exactly where the samples
+	 * of its cap missed its peak */
+	if (b->rchord > 0)
+		f->kcap = fmax(f->kcap, (1 + 1e-9) / b->rchord);
+	kcap = f->kcap;
 	f->steps = FAIR_CONVERGE;
 	f->settled = FAIR_SETTLED_FINE;
 	f->scalefree = 1;
@@ -1036,7 +1422,7 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 	f->e0 = b->score;
 	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
 	for (int which = 0; which < STARTS; which++) {
-		int rc = start_intervals(f, which, x);
+		rc = start_intervals(f, which, x);
 
 		if (rc < 0)
 			return -1;
@@ -1047,10 +1433,21 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 		    f->seg, f->work, &err) != 0)
 			continue;
+		/* a start past the caps descends under its own, and is judged
+		 * by the chord spline's */
+		curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &k,
+		    &slow, &len);
+		f->kcap = fmax(kcap, k * (1 + 1e-9));
+		f->slow = fmin(slow0, slow * (1 - 1e-9));
 		steps += descend(f, x, h, v, &e);
+		f->kcap = kcap;
+		f->slow = slow0;
 		if (e < HUGE_VAL && judge(f, b, x, h) != 0)
 			return -1;
 	}
+	rc = spiral_start(f);
+	if (rc < 0 || (rc == 0 && judge(f, b, NULL, h) != 0))
+		return -1;
 	return steps;
 }
 
@@ -1061,7 +1458,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	size_t nseg = o->closed ? n : n - 1, m = 2 * n;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, NULL, 0, 0, NULL,
 	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
-	struct best b = { NULL, 0, 0, -1, NULL, 0, 0, -1 };
+	struct best b = { NULL, 0, 0, -1, NULL, 0, NULL, 0, -1 };
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc, more = 0;
 
@@ -1073,7 +1470,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
 	mem = calloc((7 + 2 * dim) * n + 2 * dim * n + 4 * dim * n + 2 * m +
-	    n + m * (2 * FAIR_MEMORY + 3) + 4 * dim * n + 2 * n / sizeof *mem +
+	    n + m * (2 * FAIR_MEMORY + 3) + 8 * dim * n + 2 * n / sizeof *mem +
 	    1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -1085,7 +1482,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	h = b.x + m;
 	v = h + n;
 	b.cseg = v + m * (2 * FAIR_MEMORY + 3);
-	f.parts = (unsigned char *)(b.cseg + 4 * dim * n);
+	b.sseg = b.cseg + 4 * dim * n;
+	f.parts = (unsigned char *)(b.sseg + 4 * dim * n);
 	f.check = f.parts + n;
 	start_intervals(&f, START_CHORD, x);
 	for (size_t s = 0; s < nseg; s++)
@@ -1116,7 +1514,14 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 			}
 			info->iterations += more;
 		}
-		/* the best: the chord spline unless a descent beat it */
+		/* the best: the chord spline unless a descent or the spiral
+		 * start beat it */
+		if (b.found == 2) {
+			memcpy(seg, b.sseg, 4 * dim * nseg * sizeof *seg);
+			info->converged = 1;
+			free(mem);
+			return 0;
+		}
 		for (size_t s = 0; s < nseg; s++)
 			h[s] = b.found ? exp(b.x[s]) : vdist(p + ((s + 1) % n) *
 			    dim, p + s * dim, dim);
