@@ -1572,6 +1572,13 @@ unswell(struct fair *f, struct best *b, double *xt, double *h)
 	return 0;
 }
 
+/* A start past the chord spline's curvature cap by at most this
+ * factor descends under a cap this factor beyond its own (a cap at its
+ * own value would be met at once and held); one farther past nearly
+ * cusps, and its long descent moves with the knots' rounding by more
+ * than bad.sh's units allow: it is no start. */
+#define FAIR_START_CAP 2.0
+
 /*
  * Every start run to convergence, each judged: the check's parts are
  * FAIR_CHECK everywhere, the chord spline judged again by them first.
@@ -1620,11 +1627,11 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 		    f->seg, f->work, &err) != 0)
 			continue;
-		/* a start past the caps descends under its own, and is judged
-		 * by the chord spline's */
+		/* a start past the caps descends under its own (see
+		 * FAIR_START_CAP), and is judged by the chord spline's */
 		curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &k,
 		    &slow, &len);
-		f->kcap = fmax(kcap, k * (1 + 1e-9));
+		f->kcap = k > kcap && k <= FAIR_START_CAP * kcap ? FAIR_START_CAP * k : kcap;
 		for (size_t s = 0; s < f->nseg; s++)
 			slow = fmin(slow, segment_least_speed(f->seg + s * 4 *
 			    f->dim, f->dim));
