@@ -1386,7 +1386,17 @@ least_radius(const struct fair *f, const double *seg)
 static int
 sharper(struct fair *f, struct best *b, double *h)
 {
-	if (chord_spline(f, b, h) != 0)
+	double least = HUGE_VAL;
+
+	/* the quick descent keeps every segment's speed above its floor,
+	 * where the samples see a bend: the root finder (which took the
+	 * bench's 10^4 insoles from 0.47 to 0.63 of GNU spline's time)
+	 * only where some segment slows below it */
+	for (size_t s = 0; !f->scalefree && s < f->nseg; s++)
+		least = fmin(least, segment_least_speed(f->seg + s * 4 * f->dim,
+		    f->dim));
+	if ((!f->scalefree && least >= FAIR_SLOW * FAIR_SLOW) ||
+	    chord_spline(f, b, h) != 0)
 		return 0;
 	if (b->rchord < 0)
 		b->rchord = least_radius(f, b->cseg);
