@@ -20,6 +20,22 @@
  * through the knots with those end tangents: the tangent magnitudes at a
  * knot may differ (h) and the curvature is matched without matching
  * P'' (y), the two freedoms Manning's normalisation fixes one way.
+ *
+ * Sparse closed records are searched thoroughly (thorough): five starts,
+ * one of them a direction estimate in Spiro's manner (spiral_solve: the
+ * knots' tangent angles at which Euler spirals through consecutive knots
+ * meet with equal curvature, by Newton), each run to convergence, and
+ * the spirals' own G2 cubics.  The measure they are kept by is the
+ * scale-free E L (energy times length), not E: E falls as a curve grows,
+ * so its least rewards swelling, where E L is least for the circle
+ * (4 pi^2) and does not depend on the units.  This differs from the
+ * paper (Manning's normalisation minimises nothing) and from a batten's
+ * least E alike.  An open curve, as a piece between corners is, is
+ * further kept from swelling past the chord spline span by span
+ * (unswell).  Every result is judged against the chord spline: no more
+ * energy, no sharper bend (by the exact least radius; in the quick
+ * descent where a segment slows), no crossing it has not; else the
+ * chord spline is written.
  */
 #include <stdlib.h>
 #include <string.h>
