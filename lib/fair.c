@@ -20,6 +20,22 @@
  * through the knots with those end tangents: the tangent magnitudes at a
  * knot may differ (h) and the curvature is matched without matching
  * P'' (y), the two freedoms Manning's normalisation fixes one way.
+ *
+ * Sparse closed records are searched thoroughly (thorough): five starts,
+ * one of them a direction estimate in Spiro's manner (spiral_solve: the
+ * knots' tangent angles at which Euler spirals through consecutive knots
+ * meet with equal curvature, by Newton), each run to convergence, and
+ * the spirals' own G2 cubics.  The measure they are kept by is the
+ * scale-free E L (energy times length), not E: E falls as a curve grows,
+ * so its least rewards swelling, where E L is least for the circle
+ * (4 pi^2) and does not depend on the units.  This differs from the
+ * paper (Manning's normalisation minimises nothing) and from a batten's
+ * least E alike.  An open curve, as a piece between corners is, is
+ * further kept from swelling past the chord spline span by span
+ * (unswell).  Every result is judged against the chord spline: no more
+ * energy, no sharper bend (by the exact least radius; in the quick
+ * descent where a segment slows), no crossing it has not; else the
+ * chord spline is written.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -353,6 +369,58 @@ sumsq(const double *y, size_t k)
 	return s;
 }
 
+/* The least (|P'| / chord)^2 of segment q (a row P_A P_B P'_A P'_B),
+ * where the quadrature's points may straddle a near-cusp that a long
+ * descent would slip into: |P'|^2 is a quartic in u, sampled at
+ * FAIR_KSAMPLES + 1 points and its least sample refined by Newton on
+ * P'.P'' = 0 (the third derivative 2 C is constant). */
+static double
+segment_least_speed(const double *q, int dim)
+{
+	double bq[LOFT_MAXDIM], cq[LOFT_MAXDIM], cc = 0, best = HUGE_VAL, ub = 0;
+	const double *d0 = q + 2 * dim;
+
+	for (int k = 0; k < dim; k++) {
+		double c = q[dim + k] - q[k];
+
+		cc += c * c;
+		bq[k] = 6 * c - 4 * d0[k] - 2 * q[3 * dim + k];
+		cq[k] = 3 * (d0[k] + q[3 * dim + k]) - 6 * c;
+	}
+	for (int j = 0; j <= FAIR_KSAMPLES; j++) {
+		double u = (double)j / FAIR_KSAMPLES, v = 0;
+
+		for (int k = 0; k < dim; k++) {
+			double p1 = d0[k] + u * (bq[k] + u * cq[k]);
+
+			v += p1 * p1;
+		}
+		if (v < best)
+			best = v, ub = u;
+	}
+	for (int it = 0; it < 4; it++) {
+		double g = 0, dg = 0, v = 0;
+
+		for (int k = 0; k < dim; k++) {
+			double p1 = d0[k] + ub * (bq[k] + ub * cq[k]);
+			double p2 = bq[k] + 2 * ub * cq[k];
+
+			g += p1 * p2;
+			dg += p2 * p2 + 2 * p1 * cq[k];
+		}
+		if (!(dg > 0))
+			break;
+		ub = fmax(0, fmin(1, ub - g / dg));
+		for (int k = 0; k < dim; k++) {
+			double p1 = d0[k] + ub * (bq[k] + ub * cq[k]);
+
+			v += p1 * p1;
+		}
+		best = fmin(best, v);
+	}
+	return cc > 0 ? best / cc : 0;
+}
+
 /* The spline of intervals h = exp(x) and diagonal factors y = x + nseg
  * into f->seg, its scale-free energy E L / e0 (HUGE_VAL where a
  * curvature passes the cap), and d(E L)/dP' into f->gseg in the same
@@ -376,6 +444,9 @@ try_intervals(struct fair *f, const double *x, double *h)
 	    &slow, &len);
 	if (!(kmax <= f->kcap) || !(slow >= f->slow))
 		return HUGE_VAL;
+	for (size_t s = 0; f->scalefree && s < f->nseg; s++)
+		if (!(segment_least_speed(f->seg + s * 4 * dim, dim) >= f->slow))
+			return HUGE_VAL;
 	if (!f->scalefree) {    /* E alone: its gradient as it is */
 		for (size_t s = 0; s < f->nseg; s++)
 			memcpy(f->gseg + s * 2 * dim, f->gboth + s * 4 * dim,
@@ -755,7 +826,8 @@ loft_fit_crosses(const double *seg, size_t nseg, int closed)
 #define FAIR_SETTLED_FINE 1e-6
 
 /* The starts of a thorough search, in order (see start_intervals). */
-enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, STARTS };
+enum { START_CHORD, START_CENTRIPETAL, START_ARC, START_MANNING, START_SPIRAL,
+    STARTS };
 
 /* The unit chord of segment s into u; returns its length. */
 static double
@@ -789,6 +861,380 @@ estimate_tangent(const struct fair *f, size_t i, double *t)
 	vaxpy(t, w0, u1, f->dim);
 	if (!(vunit(t, f->dim) > 0))
 		vcopy(t, u1, f->dim);
+}
+
+/* ---- a direction estimate in Spiro's manner ------------------------- */
+
+/* Records of at most this many knots get the start below: its Newton
+ * step solves a dense system, n^3, which at 64 knots costs about what a
+ * thorough descent does. */
+#define SPIRAL_MAXKNOTS 64
+
+/* Newton's iterations at most, and the residual that ends them: the
+ * curvature jump over the knots' mean curvature 1 / chord, and the
+ * chord equation of a spiral, both to near rounding. */
+#define SPIRAL_ITER 40
+#define SPIRAL_TOL 1e-11
+
+/* No end angle of a spiral beyond this from its chord: past it the
+ * spiral curls, and no cubic of tame tangents follows it. */
+#define SPIRAL_MAXANGLE 3.1
+
+/*
+ * The Euler spiral (curvature linear in arc length) that leaves its
+ * chord at angle psi0 and meets it at psi1 (radians, from the chord,
+ * anticlockwise): its end curvatures times its length into k[0], k[1],
+ * its length over its chord into *len.  Along it, the angle from the
+ * chord is psi0 + (psi1 - psi0) t + d/2 (t^2 - t), t the arc length
+ * over the length, and d, its change of curvature times the length, is
+ * the root of the chord's condition: the integral of the sine of that
+ * angle is 0.  Newton from d = 6 (psi0 + psi1), the small-angle root.
+ * 0, or -1 where it does not converge.
+ */
+static int
+spiral(double psi0, double psi1, double *k, double *len)
+{
+	double d = 6 * (psi0 + psi1), turn = psi1 - psi0;
+
+	if (!(fabs(psi0) < SPIRAL_MAXANGLE && fabs(psi1) < SPIRAL_MAXANGLE))
+		return -1;
+	for (int it = 0; it < SPIRAL_ITER; it++) {
+		double g = 0, dg = 0, c = 0;
+
+		for (int part = 0; part < 4; part++)
+			for (int j = 0; j < GAUSS; j++) {
+				double t = (part + gauss_u[j]) / 4, w = gauss_w[j] / 4;
+				double a = psi0 + turn * t + d / 2 * (t * t - t);
+
+				g += w * sin(a);
+				c += w * cos(a);
+				dg += w * cos(a) * (t * t - t) / 2;
+			}
+		if (fabs(g) < SPIRAL_TOL) {
+			k[0] = turn - d / 2;
+			k[1] = turn + d / 2;
+			*len = 1 / c;
+			return c > 0 ? 0 : -1;
+		}
+		if (!(dg < 0))
+			return -1;
+		d -= fmax(-2, fmin(2, g / dg));
+	}
+	return -1;
+}
+
+/* The state of the angle solve: knot i's tangent angle is ref[i] +
+ * x[i]; segment s leaves knot s at psi0[s] from its chord, of angle
+ * phi[s] and length c[s], and meets knot s + 1 at psi1[s]. */
+struct angles {
+	size_t n;
+	double *ref, *phi, *c, *x, *k0, *k1, *len, *r, *jac, *dx, *xn;
+	double scale;           /* the mean chord */
+};
+
+/* a - b wrapped into (-pi, pi]. */
+static double
+angle_diff(double a, double b)
+{
+	double d = a - b;
+
+	return atan2(sin(d), cos(d));
+}
+
+/* The spirals of x and the curvature jumps at the knots, times the mean
+ * chord, into a->r; the largest jump, or HUGE_VAL where a spiral fails. */
+static double
+residuals(struct angles *a, const double *x)
+{
+	size_t n = a->n;
+	double big = 0, k[2], len;
+
+	for (size_t s = 0; s < n; s++) {
+		size_t t = (s + 1) % n;
+		double p0 = angle_diff(a->ref[s], a->phi[s]) + x[s];
+		double p1 = angle_diff(a->ref[t], a->phi[s]) + x[t];
+
+		if (spiral(p0, p1, k, &len) != 0)
+			return HUGE_VAL;
+		a->len[s] = len * a->c[s];
+		a->k0[s] = k[0] / a->len[s];
+		a->k1[s] = k[1] / a->len[s];
+	}
+	for (size_t i = 0; i < n; i++) {
+		a->r[i] = (a->k1[(i + n - 1) % n] - a->k0[i]) * a->scale;
+		big = fmax(big, fabs(a->r[i]));
+	}
+	return big;
+}
+
+/* Gaussian elimination with partial pivoting of the n x n system m z =
+ * r (m row-major, spoiled; r becomes z); 0, or -1 when singular. */
+static int
+dense_solve(double *m, double *r, size_t n)
+{
+	for (size_t c = 0; c < n; c++) {
+		size_t p = c;
+
+		for (size_t i = c + 1; i < n; i++)
+			if (fabs(m[i * n + c]) > fabs(m[p * n + c]))
+				p = i;
+		if (!(fabs(m[p * n + c]) > 1e-300))
+			return -1;
+		for (size_t j = 0; j < n; j++) {
+			double t = m[c * n + j];
+
+			m[c * n + j] = m[p * n + j];
+			m[p * n + j] = t;
+		}
+		{
+			double t = r[c];
+
+			r[c] = r[p];
+			r[p] = t;
+		}
+		for (size_t i = c + 1; i < n; i++) {
+			double q = m[i * n + c] / m[c * n + c];
+
+			for (size_t j = c; j < n; j++)
+				m[i * n + j] -= q * m[c * n + j];
+			r[i] -= q * r[c];
+		}
+	}
+	for (size_t i = n; i-- > 0;) {
+		for (size_t j = i + 1; j < n; j++)
+			r[i] -= m[i * n + j] * r[j];
+		r[i] /= m[i * n + i];
+	}
+	return 0;
+}
+
+/* A Newton step of the knots' angles: the Jacobian by differences of
+ * 1e-7 radian, the step capped at 0.3 radian and halved until the
+ * largest jump falls.  Returns the new largest jump, HUGE_VAL where
+ * none falls. */
+static double
+newton_step(struct angles *a, double big)
+{
+	size_t n = a->n;
+	double step = 1e-7, most = 0, t = 1;
+
+	for (size_t j = 0; j < n; j++) {
+		memcpy(a->xn, a->x, n * sizeof *a->xn);
+		a->xn[j] += step;
+		if (!(residuals(a, a->xn) < HUGE_VAL))
+			return HUGE_VAL;
+		for (size_t i = 0; i < n; i++)
+			a->jac[i * n + j] = a->r[i];
+	}
+	residuals(a, a->x);
+	for (size_t i = 0; i < n; i++) {
+		for (size_t j = 0; j < n; j++)
+			a->jac[i * n + j] = (a->jac[i * n + j] - a->r[i]) / step;
+		a->dx[i] = -a->r[i];
+	}
+	if (dense_solve(a->jac, a->dx, n) != 0)
+		return HUGE_VAL;
+	for (size_t i = 0; i < n; i++)
+		most = fmax(most, fabs(a->dx[i]));
+	if (most > 0.3)
+		t = 0.3 / most;
+	for (int half = 0; half < 12; half++, t /= 2) {
+		double e;
+
+		for (size_t i = 0; i < n; i++)
+			a->xn[i] = a->x[i] + t * a->dx[i];
+		if ((e = residuals(a, a->xn)) < big) {
+			memcpy(a->x, a->xn, n * sizeof *a->x);
+			return e;
+		}
+	}
+	return HUGE_VAL;
+}
+
+/* The samples of the scan for g2_magnitudes' roots, over tangent
+ * magnitudes from 0 to FAIR_MAXMAG chords: fine enough to part the
+ * roots of the quartic a cubic's two ends make. */
+#define SPIRAL_SCAN 256
+
+/* g2_magnitudes' second condition at a, b its first's: b into *b. */
+static double
+g2_rest(double a, double c, double psi0, double psi1, double k0, double k1,
+    double s01, double *b)
+{
+	*b = -(k0 * a * a + 6 * c * sin(psi0)) / (2 * s01);
+	return k1 * *b * *b - 6 * c * sin(psi1) + 2 * a * s01;
+}
+
+/*
+ * The tangent magnitudes a, b of the cubic from 0 to the chord (c, 0)
+ * that leaves at angle psi0 with curvature k0 and arrives at psi1 with
+ * k1 (de Boor, Hollig and Sabin's G2 Hermite conditions): with the
+ * second derivative 6 C - 4 a T0 - 2 b T1 at the start and -6 C + 2 a
+ * T0 + 4 b T1 at the end, k0 a^2 + 6 c sin psi0 + 2 b sin(psi1 - psi0)
+ * = 0 and k1 b^2 - 6 c sin psi1 + 2 a sin(psi1 - psi0) = 0.  The first
+ * gives b of a; the roots of the second in a are scanned for and
+ * bisected, and of those with both magnitudes positive and tame, the
+ * one nearest a = b = len (the spiral's length) is taken.  0, or -1
+ * where there is none.
+ */
+static int
+g2_magnitudes(double c, double psi0, double psi1, double k0, double k1,
+    double len, double *a, double *b)
+{
+	double s01 = sin(psi1 - psi0), top = FAIR_MAXMAG * c, best = HUGE_VAL;
+	double a0 = 0, b0, g0;
+
+	if (!(fabs(s01) > 1e-6))
+		return -1;
+	g0 = g2_rest(a0, c, psi0, psi1, k0, k1, s01, &b0);
+	for (int j = 1; j <= SPIRAL_SCAN; j++) {
+		double a1 = top * j / SPIRAL_SCAN, b1, g1, lo = a0, hi = a1, gl = g0;
+
+		g1 = g2_rest(a1, c, psi0, psi1, k0, k1, s01, &b1);
+		if ((g0 < 0) != (g1 < 0)) {
+			for (int it = 0; it < 60; it++) {
+				double mid = (lo + hi) / 2, bm, gm;
+
+				gm = g2_rest(mid, c, psi0, psi1, k0, k1, s01, &bm);
+				if ((gm < 0) == (gl < 0))
+					lo = mid, gl = gm;
+				else
+					hi = mid;
+			}
+			g2_rest(lo, c, psi0, psi1, k0, k1, s01, &b0);
+			if (lo > 0 && b0 > 0 && b0 <= top && fabs(lo - len) +
+			    fabs(b0 - len) < best) {
+				best = fabs(lo - len) + fabs(b0 - len);
+				*a = lo;
+				*b = b0;
+			}
+		}
+		a0 = a1, g0 = g1;
+	}
+	return best < HUGE_VAL ? 0 : -1;
+}
+
+/*
+ * Spiro's manner (Levien 2009: a curve of clothoid pieces, G2 at the
+ * knots, by Newton on the knots' tangent angles): the angles at which
+ * the Euler spirals through consecutive knots meet with equal
+ * curvature, Newton from estimate_tangent's, into a (its room in *mem,
+ * for the caller to free).  Closed plane records of at most
+ * SPIRAL_MAXKNOTS knots.  0, 1 where it is not to be had (*mem NULL),
+ * -1 out of memory.
+ */
+static int
+spiral_solve(const struct fair *f, struct angles *a, double **mem)
+{
+	size_t n = f->n;
+	double big;
+
+	*mem = NULL;
+	if (f->dim != 2 || !f->o->closed || n < 3 || n > SPIRAL_MAXKNOTS)
+		return 1;
+	if ((*mem = malloc((10 * n + n * n) * sizeof **mem)) == NULL)
+		return -1;
+	a->n = n;
+	a->scale = 0;
+	a->ref = *mem, a->phi = a->ref + n, a->c = a->phi + n;
+	a->x = a->c + n, a->k0 = a->x + n, a->k1 = a->k0 + n;
+	a->len = a->k1 + n, a->r = a->len + n, a->dx = a->r + n;
+	a->xn = a->dx + n, a->jac = a->xn + n;
+	for (size_t i = 0; i < n; i++) {
+		double u[2];
+
+		a->c[i] = unit_chord(f, i, u);
+		a->phi[i] = atan2(u[1], u[0]);
+		a->scale += a->c[i] / n;
+	}
+	for (size_t i = 0; i < n; i++) {
+		double p = a->phi[(i + n - 1) % n];
+
+		a->ref[i] = p + angle_diff(a->phi[i], p) / 2;
+		a->x[i] = 0;
+	}
+	big = residuals(a, a->x);
+	for (int it = 0; it < SPIRAL_ITER && big < HUGE_VAL &&
+	    big > SPIRAL_TOL; it++)
+		big = newton_step(a, big);
+	if (big <= SPIRAL_TOL)
+		return 0;
+	free(*mem);
+	*mem = NULL;
+	return 1;
+}
+
+/*
+ * The spirals of spiral_solve as cubics, each with its spiral's end
+ * tangents and curvatures (g2_magnitudes), into f->seg: a G2 curve
+ * that is the circle, to the error of a cubic arc, where the knots are
+ * on one.  0, 1 where it is not to be had, -1 out of memory.
+ */
+static int
+spiral_start(struct fair *f)
+{
+	struct angles a;
+	double *mem;
+	int rc = spiral_solve(f, &a, &mem);
+
+	for (size_t s = 0; s < f->n && rc == 0; s++) {
+		size_t t = (s + 1) % f->n;
+		double *q = f->seg + 8 * s, th0 = a.ref[s] + a.x[s];
+		double th1 = a.ref[t] + a.x[t], ma = 0, mb = 0;
+
+		if (g2_magnitudes(a.c[s], angle_diff(th0, a.phi[s]),
+		    angle_diff(th1, a.phi[s]), a.k0[s], a.k1[s], a.len[s],
+		    &ma, &mb) != 0)
+			rc = 1;
+		memcpy(q, f->p + 2 * s, 2 * sizeof *q);
+		memcpy(q + 2, f->p + 2 * t, 2 * sizeof *q);
+		q[4] = ma * cos(th0), q[5] = ma * sin(th0);
+		q[6] = mb * cos(th1), q[7] = mb * sin(th1);
+	}
+	free(mem);
+	return rc;
+}
+
+/*
+ * The start of the spirals' angles and lengths in the descent's terms,
+ * into x: each interval its spiral's length, and each diagonal factor
+ * the one that makes row i of cspline.c's system hold, along the
+ * tangent, for knot derivatives the spirals' unit tangents (the
+ * least-squares fit of the one number to the row's two).  0, 1 where
+ * it is not to be had, -1 out of memory.
+ */
+static int
+spiral_intervals(const struct fair *f, double *x)
+{
+	struct angles a;
+	double *mem;
+	size_t n = f->n;
+	int rc = spiral_solve(f, &a, &mem);
+
+	for (size_t i = 0; i < n && rc == 0; i++)
+		x[i] = log(a.len[i]);
+	for (size_t i = 0; i < n && rc == 0; i++) {
+		size_t hm = (i + n - 1) % n, j = (i + 1) % n;
+		double h0 = a.len[hm], h1 = a.len[i], d = 0, q;
+
+		for (int k = 0; k < 2; k++) {
+			double tk = k == 0 ? cos(a.ref[i] + a.x[i]) :
+			    sin(a.ref[i] + a.x[i]);
+			double tm = k == 0 ? cos(a.ref[hm] + a.x[hm]) :
+			    sin(a.ref[hm] + a.x[hm]);
+			double tp = k == 0 ? cos(a.ref[j] + a.x[j]) :
+			    sin(a.ref[j] + a.x[j]);
+			double rhs = 3 * (h1 * (f->p[2 * i + k] - f->p[2 * hm +
+			    k]) / h0 + h0 * (f->p[2 * j + k] - f->p[2 * i + k]) /
+			    h1);
+
+			d += tk * (rhs - h1 * tm - h0 * tp);
+		}
+		q = d / (h0 + h1) - 1;
+		x[n + i] = log(fmax(q, 1e-3));
+	}
+	free(mem);
+	return rc;
 }
 
 /* Manning's solution's intervals: each segment's mean tangent magnitude
@@ -839,6 +1285,8 @@ start_intervals(const struct fair *f, int which, double *x)
 		x[f->nseg + i] = 0;
 	if (which == START_MANNING)
 		return manning_intervals(f, x);
+	if (which == START_SPIRAL)
+		return spiral_intervals(f, x);
 	for (size_t s = 0; s < f->nseg; s++) {
 		double u[LOFT_MAXDIM], t0[LOFT_MAXDIM], t1[LOFT_MAXDIM];
 		double w = unit_chord(f, s, u), a;
@@ -898,6 +1346,10 @@ least_speed(const double *seg, size_t nseg, int dim, double *kmax)
 	return least;
 }
 
+/* The relative rounding of the root finder's least radius: a curve
+ * whose least radius is the chord spline's to this is not sharper. */
+#define FAIR_RADIUS_EPS 1e-9
+
 /* The best curve found so far and what it is judged against. */
 struct best {
 	double *x;              /* its log intervals and factors */
@@ -906,24 +1358,75 @@ struct best {
 	int chord_loops;        /* whether the chord spline crosses itself:
 	                         * -1 not yet known */
 	double *cseg;           /* room for the chord spline's segments */
-	int found;              /* whether x is a descent's, not the chord's */
+	int found;              /* 0 the chord spline's, 1 x a descent's, 2
+	                         * sseg the spiral start's */
+	double *sseg;           /* room for the spiral start's segments */
+	int have_cseg;          /* whether cseg holds it (0 where it fails) */
+	double rchord;          /* its least radius, exactly: -1 unknown */
 };
+
+/* The chord spline into b->cseg, once; 0, or 1 where it fails. */
+static int
+chord_spline(struct fair *f, struct best *b, double *h)
+{
+	struct loft_error err;
+
+	if (b->have_cseg == 0) {
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = vdist(f->p + ((s + 1) % f->n) * f->dim,
+			    f->p + s * f->dim, f->dim);
+		b->have_cseg = loft__cspline_h(f->o, f->p, f->n, f->dim, h,
+		    NULL, b->cseg, f->work, &err) != 0 ? -1 : 1;
+	}
+	return b->have_cseg < 0;
+}
+
+/* The least radius of the nseg segments seg by measure.c's root finder
+ * (exact, where the samples of max_curvature and least_speed may step
+ * over a cusp); 0 at a cusp or a retracted handle. */
+static double
+least_radius(const struct fair *f, const double *seg)
+{
+	struct loft_curve c;
+	struct loft_error err;
+	double r, u;
+
+	loft_curve_cubic(&c, seg, f->nseg, f->dim, f->o->closed);
+	return loft_curve_min_radius(&c, &r, &u, &err) == 0 && r > 0 ? r : 0;
+}
+
+/* Whether the curve in f->seg bends more sharply anywhere than the
+ * chord spline does (the guarantee), by the exact least radius of
+ * both: a descent may slip a cusp between the points of the sampled
+ * caps, whose energy is then unbounded. */
+static int
+sharper(struct fair *f, struct best *b, double *h)
+{
+	double least = HUGE_VAL;
+
+	/* the quick descent keeps every segment's speed above its floor,
+	 * where the samples see a bend: the root finder (which took the
+	 * bench's 10^4 insoles from 0.47 to 0.63 of GNU spline's time)
+	 * only where some segment slows below it */
+	for (size_t s = 0; !f->scalefree && s < f->nseg; s++)
+		least = fmin(least, segment_least_speed(f->seg + s * 4 * f->dim,
+		    f->dim));
+	if ((!f->scalefree && least >= FAIR_SLOW * FAIR_SLOW) ||
+	    chord_spline(f, b, h) != 0)
+		return 0;
+	if (b->rchord < 0)
+		b->rchord = least_radius(f, b->cseg);
+	return least_radius(f, f->seg) < b->rchord * (1 - FAIR_RADIUS_EPS);
+}
 
 /* Whether the chord spline crosses itself (plane curves; once); -1 out
  * of memory. */
 static int
 chord_loops(struct fair *f, struct best *b, double *h)
 {
-	struct loft_error err;
-
-	if (b->chord_loops < 0) {
-		for (size_t s = 0; s < f->nseg; s++)
-			h[s] = vdist(f->p + ((s + 1) % f->n) * f->dim,
-			    f->p + s * f->dim, f->dim);
-		b->chord_loops = loft__cspline_h(f->o, f->p, f->n, f->dim, h,
-		    NULL, b->cseg, f->work, &err) != 0 ? 0 :
+	if (b->chord_loops < 0)
+		b->chord_loops = chord_spline(f, b, h) != 0 ? 0 :
 		    loft_fit_crosses(b->cseg, f->nseg, f->o->closed);
-	}
 	return b->chord_loops;
 }
 
@@ -947,7 +1450,7 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 	if (!(e < b->score) || !(e <= b->echord * (f->scalefree ? len : 1)) ||
 	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap) ||
 	    (f->scalefree && (!(least_speed(f->seg, f->nseg, f->dim, &kmax) >=
-	    FAIR_CUSP) || !(kmax <= f->kcap))))
+	    FAIR_CUSP) || !(kmax <= f->kcap))) || sharper(f, b, h))
 		return 0;
 	loops = f->dim == 2 ? loft_fit_crosses(f->seg, f->nseg, f->o->closed) :
 	    0;
@@ -958,10 +1461,149 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 	if (loops == 2)
 		return 0;
 	b->score = e;
-	b->found = 1;
-	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	b->found = x != NULL ? 1 : 2;
+	if (x != NULL)
+		memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
+	else
+		memcpy(b->sseg, f->seg, 4 * f->dim * f->nseg * sizeof *f->seg);
 	return 0;
 }
+
+/* How much farther than swell_allowed a span of an open curve may
+ * swell: 5% more lets the open insole keep an energy below Manning's
+ * (fit.sh), and glyph contours' pieces between corners stay nearer
+ * their outline than at 2% or 25% (make compare: median 16.4, against
+ * 17.0 and 18.1). */
+#define FAIR_SWELL 1.05
+
+/* The points of each span at which its swell is sampled. */
+#define FAIR_SWELL_SAMPLES 16
+
+/* The swell of segment q (a row P_A P_B P'_A P'_B): its greatest
+ * distance from the line of its chord, at FAIR_SWELL_SAMPLES points. */
+static double
+span_swell(const double *q, int dim)
+{
+	double c[LOFT_MAXDIM], most = 0;
+
+	vsub(c, q + dim, q, dim);
+	if (!(vunit(c, dim) > 0))
+		return 0;
+	for (int j = 1; j < FAIR_SWELL_SAMPLES; j++) {
+		double pt[LOFT_MAXDIM], a;
+
+		loft_cubic_eval(q, dim, (double)j / FAIR_SWELL_SAMPLES, pt,
+		    NULL, NULL);
+		vsub(pt, pt, q, dim);
+		a = vdot(pt, c, dim);
+		vaxpy(pt, -a, c, dim);
+		most = fmax(most, vnorm(pt, dim));
+	}
+	return most;
+}
+
+/* The sagitta over the chord from knot a to knot b of the circle
+ * through them and knot q (the minor arc's); 0 where the three are
+ * in a line. */
+static double
+sagitta(const struct fair *f, size_t a, size_t b, size_t q)
+{
+	const double *pa = f->p + a * f->dim, *pb = f->p + b * f->dim;
+	const double *pq = f->p + q * f->dim;
+	double ab = vdist(pa, pb, f->dim), aq = vdist(pa, pq, f->dim);
+	double bq = vdist(pb, pq, f->dim), s = (ab + aq + bq) / 2, area, r;
+
+	/* Heron's area, then the circumradius ab aq bq / (4 area) */
+	area = s * (s - ab) * (s - aq) * (s - bq);
+	if (!(area > 0))
+		return 0;
+	r = ab * aq * bq / (4 * sqrt(area));
+	return r - sqrt(fmax(0, r * r - ab * ab / 4));
+}
+
+/* The swell span s may have: the chord spline's, or the sagitta of a
+ * circle through its knots and a neighbour where that is more (so that
+ * knots on a circle still give the circle). */
+static double
+swell_allowed(const struct fair *f, const struct best *b, size_t s)
+{
+	double most = span_swell(b->cseg + s * 4 * f->dim, f->dim);
+
+	if (s > 0)
+		most = fmax(most, sagitta(f, s, s + 1, s - 1));
+	if (s + 2 < f->n)
+		most = fmax(most, sagitta(f, s, s + 1, s + 2));
+	return most;
+}
+
+/* Whether some span of f->seg (open) swells farther from its chord
+ * than swell_allowed, past rounding. */
+static int
+swells(const struct fair *f, const struct best *b)
+{
+	for (size_t s = 0; s < f->nseg; s++) {
+		const double *q = f->seg + s * 4 * f->dim;
+
+		if (span_swell(q, f->dim) > swell_allowed(f, b, s) * FAIR_SWELL + 1e-9 *
+		    vdist(q + f->dim, q, f->dim))
+			return 1;
+	}
+	return 0;
+}
+
+/* The halvings of the way back to the chord spline tried. */
+#define FAIR_UNSWELL 6
+
+/*
+ * An open curve (a piece between corners, or a curve with free ends)
+ * never swells past the chord spline, span by span (issue 23: least
+ * energy alone rewards a curve that bulges beside a corner): where the
+ * best does, the curve of t times its log intervals and diagonal
+ * factors and 1 - t times the chord spline's, for t = 1/2, 1/4, ..
+ * (FAIR_UNSWELL of them), the first that does not and passes judge;
+ * else the chord spline.
+ * xt: room for nseg + n numbers.  0, or -1 out of memory.
+ */
+static int
+unswell(struct fair *f, struct best *b, double *xt, double *h)
+{
+	struct loft_error err;
+
+	if (b->found != 1 || chord_spline(f, b, h) != 0)
+		return 0;
+	for (size_t s = 0; s < f->nseg; s++)
+		h[s] = exp(b->x[s]);
+	if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, b->x + f->nseg,
+	    f->seg, f->work, &err) != 0 || !swells(f, b))
+		return 0;
+	memcpy(xt, b->x, (f->nseg + f->n) * sizeof *xt);
+	b->found = 0;
+	b->score = HUGE_VAL;
+	for (int k = 0; k < FAIR_UNSWELL && !b->found; k++) {
+		for (size_t s = 0; s < f->nseg; s++) {
+			double c = log(vdist(f->p + ((s + 1) % f->n) * f->dim,
+			    f->p + s * f->dim, f->dim));
+
+			xt[s] = c + (xt[s] - c) / 2;
+			h[s] = exp(xt[s]);
+		}
+		for (size_t i = 0; i < f->n; i++)
+			xt[f->nseg + i] /= 2;
+		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, xt + f->nseg,
+		    f->seg, f->work, &err) != 0 || swells(f, b))
+			continue;
+		if (judge(f, b, xt, h) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* A start past the chord spline's curvature cap by at most this
+ * factor descends under a cap this factor beyond its own (a cap at its
+ * own value would be met at once and held); one farther past nearly
+ * cusps, and its long descent moves with the knots' rounding by more
+ * than bad.sh's units allow: it is no start. */
+#define FAIR_START_CAP 2.0
 
 /*
  * Every start run to convergence, each judged: the check's parts are
@@ -971,10 +1613,17 @@ judge(struct fair *f, struct best *b, const double *x, double *h)
 static int
 thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 {
-	double e, len, k;
-	int steps = 0;
+	double e, len, k, slow, kcap, slow0 = f->slow;
+	int steps = 0, rc;
 	struct loft_error err;
 
+	if (chord_spline(f, b, h) == 0 && b->rchord < 0)
+		b->rchord = least_radius(f, b->cseg);
+	/* the chord spline's largest curvature, exactly where the samples
+	 * of its cap missed its peak */
+	if (b->rchord > 0)
+		f->kcap = fmax(f->kcap, (1 + 1e-9) / b->rchord);
+	kcap = f->kcap;
 	f->steps = FAIR_CONVERGE;
 	f->settled = FAIR_SETTLED_FINE;
 	f->scalefree = 1;
@@ -993,7 +1642,7 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 	f->e0 = b->score;
 	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
 	for (int which = 0; which < STARTS; which++) {
-		int rc = start_intervals(f, which, x);
+		rc = start_intervals(f, which, x);
 
 		if (rc < 0)
 			return -1;
@@ -1004,10 +1653,24 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, x + f->nseg,
 		    f->seg, f->work, &err) != 0)
 			continue;
+		/* a start past the caps descends under its own (see
+		 * FAIR_START_CAP), and is judged by the chord spline's */
+		curve_energy(f->seg, f->nseg, f->dim, 0, f->parts, NULL, &k,
+		    &slow, &len);
+		f->kcap = k > kcap && k <= FAIR_START_CAP * kcap ? FAIR_START_CAP * k : kcap;
+		for (size_t s = 0; s < f->nseg; s++)
+			slow = fmin(slow, segment_least_speed(f->seg + s * 4 *
+			    f->dim, f->dim));
+		f->slow = fmin(slow0, slow * (1 - 1e-9));
 		steps += descend(f, x, h, v, &e);
+		f->kcap = kcap;
+		f->slow = slow0;
 		if (e < HUGE_VAL && judge(f, b, x, h) != 0)
 			return -1;
 	}
+	rc = spiral_start(f);
+	if (rc < 0 || (rc == 0 && judge(f, b, NULL, h) != 0))
+		return -1;
 	return steps;
 }
 
@@ -1018,7 +1681,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	size_t nseg = o->closed ? n : n - 1, m = 2 * n;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, NULL, 0, 0, NULL,
 	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
-	struct best b = { NULL, 0, 0, -1, NULL, 0 };
+	struct best b = { NULL, 0, 0, -1, NULL, 0, NULL, 0, -1 };
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc, more = 0;
 
@@ -1030,7 +1693,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
 	mem = calloc((7 + 2 * dim) * n + 2 * dim * n + 4 * dim * n + 2 * m +
-	    n + m * (2 * FAIR_MEMORY + 3) + 4 * dim * n + 2 * n / sizeof *mem +
+	    n + m * (2 * FAIR_MEMORY + 3) + 8 * dim * n + 2 * n / sizeof *mem +
 	    1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -1042,7 +1705,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	h = b.x + m;
 	v = h + n;
 	b.cseg = v + m * (2 * FAIR_MEMORY + 3);
-	f.parts = (unsigned char *)(b.cseg + 4 * dim * n);
+	b.sseg = b.cseg + 4 * dim * n;
+	f.parts = (unsigned char *)(b.sseg + 4 * dim * n);
 	f.check = f.parts + n;
 	start_intervals(&f, START_CHORD, x);
 	for (size_t s = 0; s < nseg; s++)
@@ -1066,6 +1730,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 			    (n <= FAIR_THOROUGH && max_curvature(seg, nseg, dim) *
 			    chords * FAIR_SHARP > 1)))
 				more = thorough(&f, &b, x, h, v);
+			if (more >= 0 && !o->closed && unswell(&f, &b, v, h) < 0)
+				more = -1;
 			if (more < 0) {
 				free(mem);
 				return loft_fail(err, LOFT_ENOMEM, -1,
@@ -1073,7 +1739,14 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 			}
 			info->iterations += more;
 		}
-		/* the best: the chord spline unless a descent beat it */
+		/* the best: the chord spline unless a descent or the spiral
+		 * start beat it */
+		if (b.found == 2) {
+			memcpy(seg, b.sseg, 4 * dim * nseg * sizeof *seg);
+			info->converged = 1;
+			free(mem);
+			return 0;
+		}
 		for (size_t s = 0; s < nseg; s++)
 			h[s] = b.found ? exp(b.x[s]) : vdist(p + ((s + 1) % n) *
 			    dim, p + s * dim, dim);
