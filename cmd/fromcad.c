@@ -27,6 +27,18 @@ usage(void)
 	    "] [-t tolerance] [-p digits] [file ...]\n");
 }
 
+/* The complaint of a document no reader takes, naming the readers'
+ * words from their table. */
+static const char *
+not_read(void)
+{
+	static char text[256];
+
+	return loft_usage_words(text, sizeof text, "not a document fromcad "
+	    "reads (", &loft_cadin_readers[0].name,
+	    sizeof loft_cadin_readers[0], "; -f names the format)");
+}
+
 /* A reader's complaint: "fromcad: FILE:LINE: what". */
 static void
 complain(void *ctx, long line, const char *msg)
@@ -116,8 +128,7 @@ read_document(struct opts *o, struct loft_cadin *cad, const char *name)
 	if (len == 0)
 		complain(o, 0, "empty file: no drawing in it");
 	else if (format < 0)
-		complain(o, 0, "not a DXF, SVG, CSV, STEP or IGES document "
-		    "(-f names the format)");
+		complain(o, 0, not_read());
 	else
 		loft_cadin_read(format, buf, len, cad);
 	free(buf);

@@ -939,7 +939,7 @@ out_is "7 8
 # ---- formats, files, output -------------------------------------------
 fails 1 "empty.dxf: empty file" "$F $(: >"$T/empty.dxf"; echo "$T/empty.dxf")"
 printf '\001\002\003 binary\n' >"$T/junk"
-fails 1 "junk: not a DXF, SVG, CSV, STEP or IGES document" "$F $T/junk"
+fails 1 "junk: not a document fromcad reads (dxf|svg|csv|step|iges;" "$F $T/junk"
 fails 1 "nosuch: No such file" "$F $T/nosuch"
 # -f reads what the content would not say: a DXF named .svg
 cp "$T/none.dxf" "$T/dxf.svg"

@@ -179,7 +179,7 @@ says "#6: its knots and multiplicities do not make 4 knots"
 grep -q '^cubic name=good' "$T/out" && ok || no "bad step: the good curve not read: $(head -2 "$T/out")"
 run "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
 fails 1 "no entity instances" "printf 'ISO-10303-21;\nDATA;\nENDSEC;\n' | $B/fromcad"
-fails 1 "not a DXF, SVG, CSV, STEP or IGES document" "echo hello | $B/fromcad"
+fails 1 "not a document fromcad reads (dxf|svg|csv|step|iges; -f names the format)" "echo hello | $B/fromcad"
 
 # ---- files OpenCASCADE writes (through gmsh), checked by its own evaluation
 
