@@ -3,7 +3,8 @@
  * records.  Read: rational B-spline curves (126) and surfaces (128),
  * lines (110, form 0), circular arcs (100) and bounded planes (108,
  * form 1, as the rectangle of their bounding curve), each moved by its
- * transformation matrix (124).  Curves that are part of another entity
+ * transformation matrix (124), in millimetres from the global section's
+ * unit flag (and unit name).  Curves that are part of another entity
  * (a composite curve, a trimmed surface's bounds: subordinate in their
  * directory entry) are passed over, as their entity's own geometry is
  * read; surfaces are read wherever they are.  Entities of other
@@ -12,6 +13,7 @@
  * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -43,6 +45,9 @@ struct iges {
 	double *v;              /* the parameters of the entity read */
 	size_t nv, vcap;
 	int oom;
+	double mm;              /* millimetres in the model's unit */
+	char *glob;             /* the global section's columns, joined */
+	size_t nglob, gcap;
 	long skip[1000];        /* entities passed over, by type */
 };
 
@@ -106,6 +111,13 @@ scan(struct iges *g)
 				gl[COLS] = '\0';
 				delimiters(g, gl, COLS);
 				got_g = 1;
+			}
+			if (sec == 'G') {
+				if (loft__grow((void **)&g->glob, &g->gcap,
+				    g->nglob + COLS, 1) != 0)
+					return -1;
+				memcpy(g->glob + g->nglob, s, COLS);
+				g->nglob += COLS;
 			} else if (sec == 'D') {
 				if (e == NULL) {
 					if (loft__grow((void **)&g->d, &g->dcap,
@@ -224,6 +236,18 @@ transform(struct iges *g, const struct de *e, double *p, size_t n)
 	return 0;
 }
 
+/* transform, then into millimetres (g->mm): the transformation's
+ * translation is in the model's unit too. */
+static int
+placed(struct iges *g, const struct de *e, double *p, size_t n)
+{
+	if (transform(g, e, p, n) != 0)
+		return -1;
+	for (size_t i = 0; i < 3 * n; i++)
+		p[i] *= g->mm;
+	return 0;
+}
+
 static struct loft__bsname
 name_of(const struct de *e, long k)
 {
@@ -262,7 +286,7 @@ curve126(struct iges *g, const struct de *e, long k)
 		return -1;
 	}
 	memcpy(ctl, g->v + o + (size_t)(K + M + 2) + n, 3 * n * sizeof *ctl);
-	if (transform(g, e, ctl, n) != 0) {
+	if (placed(g, e, ctl, n) != 0) {
 		loft__cadin_say(g->c, e->line, "126 (D%ld): its transformation "
 		    "cannot be read", k);
 		free(ctl);
@@ -323,7 +347,7 @@ surface128(struct iges *g, const struct de *e, long k)
 			w[i * nv + j] = g->v[o + nk1 + nk2 + j * nu + i];
 			memcpy(ctl + 3 * (i * nv + j), p, 3 * sizeof *p);
 		}
-	if (transform(g, e, ctl, nu * nv) != 0 || (e->xform != 0 &&
+	if (placed(g, e, ctl, nu * nv) != 0 || (e->xform != 0 &&
 	    params(g, e) != 0)) {
 		loft__cadin_say(g->c, e->line, "128 (D%ld): its transformation "
 		    "cannot be read", k);
@@ -353,7 +377,7 @@ line110(struct iges *g, const struct de *e, long k)
 		return -1;
 	}
 	memcpy(ctl, g->v + 1, sizeof ctl);
-	if (transform(g, e, ctl, 2) != 0) {
+	if (placed(g, e, ctl, 2) != 0) {
 		loft__cadin_say(g->c, e->line, "110 (D%ld): its transformation "
 		    "cannot be read", k);
 		return -1;
@@ -411,7 +435,7 @@ arc100(struct iges *g, const struct de *e, long k)
 	for (int i = 1; i < 2 * n + 3; i++)
 		t[i] = (i - 1) / 2;
 	t[2 * n + 3] = n;
-	if (transform(g, e, ctl, (size_t)(2 * n + 1)) != 0) {
+	if (placed(g, e, ctl, (size_t)(2 * n + 1)) != 0) {
 		loft__cadin_say(g->c, e->line, "100 (D%ld): its transformation "
 		    "cannot be read", k);
 		return -1;
@@ -543,7 +567,7 @@ plane108(struct iges *g, const struct de *e, long k)
 			for (int q = 0; q < 3; q++)
 				net[3 * (2 * i + j) + q] = o[q] + (i ? hi[0] :
 				    lo[0]) * x[q] + (j ? hi[1] : lo[1]) * y[q];
-	if (params(g, e) != 0 || transform(g, e, net, 4) != 0) {
+	if (params(g, e) != 0 || placed(g, e, net, 4) != 0) {
 		loft__cadin_say(g->c, e->line, "108 (D%ld): its transformation "
 		    "cannot be read", k);
 		return -1;
@@ -575,6 +599,96 @@ unread_geometry(int type)
 	return 0;
 }
 
+/* IGES 5.3's global parameter 14 (the units flag): millimetres in each
+ * unit, by flag; 0: none (3 names the unit in parameter 15). */
+static const double flag_mm[] = {
+	0, 25.4, 1, 0, 304.8, 1609344, 1000, 1e6, 0.0254, 1e-3, 10, 2.54e-5,
+};
+/* Parameter 15's names of those units (flag 3 takes its unit from it). */
+static const struct { const char *name; double mm; } name_mm[] = {
+	{ "IN", 25.4 }, { "INCH", 25.4 }, { "MM", 1 }, { "FT", 304.8 },
+	{ "MI", 1609344 }, { "M", 1000 }, { "KM", 1e6 }, { "MIL", 0.0254 },
+	{ "UM", 1e-3 }, { "CM", 10 }, { "UIN", 2.54e-5 },
+};
+
+/* Global parameter want (from 1) of the joined global section: its
+ * text (a Hollerith string's characters) into *s, *n; 0, or -1 when
+ * the section ends first. */
+static int
+global(const struct iges *g, int want, const char **s, size_t *n)
+{
+	const char *t = g->glob, *end = t + g->nglob;
+
+	for (int f = 1; t < end; f++) {
+		const char *a, *b;
+		size_t h = 0;
+
+		while (t < end && *t == ' ')
+			t++;
+		for (a = t; t < end && *t >= '0' && *t <= '9' && h < 10000; t++)
+			h = 10 * h + (size_t)(*t - '0');
+		if (t > a && t < end && (*t == 'H' || *t == 'h') &&
+		    h <= (size_t)(end - t - 1)) {
+			a = t + 1;
+			b = t = a + h;
+		} else {
+			for (t = a; t < end && *t != g->pd && *t != g->rd; t++)
+				;
+			for (b = t; b > a && b[-1] == ' '; b--)
+				;
+		}
+		if (f == want) {
+			*s = a;
+			*n = (size_t)(b - a);
+			return 0;
+		}
+		while (t < end && *t != g->pd && *t != g->rd)
+			t++;
+		if (t >= end || *t == g->rd)
+			return -1;
+		t++;
+	}
+	return -1;
+}
+
+/* g->mm from the units flag (parameter 14) and, for flag 3, the unit
+ * name (15); 1 with a note when neither names a unit loft knows. */
+static void
+units(struct iges *g)
+{
+	const char *s = NULL, *ns = NULL;
+	size_t n = 0, nn = 0;
+	double x = 0;
+	char msg[160], q[40];
+
+	g->mm = 0;
+	if (global(g, 14, &s, &n) == 0 && n > 0 &&
+	    loft_parse_num(s, n, &x, NULL) == 0 && x >= 1 &&
+	    x < (double)(sizeof flag_mm / sizeof flag_mm[0]) && x == (int)x)
+		g->mm = flag_mm[(int)x];
+	if (x == 3 && global(g, 15, &ns, &nn) == 0)
+		for (size_t i = 0; i < sizeof name_mm / sizeof name_mm[0]; i++)
+			if (loft__word_is(ns, nn, name_mm[i].name))
+				g->mm = name_mm[i].mm;
+	if (g->mm > 0)
+		return;
+	g->mm = 1;
+	if (g->c->note == NULL)
+		return;
+	if (s == NULL || n == 0)
+		snprintf(msg, sizeof msg, "no unit flag");
+	else if (x == 3)
+		snprintf(msg, sizeof msg, "unit flag 3 names unit '%s', which "
+		    "loft does not know", loft__cadin_quote(q, sizeof q, ns,
+		    ns ? nn : 0));
+	else
+		snprintf(msg, sizeof msg, "unit flag '%s' is no IGES unit "
+		    "(1 to 11)", loft__cadin_quote(q, sizeof q, s, s ? n : 0));
+	strncat(msg, ": coordinates kept as the file has them",
+	    sizeof msg - strlen(msg) - 1);
+	g->c->note(g->c->ctx, 0, msg);
+}
+
 int
 loft_iges_read(const char *buf, size_t len, struct loft_cadin *c)
 {
@@ -582,6 +696,7 @@ loft_iges_read(const char *buf, size_t len, struct loft_cadin *c)
 	long nbad = c->nbad;
 
 	memset(&g, 0, sizeof g);
+	g.mm = 1;
 	g.buf = buf;
 	g.len = len;
 	g.c = c;
@@ -591,6 +706,8 @@ loft_iges_read(const char *buf, size_t len, struct loft_cadin *c)
 		g.oom = 1;
 	if (!g.oom && g.nd == 0)
 		loft__cadin_say(c, 0, "no directory entries: no IGES data");
+	else if (!g.oom)
+		units(&g);
 	for (size_t i = 0; i < g.nd && !g.oom; i++) {
 		const struct de *e = g.d + i;
 		long k = 2 * (long)i + 1;
@@ -625,6 +742,7 @@ loft_iges_read(const char *buf, size_t len, struct loft_cadin *c)
 	if (g.oom)
 		loft__cadin_say(c, 0, "out of memory");
 	free(g.d);
+	free(g.glob);
 	free(g.pline);
 	free(g.v);
 	return g.oom ? LOFT_ENOMEM : c->nbad > nbad ? LOFT_EINPUT : 0;

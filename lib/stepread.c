@@ -6,12 +6,15 @@
  * rectangle of the face's bounds), and the curves and surfaces a
  * GEOMETRIC_SET or GEOMETRIC_CURVE_SET holds (B-spline and Bezier curves,
  * rational or not, CIRCLE, TRIMMED_CURVE of a LINE or CIRCLE, and the
- * surfaces above).  Everything else (the topology, trimming, units,
- * other surfaces) is passed over; surfaces of faces of other kinds are
- * counted in one message.
+ * surfaces above).  Coordinates are read into millimetres from the
+ * length unit of the representation context (an SI_UNIT of the metre
+ * with its prefix, or a CONVERSION_BASED_UNIT of one, such as the inch).
+ * Everything else (the topology, trimming, other surfaces) is passed
+ * over; surfaces of faces of other kinds are counted in one message.
  * Program layer (loftprog.h, cadread.h): it writes records.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -50,6 +53,7 @@ struct step {
 	struct val *v;          /* v[0] is unused: index 0 means none */
 	size_t nv, vcap;
 	int oom;
+	double mm;              /* millimetres in the file's length unit */
 	struct {
 		const char *s;
 		size_t len;
@@ -412,6 +416,9 @@ point(struct step *st, long id, const char *type, double *x)
 		return -1;
 	for (long k = n; k < 3; k++)
 		x[k] = 0;
+	if (strcmp(type, "CARTESIAN_POINT") == 0)
+		for (int k = 0; k < 3; k++)
+			x[k] *= st->mm;
 	return 0;
 }
 
@@ -830,7 +837,9 @@ conic(struct step *st, long id, struct frame *f, double *a, double *b)
 	    arg(st, l, 3), b) == 0) && *a > 0 && isfinite(*a)) {
 		if (!ell)
 			*b = *a;
-		rc = *b > 0 && isfinite(*b) ? 0 : -1;
+		*a *= st->mm;
+		*b *= st->mm;
+		rc = *a > 0 && isfinite(*a) && *b > 0 && isfinite(*b) ? 0 : -1;
 	}
 	st->nv = mark;
 	return rc;
@@ -849,7 +858,7 @@ line_of(struct step *st, long id, double *p, double *d)
 	    point(st, ref_arg(st, v, 1), "DIRECTION", d) == 0 &&
 	    num_of(st, arg(st, v, 2), &mag) == 0 && unit(d) == 0) {
 		for (int k = 0; k < 3; k++)
-			d[k] *= mag;
+			d[k] *= mag * st->mm;
 		rc = 0;
 	}
 	st->nv = mark;
@@ -1169,6 +1178,177 @@ set(struct step *st, const struct ent *e)
 	st->nv = mark;
 }
 
+/* ---- the length unit ----------------------------------------------------- */
+
+/* Length units followed through conversions up to this deep: an inch
+ * of a millimetre of a metre is 2; more is a loop. */
+#define UNIT_DEPTH 8
+
+/* ISO 10303-41's si_prefix: millimetres in the metre with that prefix. */
+static const struct { const char *name; double mm; } si_prefix[] = {
+	{ "EXA", 1e21 }, { "PETA", 1e18 }, { "TERA", 1e15 }, { "GIGA", 1e12 },
+	{ "MEGA", 1e9 }, { "KILO", 1e6 }, { "HECTO", 1e5 }, { "DECA", 1e4 },
+	{ "DECI", 100 }, { "CENTI", 10 }, { "MILLI", 1 }, { "MICRO", 1e-3 },
+	{ "NANO", 1e-6 }, { "PICO", 1e-9 }, { "FEMTO", 1e-12 },
+	{ "ATTO", 1e-15 },
+};
+
+/* Millimetres in the SI_UNIT parameters l (prefix, name; a simple
+ * instance has named_unit's dimensions first), or 0: not a metre. */
+static double
+si_mm(const struct step *st, size_t l)
+{
+	size_t k = l != 0 && st->v[l].n == 3 ? 1 : 0;
+	const struct val *p = arg(st, l, k), *n = arg(st, l, k + 1);
+
+	if (p == NULL || n == NULL || n->kind != V_ENUM ||
+	    !loft__word_is(n->s, n->len, "METRE"))
+		return 0;
+	if (p->kind == V_UNSET)
+		return 1000;
+	for (size_t i = 0; p->kind == V_ENUM &&
+	    i < sizeof si_prefix / sizeof si_prefix[0]; i++)
+		if (loft__word_is(p->s, p->len, si_prefix[i].name))
+			return si_prefix[i].mm;
+	return 0;
+}
+
+/* Millimetres in unit entity id: an SI_UNIT of the metre, or a
+ * CONVERSION_BASED_UNIT whose (LENGTH_)MEASURE_WITH_UNIT is a number of
+ * such a unit (ISO 10303-41); 0 when it is neither. */
+static double
+unit_mm(struct step *st, long id, int depth)
+{
+	size_t mark = st->nv, l, m;
+	double mm = 0, x;
+
+	if (depth > UNIT_DEPTH)
+		return 0;
+	if ((l = part(st, id, "SI_UNIT")) != 0) {
+		mm = si_mm(st, l);
+	} else if ((l = part(st, id, "CONVERSION_BASED_UNIT")) != 0) {
+		long r = ref_arg(st, l, 1);
+
+		if ((m = part(st, r, "LENGTH_MEASURE_WITH_UNIT")) == 0)
+			m = part(st, r, "MEASURE_WITH_UNIT");
+		if (m != 0 && num_of(st, arg(st, m, 0), &x) == 0 && x > 0)
+			mm = x * unit_mm(st, ref_arg(st, m, 1), depth + 1);
+	}
+	st->nv = mark;
+	return mm > 0 && isfinite(mm) ? mm : 0;
+}
+
+/* Whether entity e's text holds word (a cheap test before parsing). */
+static int
+mentions(const struct step *st, const struct ent *e, const char *word)
+{
+	size_t n = strlen(word);
+
+	for (size_t i = 0; i + n <= e->len; i++)
+		if (memcmp(st->buf + e->at + i, word, n) == 0)
+			return 1;
+	return 0;
+}
+
+/* What the length units found tell: how many, the first's entity and
+ * millimetres, and whether they all agree. */
+struct units {
+	long n, first;
+	double mm;
+	int differ;
+};
+
+static void
+units_add(struct step *st, struct units *u, long id)
+{
+	size_t mark = st->nv;
+	double mm = unit_mm(st, id, 0);
+	int len = part(st, id, "LENGTH_UNIT") != 0;
+
+	st->nv = mark;
+	if (!len && mm == 0)
+		return;         /* an angle, a solid angle... */
+	if (u->n++ == 0) {
+		u->first = id;
+		u->mm = mm;
+	} else if (mm != u->mm) {
+		u->differ = 1;
+	}
+}
+
+/* The length units of the contexts (GLOBAL_UNIT_ASSIGNED_CONTEXT's
+ * units), else every LENGTH_UNIT of the file, into *u. */
+static void
+find_units(struct step *st, struct units *u)
+{
+	memset(u, 0, sizeof *u);
+	for (size_t i = 0; i < st->ne; i++) {
+		size_t mark = st->nv, l, list;
+
+		if (!mentions(st, st->e + i, "GLOBAL_UNIT_ASSIGNED_CONTEXT"))
+			continue;
+		l = part(st, st->e[i].id, "GLOBAL_UNIT_ASSIGNED_CONTEXT");
+		list = list_arg(st, l, 0);
+		for (size_t k = 0; list != 0 && k < st->v[list].n; k++)
+			units_add(st, u, ref_arg(st, list, k));
+		st->nv = mark;
+	}
+	for (size_t i = 0; u->n == 0 && i < st->ne; i++)
+		if (mentions(st, st->e + i, "LENGTH_UNIT"))
+			units_add(st, u, st->e[i].id);
+}
+
+/* The name of unit id for a message: a conversion's name, or the
+ * words of the unit's last part (SI_UNIT's prefix and name). */
+static void
+unit_name(struct step *st, long id, char *buf, size_t size)
+{
+	size_t mark = st->nv, l = part(st, id, "CONVERSION_BASED_UNIT");
+	const struct val *v = arg(st, l, 0);
+	size_t at, n;
+
+	if (v != NULL && v->kind == V_STR) {
+		(void)loft__cadin_quote(buf, size, v->s, v->len);
+	} else {
+		const struct ent *e = find(st, id);
+
+		at = e ? e->at : 0;
+		n = e ? e->len : 0;
+		(void)loft__cadin_quote(buf, size, st->buf + at, n);
+	}
+	st->nv = mark;
+}
+
+/* st->mm from the file's length unit; 1 with a note when there is none
+ * that loft reads, or several that differ. */
+static void
+length_unit(struct step *st)
+{
+	struct units u;
+	char msg[200], name[80];
+
+	find_units(st, &u);
+	st->mm = 1;
+	if (u.n > 0 && !u.differ && u.mm > 0) {
+		st->mm = u.mm;
+		return;
+	}
+	if (u.n == 0)
+		snprintf(msg, sizeof msg, "no length unit");
+	else if (u.differ)
+		snprintf(msg, sizeof msg, "%ld length units that differ (the "
+		    "first #%ld)", u.n, u.first);
+	else {
+		unit_name(st, u.first, name, sizeof name);
+		snprintf(msg, sizeof msg, "length unit #%ld '%s' is no metre "
+		    "nor a conversion of one", u.first, name);
+	}
+	strncat(msg, ": coordinates kept as the file has them",
+	    sizeof msg - strlen(msg) - 1);
+	if (st->c->note != NULL)
+		st->c->note(st->c->ctx, 0, msg);
+}
+
 /* Whether entity e's body begins with the type word. */
 static int
 begins(const struct step *st, const struct ent *e, const char *word)
@@ -1191,6 +1371,7 @@ loft_step_read(const char *buf, size_t len, struct loft_cadin *c)
 	st.len = len;
 	st.c = c;
 	st.nv = 1;
+	st.mm = 1;
 	if (scan(&st) != 0) {
 		free(st.e);
 		loft__cadin_say(c, 0, "out of memory");
@@ -1200,6 +1381,8 @@ loft_step_read(const char *buf, size_t len, struct loft_cadin *c)
 		qsort(st.e, st.ne, sizeof *st.e, cmp_ent);
 	if (st.ne == 0)
 		loft__cadin_say(c, 0, "no entity instances: no STEP data");
+	else
+		length_unit(&st);
 	for (size_t i = 0; i < st.ne && !st.oom; i++) {
 		if (begins(&st, st.e + i, "ADVANCED_FACE") ||
 		    begins(&st, st.e + i, "FACE_SURFACE"))
