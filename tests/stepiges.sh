@@ -84,6 +84,93 @@ for fmt in step iges; do
 	    no "$fmt: not told from its content: $(head -1 "$T/out")"
 done
 
+# ---- units: STEP's and IGES's length unit, read into millimetres ----------
+# tocad writes millimetres; with the file's unit rewritten, fromcad's
+# numbers are the millimetre ones times the unit's millimetres (a closed
+# form: 1 in = 25.4 mm, 1 m = 1000 mm, 1 cm = 10 mm)
+
+# scaled A B K: the largest difference between B's numbers and K times
+# A's, field by field (words must be equal), over B's largest number;
+# "count" when the lines or fields do not pair up
+scaled() {
+	awk -v k="$3" '
+	FNR == 1 { f++ }
+	{ L[f, FNR] = $0; N[f] = FNR }
+	END { if (N[1] != N[2] || N[1] == 0) { print "count"; exit }
+		for (i = 1; i <= N[1]; i++) {
+			n = split(L[1, i], a, " ")
+			if (split(L[2, i], b, " ") != n) { print "count"; exit }
+			for (j = 1; j <= n; j++) {
+				if (a[j] !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/) {
+					if (a[j] != b[j]) { print "count"; exit }
+					continue }
+				d = b[j] - k * a[j]; if (d < 0) d = -d
+				m = b[j] < 0 ? -b[j] : b[j]
+				if (d > w) w = d; if (m > big) big = m } }
+		print (big > 0 ? w / big : w) }' "$1" "$2"
+}
+cat "$T/space.cubic" "$T/bs.surf" >"$T/u.in"
+$B/tocad -f step "$T/u.in" >"$T/u.step"
+$B/tocad -f iges "$T/u.in" >"$T/u.igs"
+$B/fromcad "$T/u.step" >"$T/u.mm" 2>"$T/err" && [ ! -s "$T/err" ] && ok ||
+    no "units: tocad's millimetre STEP: $(head -2 "$T/err")"
+$B/fromcad "$T/u.igs" >"$T/u.gmm" 2>"$T/err" && [ ! -s "$T/err" ] && ok ||
+    no "units: tocad's millimetre IGES: $(head -2 "$T/err")"
+# unitcheck WHAT FILE FACTOR: fromcad reads FILE, exit 0, its numbers are
+# the millimetre file's (of its format) times FACTOR to 1e-15
+unitcheck() {
+	run "$B/fromcad $2"
+	status 0
+	case $2 in *.igs) ref=$T/u.gmm ;; *) ref=$T/u.mm ;; esac
+	scaled "$ref" "$T/out" "$3" >"$T/val"
+	within "units: $1 (x $3)" 1e-15
+}
+mmunit='SI_UNIT(\.MILLI\.,\.METRE\.)'
+sed "s/$mmunit/SI_UNIT(\$,.METRE.)/" "$T/u.step" >"$T/u-m.step"
+unitcheck "STEP in metres" "$T/u-m.step" 1000
+sed "s/$mmunit/SI_UNIT(.CENTI.,.METRE.)/" "$T/u.step" >"$T/u-cm.step"
+unitcheck "STEP in centimetres" "$T/u-cm.step" 10
+# an inch: a conversion of 25.4 millimetres
+sed "s/^#10=.*/#10=(CONVERSION_BASED_UNIT('INCH',#900002)LENGTH_UNIT()NAMED_UNIT(#900003));\\
+#900001=(LENGTH_UNIT()NAMED_UNIT(*)$mmunit);\\
+#900002=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#900001);\\
+#900003=DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);/" "$T/u.step" \
+    >"$T/u-in.step"
+unitcheck "STEP in inches (a conversion of the millimetre)" "$T/u-in.step" 25.4
+for u in in m cm; do
+	$B/tocad -f step -u $u "$T/u.in" >"$T/tu.step"
+	$B/tocad -f iges -u $u "$T/u.in" >"$T/tu.igs"
+	k=$(case $u in in) echo 25.4 ;; m) echo 1000 ;; *) echo 10 ;; esac)
+	unitcheck "tocad -u $u, STEP" "$T/tu.step" $k
+	unitcheck "tocad -u $u, IGES" "$T/tu.igs" $k
+done
+# a unit loft does not read: a note naming it, the numbers kept, exit 0
+sed "s/^#10=.*/#10=(CONVERSION_BASED_UNIT('FURLONG',#900002)LENGTH_UNIT()NAMED_UNIT(*));/" \
+    "$T/u.step" >"$T/u-fur.step"
+unitcheck "STEP in an unknown unit" "$T/u-fur.step" 1
+says "length unit #10 'FURLONG'"
+says "coordinates kept as the file has them"
+
+# igesunit FLAG,NAME: u.igs with global parameters 14 and 15 so (its
+# resolution, 19, shortened to keep the line in 72 columns)
+igesunit() {
+	awk -v new="$1" '/G      2$/ { b = substr($0, 1, 72)
+		sub(/^2,2HMM,/, new ",", b); sub(/,[0-9.]+E-[0-9]+,/, ",1E-09,", b)
+		printf "%-72sG%7d\n", b, 2; next } { print }' "$T/u.igs"
+}
+for c in "1,2HIN 25.4" "6,1HM 1000" "10,2HCM 10" "3,4HINCH 25.4" \
+    "9,2HUM 0.001" "4,2HFT 304.8"; do
+	set -- $c
+	igesunit "$1" >"$T/u-g.igs"
+	unitcheck "IGES unit flag and name $1" "$T/u-g.igs" "$2"
+done
+igesunit "3,4HFURL" >"$T/u-g.igs"
+unitcheck "IGES in an unknown unit" "$T/u-g.igs" 1
+says "unit flag 3 names unit 'FURL'"
+igesunit "12,2HMM" >"$T/u-g.igs"
+unitcheck "IGES with flag 12" "$T/u-g.igs" 1
+says "unit flag '12' is no IGES unit"
+
 # ---- STEP written by hand: conics, rational forms, trims ------------------
 
 step_doc() {
