@@ -199,7 +199,8 @@ compare-approx: all bin/test/noisy
 	    echo "compare-approx: skipped (no /usr/bin/python3 with scipy)"; fi
 	@if /usr/bin/python3 tests/glyphs.py bin/bench/g.knots bin/bench/g.truth \
 	    100 2>/dev/null && [ -s bin/bench/g.truth ]; then /usr/bin/python3 \
-	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench; else \
+	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench \
+	    bin/bench/g.knots; else \
 	    echo "compare-approx: glyphs skipped (no fontTools or fonts)"; fi
 .PHONY: compare-approx
 
