@@ -39,7 +39,8 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
           lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o \
           lib/mesh.o lib/sparse.o lib/unroll.o lib/surfmeasure.o \
-          lib/waterline.o lib/hydro.o lib/straight.o
+          lib/waterline.o lib/hydro.o lib/straight.o \
+          lib/corners.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
 PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o \
           lib/surfrecs.o lib/optrange.o
