@@ -1955,6 +1955,19 @@ settle(struct work *w, double *worst, size_t *at, struct loft_error *err)
 	return 0;
 }
 
+/* Where no span far from the points has points enough to split at
+ * its middle (a span over a corner's few points): split each such span
+ * anyway, its new knot on the points' polyline, so the curve is pulled
+ * to them.  Returns how many. */
+static size_t
+split_far(struct work *w)
+{
+	for (size_t j = 0; j < nseg_of(w); j++)
+		if (w->spanmax[j] > w->tol)
+			w->spanmax[j] = APPROX_FORCE;
+	return split(w, ALL_SPANS);
+}
+
 /* Remove the knots the points do not ask for, once (when the tolerance
  * is first met), and fair the wiggles left, after each round that
  * meets it; then the checks both ways.  Returns 0, or an error. */
@@ -2011,7 +2024,7 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 		if ((rc = tidy(w, &removed, &worst, &at, &bad, err)) != 0)
 			return rc;
 		if ((worst <= w->tol && bad == 0) || round >= o->maxround ||
-		    split(w, ALL_SPANS) == 0)
+		    (split(w, ALL_SPANS) == 0 && split_far(w) == 0))
 			break;
 		if (fit_project(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
