@@ -198,6 +198,7 @@ compare-approx: all bin/test/noisy
 	@if /usr/bin/python3 -c 'import scipy, numpy' 2>/dev/null; then \
 	    /usr/bin/python3 tests/bench/approx_scipy.py; else \
 	    echo "compare-approx: skipped (no /usr/bin/python3 with scipy)"; fi
+	@mkdir -p bin/bench
 	@if /usr/bin/python3 tests/glyphs.py bin/bench/g.knots bin/bench/g.truth \
 	    100 2>/dev/null && [ -s bin/bench/g.truth ]; then /usr/bin/python3 \
 	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench \
