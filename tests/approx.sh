@@ -305,6 +305,29 @@ shape() {
 		printf "%.6f %.6f\n", x + m * cos(2 * pi * v), y + m * sin(2 * pi * v)
 	} }'
 }
+# twoway CUBIC PTS TOL: every point of the curve (sample -n 64) within
+# TOL plus the mean spacing of the points of their closed polyline
+twoway() {
+	"$B/sample" -n 64 "$1" | awk -v tol="$3" 'FNR == 1 { f++ }
+	    !/^[-0-9.]/ { next }
+	    f == 1 { n++; px[n] = $1; py[n] = $2; next }
+	    { c++; cx[c] = $1; cy[c] = $2 }
+	    END { for (i = 1; i <= n; i++) { j = i % n + 1
+		    len += sqrt((px[j] - px[i]) ^ 2 + (py[j] - py[i]) ^ 2) }
+		room = tol + len / n; worst = 0
+		for (k = 1; k <= c; k++) { best = 1e300
+		    for (i = 1; i <= n; i++) { j = i % n + 1
+			ex = px[j] - px[i]; ey = py[j] - py[i]
+			l2 = ex * ex + ey * ey
+			t = l2 > 0 ? ((cx[k] - px[i]) * ex + (cy[k] - py[i]) * ey) / l2 : 0
+			t = t < 0 ? 0 : t > 1 ? 1 : t
+			d = (cx[k] - px[i] - t * ex) ^ 2 + (cy[k] - py[i] - t * ey) ^ 2
+			if (d < best) best = d }
+		    if (best > worst) worst = best }
+		worst = sqrt(worst); print worst, room; exit !(worst <= room) }' \
+	    "$2" - >"$T/twoway" && ok ||
+	    no "two-way: a curve point $(cat "$T/twoway") (distance, room) from the points of $2"
+}
 for seed in 1 2 3; do
 	shape square 400 0.3 $seed >"$T/sq.pts"
 	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
@@ -324,6 +347,8 @@ for seed in 1 2 3; do
 	"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/sqk.cubic" && ok ||
 	    no "square $seed, -K: want no corners: $(head -1 "$T/sqk.cubic")"
+	twoway "$T/sq.cubic" "$T/sq.pts" 1.2
+	twoway "$T/sqk.cubic" "$T/sq.pts" 1.2
 	shape circle 400 0.3 $seed >"$T/ci.pts"
 	"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/ci.cubic" && ok ||
