@@ -1968,6 +1968,77 @@ split_far(struct work *w)
 	return split(w, ALL_SPANS);
 }
 
+/* A span becomes straight where every point on it (this many at
+ * least: a line needs points to lean on) is within APPROX_LINE_FRAC of
+ * the tolerance of the chord between its knots: noise that close to a
+ * line is the line's, and the rest of the tolerance is left for the
+ * curve beside it, which the straight span now ends with its
+ * direction. */
+#define APPROX_LINE_MIN 6
+#define APPROX_LINE_FRAC 0.75
+
+/* Whether the points on span j lie along the chord of its knots. */
+static int
+span_is_line(const struct work *w, size_t j)
+{
+	int dim = w->dim;
+	const double *a = w->k + j * dim, *b = w->k + ((j + 1) % w->m) * dim;
+	double u[LOFT_MAXDIM];
+	size_t count = 0;
+
+	vsub(u, b, a, dim);
+	if (!(vunit(u, dim) > 0))
+		return 0;
+	for (size_t i = 0; i < w->n; i++) {
+		double r[LOFT_MAXDIM];
+
+		if (w->fj[i] != j)
+			continue;
+		vsub(r, w->q + i * dim, a, dim);
+		vaxpy(r, -vdot(r, u, dim), u, dim);
+		if (vnorm(r, dim) > APPROX_LINE_FRAC * w->tol)
+			return 0;
+		count++;
+	}
+	return count >= APPROX_LINE_MIN;
+}
+
+/* Straight runs of points become straight spans: the spans whose points
+ * lie along their chord are refitted straight, kept where every point
+ * is still within the tolerance and the curve passes both checks.
+ * Returns 0, or an error. */
+static int
+straight_runs(struct work *w, double *worst, size_t *at,
+    struct loft_error *err)
+{
+	size_t ns = nseg_of(w), nl = 0, *line = malloc(ns * sizeof *line);
+	size_t bad;
+
+	if (line == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t j = 0; j < ns; j++)
+		if (span_is_line(w, j))
+			line[nl++] = j;
+	if (nl > 0) {
+		double was = *worst;
+		size_t wat = *at;
+
+		save_state(w);
+		w->fit.straight = line;
+		w->fit.nstraight = nl;
+		if (fit_project(w, worst, at, err) != 0 ||
+		    *worst > w->tol || (bad = check_spans(w, *worst)) != 0) {
+			restore_state(w);       /* the curve as it was */
+			*worst = was;
+			*at = wat;
+		}
+	}
+	w->fit.straight = NULL;
+	w->fit.nstraight = 0;
+	free(line);
+	return 0;
+}
+
 /* Remove the knots the points do not ask for, once (when the tolerance
  * is first met), and fair the wiggles left, after each round that
  * meets it; then the checks both ways.  Returns 0, or an error. */
@@ -2029,6 +2100,8 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 		if (fit_project(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
 	}
+	if (worst <= w->tol && straight_runs(w, &worst, &at, err) != 0)
+		return LOFT_EGEOM;
 	info->nknots = w->m;
 	info->nseg = nseg_of(w);
 	info->dist = worst;

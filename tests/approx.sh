@@ -348,6 +348,13 @@ for seed in 1 2 3; do
 	    ! grep -q corners= "$T/sqk.cubic" && ok ||
 	    no "square $seed, -K: want no corners: $(head -1 "$T/sqk.cubic")"
 	twoway "$T/sq.cubic" "$T/sq.pts" 1.2
+	# straight runs: two sides at least are exact lines (both tangents
+	# along the chord, to rounding)
+	awk '/^[-0-9.]/ { cx = $3 - $1; cy = $4 - $2; c = sqrt(cx * cx + cy * cy)
+	    a = ($5 * cy - $6 * cx) / c; b = ($7 * cy - $8 * cx) / c
+	    if (c > 0 && a * a + b * b < 1e-18 * c * c && $5 * cx + $6 * cy > 0) l++ }
+	    END { exit !(l >= 2) }' "$T/sq.cubic" && ok ||
+	    no "square $seed: want 2 straight segments at least: $(cat "$T/sq.cubic")"
 	twoway "$T/sqk.cubic" "$T/sq.pts" 1.2
 	shape circle 400 0.3 $seed >"$T/ci.pts"
 	"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
