@@ -39,7 +39,8 @@ COREOBJ = lib/num.o lib/cubic.o lib/fit.o lib/cspline.o lib/curve.o \
           lib/grow.o lib/record.o lib/knots.o lib/types.o lib/approx.o \
           lib/cholesky.o lib/bezform.o lib/grid.o lib/labels.o lib/bspline.o \
           lib/mesh.o lib/sparse.o lib/unroll.o lib/surfmeasure.o \
-          lib/waterline.o lib/hydro.o lib/straight.o
+          lib/waterline.o lib/hydro.o lib/straight.o \
+          lib/corners.o
 # the program layer (lib/loftprog.h): streams, the run loop, designs
 PROGOBJ = lib/stream.o lib/run.o lib/outfiles.o lib/design.o \
           lib/surfrecs.o lib/optrange.o
@@ -198,9 +199,11 @@ compare-approx: all bin/test/noisy
 	@if /usr/bin/python3 -c 'import scipy, numpy' 2>/dev/null; then \
 	    /usr/bin/python3 tests/bench/approx_scipy.py; else \
 	    echo "compare-approx: skipped (no /usr/bin/python3 with scipy)"; fi
+	@mkdir -p bin/bench
 	@if /usr/bin/python3 tests/glyphs.py bin/bench/g.knots bin/bench/g.truth \
 	    100 2>/dev/null && [ -s bin/bench/g.truth ]; then /usr/bin/python3 \
-	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench; else \
+	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench \
+	    bin/bench/g.knots; else \
 	    echo "compare-approx: glyphs skipped (no fontTools or fonts)"; fi
 .PHONY: compare-approx
 

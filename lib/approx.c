@@ -126,6 +126,7 @@ struct work {
 	unsigned char *stried;
 	double *sdist;
 	size_t sm0;
+	int checks;             /* rounds of splitting the checks asked */
 	struct loft_fit_opts fit;
 };
 
@@ -593,6 +594,189 @@ correct(struct work *w)
 	return big;
 }
 
+/* The two-way check: each span is sampled at APPROX_STRAY_SAMPLES
+ * points, each of which must be within the tolerance plus the mean
+ * spacing of the points of the polyline through the points near the
+ * span (their feet within one span of it): the points' distance to the
+ * curve alone misses a loop the curve makes between two of them. */
+#define APPROX_STRAY_SAMPLES 16
+
+/* A knot put on the points to pull a span astray back keeps this
+ * fraction of the tolerance from the span's ends (else it is the
+ * middle of their chord): nearer, the fit through them is ill-posed. */
+#define APPROX_APART 0.25
+
+/* Rounds of splitting at most that the checks both ways ask for: each
+ * mends the spans astray; past these, a span still astray is one the
+ * points' own noise draws, which more knots only follow closer. */
+#define APPROX_CHECK_ROUNDS 3
+
+/* A span so marked in spanmax is split wherever it lies (split). */
+#define APPROX_FORCE HUGE_VAL
+
+/* Whether span a is span b or a neighbour of it. */
+static int
+span_near(const struct work *w, size_t a, size_t b)
+{
+	size_t ns = nseg_of(w), d = a >= b ? a - b : b - a;
+
+	return d <= 1 || (w->closed && ns - d <= 1);
+}
+
+/* The nearest point to x of the polyline of the points near span j
+ * (edge i from point i to the next), into f; returns its distance. */
+static double
+polyline_foot(const struct work *w, size_t j, const double *x, double *f)
+{
+	int dim = w->dim;
+	size_t ne = w->closed ? w->n : w->n - 1;
+	double best = HUGE_VAL;
+
+	for (size_t i = 0; i < ne; i++) {
+		size_t i1 = (i + 1) % w->n;
+		const double *a = w->q + i * dim, *b = w->q + i1 * dim;
+		double ab[LOFT_MAXDIM], ax[LOFT_MAXDIM], c[LOFT_MAXDIM], t, l2, d;
+
+		if (!span_near(w, w->fj[i], j) && !span_near(w, w->fj[i1], j))
+			continue;
+		vsub(ab, b, a, dim);
+		vsub(ax, x, a, dim);
+		l2 = vdot(ab, ab, dim);
+		t = l2 > 0 ? vdot(ab, ax, dim) / l2 : 0;
+		t = t < 0 ? 0 : t > 1 ? 1 : t;
+		vcopy(c, a, dim);
+		vaxpy(c, t, ab, dim);
+		if ((d = vdist(c, x, dim)) < best) {
+			best = d;
+			if (f != NULL)
+				vcopy(f, c, dim);
+		}
+	}
+	return best;
+}
+
+/* Mark (APPROX_FORCE in spanmax) each span that strays from the
+ * points' polyline; returns how many. */
+static size_t
+stray_spans(struct work *w)
+{
+	size_t ns = nseg_of(w), bad = 0;
+	double room = w->tol + w->s[w->n] / w->n;
+
+	for (size_t j = 0; j < ns; j++)
+		for (int k = 1; k < APPROX_STRAY_SAMPLES; k++) {
+			double x[LOFT_MAXDIM];
+
+			span_eval(w, j, (double)k / APPROX_STRAY_SAMPLES, x,
+			    NULL, NULL);
+			if (polyline_foot(w, j, x, NULL) > room) {
+				w->spanmax[j] = APPROX_FORCE;
+				bad++;
+				break;
+			}
+		}
+	return bad;
+}
+
+/* The self-crossing check of a plane curve: its polyline of
+ * APPROX_STRAY_SAMPLES edges a span, filed in a grid; two edges, not
+ * neighbours, that cross mark both their spans. */
+struct crossing {
+	struct work *w;
+	double *pt;
+	size_t ne, e, bad;
+};
+
+static void
+edge_of(const struct crossing *c, size_t e, double *sg)
+{
+	size_t e1 = (e + 1) % (c->ne + !c->w->closed);
+
+	sg[0] = c->pt[2 * e];
+	sg[1] = c->pt[2 * e + 1];
+	sg[2] = c->pt[2 * e1];
+	sg[3] = c->pt[2 * e1 + 1];
+}
+
+static int
+edge_crosses(void *ctx, size_t f)
+{
+	struct crossing *c = ctx;
+	size_t d = c->e > f ? c->e - f : f - c->e;
+	double s[4], t[4];
+
+	if (d <= 1 || (c->w->closed && c->ne - d <= 1))
+		return 0;
+	edge_of(c, c->e, s);
+	edge_of(c, f, t);
+	if (loft_segments_cross(s, t)) {
+		size_t ja = c->e / APPROX_STRAY_SAMPLES;
+		size_t jb = f / APPROX_STRAY_SAMPLES;
+
+		c->bad += (c->w->spanmax[ja] != APPROX_FORCE) +
+		    (c->w->spanmax[jb] != APPROX_FORCE && jb != ja);
+		c->w->spanmax[ja] = c->w->spanmax[jb] = APPROX_FORCE;
+	}
+	return 0;
+}
+
+/* Mark the spans of the plane curve that cross; returns how many,
+ * or (size_t)-1 out of memory. */
+static size_t
+crossing_spans(struct work *w)
+{
+	size_t ns = nseg_of(w), np = ns * APPROX_STRAY_SAMPLES + !w->closed;
+	struct crossing c = { w, malloc(2 * np * sizeof(double)), 0, 0, 0 };
+	struct loft_grid g;
+	double lo[2] = { HUGE_VAL, HUGE_VAL }, cell, sg[4];
+	size_t e;
+
+	if (w->dim != 2 || c.pt == NULL) {
+		free(c.pt);
+		return w->dim != 2 ? 0 : (size_t)-1;
+	}
+	c.ne = w->closed ? np : np - 1;
+	for (size_t i = 0; i < np; i++) {
+		size_t j = i / APPROX_STRAY_SAMPLES < ns ?
+		    i / APPROX_STRAY_SAMPLES : ns - 1;
+
+		span_eval(w, j, (double)(i - j * APPROX_STRAY_SAMPLES) /
+		    APPROX_STRAY_SAMPLES, c.pt + 2 * i, NULL, NULL);
+		lo[0] = fmin(lo[0], c.pt[2 * i]);
+		lo[1] = fmin(lo[1], c.pt[2 * i + 1]);
+	}
+	cell = 2 * w->s[w->n] / c.ne;
+	if (!(cell > 0) || loft_grid_init(&g, cell, cell, lo, 4 * c.ne) != 0) {
+		free(c.pt);
+		return cell > 0 ? (size_t)-1 : 0;
+	}
+	for (e = 0; e < c.ne; e++) {
+		edge_of(&c, e, sg);
+		if (loft_grid_add_segment(&g, sg, e) != 0)
+			break;
+	}
+	for (size_t f = 0; f < c.ne && e == c.ne; f++) {
+		edge_of(&c, c.e = f, sg);
+		loft_grid_each_along(&g, sg, edge_crosses, &c);
+	}
+	loft_grid_free(&g);
+	free(c.pt);
+	return e == c.ne ? c.bad : (size_t)-1;
+}
+
+/* Both checks once every point is within the tolerance: the spans that
+ * stray or cross, marked; how many. */
+static size_t
+check_spans(struct work *w, double worst)
+{
+	size_t bad;
+
+	if (worst > w->tol)
+		return 0;
+	bad = stray_spans(w);
+	return bad + crossing_spans(w);
+}
+
 /*
  * Split every span with a point farther than the tolerance (only ==
  * ALL_SPANS) or span only, where it has at least APPROX_SPLIT_MIN
@@ -613,8 +797,8 @@ split(struct work *w, size_t only)
 		count[w->fj[i]]++;
 	for (size_t j = 0; j < ns; j++) {
 		count[j] = (only == j || (only == ALL_SPANS &&
-		    w->spanmax[j] > w->tol)) &&
-		    count[j] >= APPROX_SPLIT_MIN && w->m + add < w->n;
+		    w->spanmax[j] > w->tol)) && (count[j] >= APPROX_SPLIT_MIN ||
+		    w->spanmax[j] == APPROX_FORCE) && w->m + add < w->n;
 		add += count[j];
 	}
 	if (add == 0)
@@ -628,6 +812,23 @@ split(struct work *w, size_t only)
 		if (j < ns && count[j]) {
 			loft_cubic_eval(w->seg + j * 4 * dim, dim, 0.5,
 			    kn + t * dim, NULL, NULL);
+			if (w->spanmax[j] == APPROX_FORCE) {
+				/* a span astray: the new knot on the points */
+				double x[LOFT_MAXDIM];
+
+				vcopy(x, kn + t * dim, dim);
+				polyline_foot(w, j, x, kn + t * dim);
+				if (fmin(vdist(kn + t * dim, w->k + j * dim,
+				    dim), vdist(kn + t * dim, w->k + ((j + 1) %
+				    w->m) * dim, dim)) < APPROX_APART * w->tol) {
+					/* at a knot: the chord's middle */
+					vcopy(kn + t * dim, w->k + j * dim, dim);
+					vaxpy(kn + t * dim, 1, w->k + ((j + 1) %
+					    w->m) * dim, dim);
+					vscale(kn + t * dim, 0.5, kn + t * dim,
+					    dim);
+				}
+			}
 			fx[t++] = 0;
 		}
 	}
@@ -1754,13 +1955,131 @@ settle(struct work *w, double *worst, size_t *at, struct loft_error *err)
 	return 0;
 }
 
+/* Where no span far from the points has points enough to split at
+ * its middle (a span over a corner's few points): split each such span
+ * anyway, its new knot on the points' polyline, so the curve is pulled
+ * to them.  Returns how many. */
+static size_t
+split_far(struct work *w)
+{
+	for (size_t j = 0; j < nseg_of(w); j++)
+		if (w->spanmax[j] > w->tol)
+			w->spanmax[j] = APPROX_FORCE;
+	return split(w, ALL_SPANS);
+}
+
+/* A span becomes straight where every point on it (this many at
+ * least: a line needs points to lean on) is within APPROX_LINE_FRAC of
+ * the tolerance of the chord between its knots: noise that close to a
+ * line is the line's, and the rest of the tolerance is left for the
+ * curve beside it, which the straight span now ends with its
+ * direction. */
+#define APPROX_LINE_MIN 6
+#define APPROX_LINE_FRAC 0.75
+
+/* Whether the points on span j lie along the chord of its knots. */
+static int
+span_is_line(const struct work *w, size_t j)
+{
+	int dim = w->dim;
+	const double *a = w->k + j * dim, *b = w->k + ((j + 1) % w->m) * dim;
+	double u[LOFT_MAXDIM];
+	size_t count = 0;
+
+	vsub(u, b, a, dim);
+	if (!(vunit(u, dim) > 0))
+		return 0;
+	for (size_t i = 0; i < w->n; i++) {
+		double r[LOFT_MAXDIM];
+
+		if (w->fj[i] != j)
+			continue;
+		vsub(r, w->q + i * dim, a, dim);
+		vaxpy(r, -vdot(r, u, dim), u, dim);
+		if (vnorm(r, dim) > APPROX_LINE_FRAC * w->tol)
+			return 0;
+		count++;
+	}
+	return count >= APPROX_LINE_MIN;
+}
+
+/* Straight runs of points become straight spans: the spans whose points
+ * lie along their chord are refitted straight, kept where every point
+ * is still within the tolerance and the curve passes both checks.
+ * Returns 0, or an error. */
+static int
+straight_runs(struct work *w, double *worst, size_t *at,
+    struct loft_error *err)
+{
+	size_t ns = nseg_of(w), nl = 0, *line = malloc(ns * sizeof *line);
+	size_t bad;
+
+	if (line == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	for (size_t j = 0; j < ns; j++)
+		if (span_is_line(w, j))
+			line[nl++] = j;
+	if (nl > 0) {
+		double was = *worst;
+		size_t wat = *at;
+
+		save_state(w);
+		w->fit.straight = line;
+		w->fit.nstraight = nl;
+		if (fit_project(w, worst, at, err) != 0 ||
+		    *worst > w->tol || (bad = check_spans(w, *worst)) != 0) {
+			restore_state(w);       /* the curve as it was */
+			*worst = was;
+			*at = wat;
+		}
+	}
+	w->fit.straight = NULL;
+	w->fit.nstraight = 0;
+	free(line);
+	return 0;
+}
+
+/* Remove the knots the points do not ask for, once (when the tolerance
+ * is first met), and fair the wiggles left, after each round that
+ * meets it; then the checks both ways.  Returns 0, or an error. */
+static int
+tidy(struct work *w, int *removed, double *worst, size_t *at, size_t *bad,
+    struct loft_error *err)
+{
+	if (*worst <= w->tol && !*removed) {
+		*removed = 1;
+		if (w->m <= APPROX_REMOVE_MAX) {
+			remove_knots(w);
+			straighten(w);
+		}
+		if (fit_project(w, worst, at, err) != 0 ||
+		    settle(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	if (*worst <= w->tol && w->m <= APPROX_REMOVE_MAX) {
+		if (fair_wiggles(w) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		if (fit_project(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	if (w->checks >= APPROX_CHECK_ROUNDS) {
+		*bad = 0;
+		return 0;
+	}
+	if ((*bad = check_spans(w, *worst)) > 0)
+		w->checks++;
+	if (*bad == (size_t)-1)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	return 0;
+}
+
 static int
 approx_run(struct work *w, const struct loft_approx_opts *o,
     const size_t *corner, struct loft_approx_info *info,
     struct loft_error *err)
 {
 	double worst;
-	size_t at;
+	size_t at, bad = 0;
 	int round, removed = 0;
 
 	if (smooth(w) != 0)
@@ -1769,29 +2088,20 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 	if (fit_project(w, &worst, &at, err) != 0)
 		return LOFT_EGEOM;
 	for (round = 1;; round++) {
+		int rc;
+
 		if (settle(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
-		if (worst <= w->tol && !removed) {
-			removed = 1;
-			if (w->m <= APPROX_REMOVE_MAX) {
-				remove_knots(w);
-				straighten(w);
-			}
-			if (fit_project(w, &worst, &at, err) != 0 ||
-			    settle(w, &worst, &at, err) != 0)
-				return LOFT_EGEOM;
-		}
-		if (worst <= w->tol || round >= o->maxround || split(w, ALL_SPANS) == 0)
+		if ((rc = tidy(w, &removed, &worst, &at, &bad, err)) != 0)
+			return rc;
+		if ((worst <= w->tol && bad == 0) || round >= o->maxround ||
+		    (split(w, ALL_SPANS) == 0 && split_far(w) == 0))
 			break;
 		if (fit_project(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
 	}
-	if (worst <= w->tol && w->m <= APPROX_REMOVE_MAX) {
-		if (fair_wiggles(w) != 0)
-			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-		if (fit_project(w, &worst, &at, err) != 0)
-			return LOFT_EGEOM;
-	}
+	if (worst <= w->tol && straight_runs(w, &worst, &at, err) != 0)
+		return LOFT_EGEOM;
 	info->nknots = w->m;
 	info->nseg = nseg_of(w);
 	info->dist = worst;

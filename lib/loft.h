@@ -376,6 +376,18 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
 /* ------------------------------------------------------------------ */
 /* Approximating noisy points by a fair curve (approx.c)               */
 
+/*
+ * The corners of an outline given by n dense points p (dimension dim,
+ * in order along it; closed: the last joins the first), found at a
+ * scale of a few tol (corners.c): the points where the least-squares
+ * lines through the points either side, over that length, turn by 30
+ * degrees or more, the sharpest within it.  Their indices, increasing,
+ * into corner (room for n); returns their count (0 also when out of
+ * memory).  A circle or a gentle bend gives none.
+ */
+size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
+    double tol, size_t *corner);
+
 /* Fewest points a closed and an open approximation take. */
 #define LOFT_APPROX_MIN_CLOSED 4
 #define LOFT_APPROX_MIN_OPEN   3

@@ -167,7 +167,7 @@ $N -n 600 -s 0.1 -r 2 $I >"$T/i.pts"
 fit i 0.45
 checks i 0.45 1 $I
 $N -n 400 -s 0.3 -r 3 $I >"$T/i2.pts"
-fit i2 1.2
+fit i2 1.2 -K
 checks i2 1.2 1 $I
 
 # ---- blobs: a convex one and one with inflexions ---------------------------
@@ -188,7 +188,7 @@ same_inflexions b2 "blob" $B2
 # within the tolerance; the curve must have the truth's inflexions
 E5="ellipse 79.867 24.215"
 $N -n 740 -s 0.489 -r 59 $E5 >"$T/e5.pts"
-fit e5 1.956
+fit e5 1.956 -K
 checks e5 1.956 1 $E5
 same_inflexions e5 "ellipse 59" $E5
 $N -n 629 -s 0.07 -r 22 $I >"$T/i3.pts"
@@ -283,6 +283,86 @@ set -- $l
 run "printf 'points\n0 0 1\n2 1 0\n\npoints\n0 0\n1 1\n3 30\n' | $B/splinefit -o"
 status 0
 [ "$(grep -c '^cubic' "$T/out")" = 2 ] && ok || no "two records: $(cat "$T/out")"
+
+# ---- corners found (issue 23): a noisy square keeps its four, a noisy
+# circle has none, -K turns them off --------------------------------------
+# noisy SHAPE N SIGMA SEED: a square of side 100 (corners at 0 0, 100 0,
+# 100 100, 0 100) or a circle of radius 50, N points even in length,
+# Gaussian noise (Box-Muller on awk's rand)
+shape() {
+	awk -v s="$1" -v n="$2" -v g="$3" -v r="$4" 'BEGIN { srand(r)
+	pi = atan2(0, -1)
+	for (i = 0; i < n; i++) {
+		t = i / n
+		if (s == "square") {
+			e = int(4 * t); f = 4 * t - e
+			x = e == 0 ? 100 * f : e == 1 ? 100 : e == 2 ? 100 - 100 * f : 0
+			y = e == 0 ? 0 : e == 1 ? 100 * f : e == 2 ? 100 : 100 - 100 * f
+		} else {
+			x = 50 * cos(2 * pi * t); y = 50 * sin(2 * pi * t)
+		}
+		u = 1 - rand(); v = rand(); m = g * sqrt(-2 * log(u))
+		printf "%.6f %.6f\n", x + m * cos(2 * pi * v), y + m * sin(2 * pi * v)
+	} }'
+}
+# twoway CUBIC PTS TOL: every point of the curve (sample -n 64) within
+# TOL plus the mean spacing of the points of their closed polyline
+twoway() {
+	"$B/sample" -n 64 "$1" | awk -v tol="$3" 'FNR == 1 { f++ }
+	    !/^[-0-9.]/ { next }
+	    f == 1 { n++; px[n] = $1; py[n] = $2; next }
+	    { c++; cx[c] = $1; cy[c] = $2 }
+	    END { for (i = 1; i <= n; i++) { j = i % n + 1
+		    len += sqrt((px[j] - px[i]) ^ 2 + (py[j] - py[i]) ^ 2) }
+		room = tol + len / n; worst = 0
+		for (k = 1; k <= c; k++) { best = 1e300
+		    for (i = 1; i <= n; i++) { j = i % n + 1
+			ex = px[j] - px[i]; ey = py[j] - py[i]
+			l2 = ex * ex + ey * ey
+			t = l2 > 0 ? ((cx[k] - px[i]) * ex + (cy[k] - py[i]) * ey) / l2 : 0
+			t = t < 0 ? 0 : t > 1 ? 1 : t
+			d = (cx[k] - px[i] - t * ex) ^ 2 + (cy[k] - py[i] - t * ey) ^ 2
+			if (d < best) best = d }
+		    if (best > worst) worst = best }
+		worst = sqrt(worst); print worst, room; exit !(worst <= room) }' \
+	    "$2" - >"$T/twoway" && ok ||
+	    no "two-way: a curve point $(cat "$T/twoway") (distance, room) from the points of $2"
+}
+for seed in 1 2 3; do
+	shape square 400 0.3 $seed >"$T/sq.pts"
+	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
+	    no "square $seed: $(cat "$T/sq.err")"
+	# each true corner has a corner joint within 2 tol, and no other
+	awk 'NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
+		for (k in c) if (c[k] != "") want[c[k] + 0] = 1; next }
+	    { j++; if (j in want) { found++
+		  d = 1e9
+		  for (q = 0; q < 4; q++) {
+			  cx = (q == 1 || q == 2) * 100; cy = (q >= 2) * 100
+			  e = sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2); if (e < d) d = e
+		  }
+		  if (d <= 2.4) near++ } }
+	    END { exit !(found == 4 && near == 4) }' "$T/sq.cubic" && ok ||
+	    no "square $seed: want 4 corners at the square's: $(head -1 "$T/sq.cubic")"
+	"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
+	    ! grep -q corners= "$T/sqk.cubic" && ok ||
+	    no "square $seed, -K: want no corners: $(head -1 "$T/sqk.cubic")"
+	twoway "$T/sq.cubic" "$T/sq.pts" 1.2
+	# straight runs: two sides at least are exact lines (both tangents
+	# along the chord, to rounding)
+	awk '/^[-0-9.]/ { cx = $3 - $1; cy = $4 - $2; c = sqrt(cx * cx + cy * cy)
+	    a = ($5 * cy - $6 * cx) / c; b = ($7 * cy - $8 * cx) / c
+	    if (c > 0 && a * a + b * b < 1e-18 * c * c && $5 * cx + $6 * cy > 0) l++ }
+	    END { exit !(l >= 2) }' "$T/sq.cubic" && ok ||
+	    no "square $seed: want 2 straight segments at least: $(cat "$T/sq.cubic")"
+	twoway "$T/sqk.cubic" "$T/sq.pts" 1.2
+	shape circle 400 0.3 $seed >"$T/ci.pts"
+	"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
+	    ! grep -q corners= "$T/ci.cubic" && ok ||
+	    no "circle $seed: want no corner: $(head -1 "$T/ci.cubic")"
+done
+run "$B/splinefit -K $T/sq.pts"
+status 2
 
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then

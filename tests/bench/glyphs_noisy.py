@@ -1,95 +1,262 @@
 #!/usr/bin/python3
-"""glyphs_noisy.py: splinefit -e on noisy glyph contours (issue 23).
+"""glyphs_noisy.py: splinefit -e on noisy glyph contours (issue 23),
+beside potrace tracing the same points rasterised.
 
-    glyphs_noisy.py TRUTH WORKDIR
+    glyphs_noisy.py TRUTH WORKDIR [KNOTS]
 
-TRUTH: the designer's outlines of tests/glyphs.py.  The first 100 are
-sampled at 400 points even in arc length, with Gaussian noise of 0.1,
-0.25 or 0.5% of the contour's size (sigma), and fitted one by one by
-splinefit -e 4*sigma (no corners given); printed: the fits that fail,
-the curves that cross themselves (their polyline of 30 points a
-segment), the Hausdorff distance to the true outline in sigmas, and the
-segments, at the median and 90th percentile."""
+TRUTH: the designer's outlines of tests/glyphs.py (200 points a
+segment); KNOTS: its knot records, whose corners= name the true
+corners.  The first 100 contours are sampled at 400 points even in arc
+length, with Gaussian noise of 0.1, 0.25 or 0.5% of the contour's size
+(sigma), and fitted one by one by splinefit -e 4*sigma (no corners
+given).  Where Debian's potrace is installed, the polygon of the same
+noisy points is filled on a raster of pixels sigma wide and traced by
+potrace (its defaults) to SVG; its largest path is read back.  Printed
+for each: the fits that fail, the curves that cross themselves (their
+polyline of 30 points a segment), the Hausdorff distance to the true
+outline in sigmas, and the segments, at the median and 90th
+percentile; for splinefit also the true corners kept (a corner= joint
+of the fit within 2 TOL of a true corner that turns by CORNER or more)
+and its false corners (a corner= joint farther than 2 TOL from every
+true corner the outline has)."""
+import math
+import os
 import random
+import re
+import shutil
 import subprocess
 import sys
 
 import numpy as np
 from scipy.spatial import cKDTree
 
+CORNER = math.radians(30)   # a true corner sharper than this must be kept
+SEG = 200                   # truth points a segment (tests/glyphs.py)
+PER = 30                    # samples a segment of each curve
+
 
 def records(text):
-    recs, cur = [], []
+    """(header, rows) of each record of a loft stream."""
+    recs, cur, head = [], [], ""
     for line in text.splitlines() + [""]:
         w = line.split()
         if not w:
             if cur:
-                recs.append(np.array(cur))
+                recs.append((head, np.array(cur)))
             cur = []
         elif w[0][0] in "-.0123456789":
-            cur.append([float(w[0]), float(w[1])])
+            cur.append([float(x) for x in w])
+        else:
+            head = line
     return recs
 
 
 def crosses(p):
     """Whether the closed polyline p has two edges, not neighbours, that
-    cross."""
+    cross (edges compared in blocks of rows against all)."""
     n = len(p)
-    q = np.roll(p, -1, axis=0)
+    a, b = p, np.roll(p, -1, axis=0)
 
     def o(a, b, c):
         return (b[..., 0] - a[..., 0]) * (c[..., 1] - a[..., 1]) - \
             (b[..., 1] - a[..., 1]) * (c[..., 0] - a[..., 0])
-    for i in range(n):
-        j = np.arange(i + 2, n)
-        if i == 0:
-            j = j[j != n - 1]
-        if len(j) and np.any((o(p[i], q[i], p[j]) * o(p[i], q[i], q[j]) < 0) &
-                             (o(p[j], q[j], p[i]) * o(p[j], q[j], q[i]) < 0)):
+    idx = np.arange(n)
+    for lo in range(0, n, 256):
+        i = idx[lo:lo + 256, None]
+        ai, bi = a[lo:lo + 256, None], b[lo:lo + 256, None]
+        x = (o(ai, bi, a[None]) * o(ai, bi, b[None]) < 0) & \
+            (o(a[None], b[None], ai) * o(a[None], b[None], bi) < 0)
+        gap = (idx[None] - i) % n
+        if np.any(x & (gap > 1) & (gap < n - 1)):
             return True
     return False
 
 
+def hermite(rows):
+    """Samples of a cubic record's Hermite rows (pa pb da db), PER a
+    segment, closed polyline without its repeated end."""
+    u = np.linspace(0, 1, PER, endpoint=False)[:, None]
+    h00, h10 = 2 * u**3 - 3 * u**2 + 1, u**3 - 2 * u**2 + u
+    h01, h11 = -2 * u**3 + 3 * u**2, u**3 - u**2
+    return np.concatenate([h00 * r[0:2] + h01 * r[2:4] + h10 * r[4:6] +
+                           h11 * r[6:8] for r in rows])
+
+
+def bezier(ctl):
+    u = np.linspace(0, 1, PER, endpoint=False)[:, None]
+    n = len(ctl) - 1
+    return sum(math.comb(n, i) * u**i * (1 - u)**(n - i) * ctl[i]
+               for i in range(n + 1))
+
+
+def hausdorff(c, dense):
+    return max(cKDTree(dense).query(c)[0].max(),
+               cKDTree(c).query(dense)[0].max())
+
+
+def raster(pts, s):
+    """The polygon pts filled (even-odd) on pixels s wide, with a margin
+    of 4 pixels: rows top first, and the origin of pixel (0, bottom)."""
+    lo = pts.min(axis=0) - 4 * s
+    w, h = (np.ceil((pts.max(axis=0) + 4 * s - lo) / s)).astype(int)
+    img = np.zeros((h, w), dtype=np.uint8)
+    a, b = pts, np.roll(pts, -1, axis=0)
+    xc = lo[0] + (np.arange(w) + 0.5) * s
+    for r in range(h):
+        y = lo[1] + (h - r - 0.5) * s
+        hit = (a[:, 1] <= y) != (b[:, 1] <= y)
+        x = a[hit, 0] + (y - a[hit, 1]) * (b[hit, 0] - a[hit, 0]) / \
+            (b[hit, 1] - a[hit, 1])
+        img[r] = (np.searchsorted(np.sort(x), xc) % 2).astype(np.uint8)
+    return img, lo
+
+
+def svg_paths(d):
+    """The subpaths of potrace's path data (M m l c z, relative after the
+    first M) as lists of segments of control points, in its units."""
+    tok = re.findall(r"[MmLlCcZz]|-?[0-9.]+", d)
+    subs, cur, start, segs, cmd, i = [], np.zeros(2), None, [], None, 0
+    while i < len(tok):
+        t = tok[i]
+        if t in "MmLlCcZz":
+            cmd = t
+            i += 1
+            if t in "Zz":
+                if segs:
+                    subs.append(segs)
+                segs, cur = [], start.copy()
+            continue
+        k = 6 if cmd in "Cc" else 2
+        v = np.array([float(x) for x in tok[i:i + k]]).reshape(-1, 2)
+        i += k
+        if cmd in "mlc":
+            v = v + cur
+        if cmd in "Mm":
+            start, cur = v[0], v[0]
+            cmd = "l" if cmd == "m" else "L"
+            continue
+        segs.append(np.vstack([cur, v]))
+        cur = v[-1]
+    if segs:
+        subs.append(segs)
+    return subs
+
+
+def potrace(pts, sigma, work):
+    """potrace's trace of the points rasterised: (samples, segments)."""
+    img, lo = raster(pts, sigma)
+    h, w = img.shape
+    pbm = os.path.join(work, "gn.pbm")
+    with open(pbm, "wb") as f:
+        f.write(b"P4\n%d %d\n" % (w, h))
+        f.write(np.packbits(img, axis=1).tobytes())
+    svg = subprocess.run(["potrace", "-b", "svg", "-u", "100", "-o", "-",
+                          pbm], capture_output=True, text=True).stdout
+    subs = []
+    for d in re.findall(r'\bd="([^"]*)"', svg):
+        subs += svg_paths(d)
+    best = max(subs, key=len)
+    c = np.concatenate([bezier(g) if len(g) == 4 else
+                        np.linspace(g[0], g[1], PER, endpoint=False)
+                        for g in best])
+    return lo + c / 100 * sigma, len(best)
+
+
+def true_corners(head, t):
+    """The truth's corners from the knots' corners=: (point, turn)."""
+    m = re.search(r"corners=([0-9,]+)", head or "")
+    out = []
+    for k in (int(x) for x in m.group(1).split(",")) if m else []:
+        i = (k - 1) * SEG
+        a, b = t[i] - t[i - 1], t[(i + 1) % len(t)] - t[i]
+        out.append((t[i], abs(math.atan2(a[0] * b[1] - a[1] * b[0],
+                                         a @ b))))
+    return out
+
+
+def corners_of(head, rows, tol, truth):
+    """(kept, wanted, false) of the fit's corner= joints against the
+    true corners (point, turn)."""
+    m = re.search(r"corners=([0-9,]+)", head)
+    at = np.array([rows[int(x) - 1][0:2] for x in m.group(1).split(",")]
+                  if m else np.zeros((0, 2)))
+    near = [len(at) and np.hypot(*(at - p).T).min() <= 2 * tol
+            for p, _ in truth]
+    kept = sum(n for n, (_, a) in zip(near, truth) if a >= CORNER)
+    want = sum(a >= CORNER for _, a in truth)
+    false = sum(not len(truth) or
+                min(np.hypot(*(p - q)) for q, _ in truth) > 2 * tol
+                for p in at)
+    return kept, want, false
+
+
+def pct(v, q):
+    v = sorted(v)
+    return v[int(q * (len(v) - 1))] if v else float("nan")
+
+
+def report(name, fails, loops, dist, nseg):
+    print("  %-9s failures %d, self-crossing curves %d; Hausdorff distance "
+          "to the true outline in sigmas: median %.1f, 90%% %.1f, worst "
+          "%.1f; segments: median %d, 90%% %d" %
+          (name, fails, loops, pct(dist, 0.5), pct(dist, 0.9),
+           max(dist) if dist else float("nan"), pct(nseg, 0.5),
+           pct(nseg, 0.9)))
+
+
 def main():
-    truth = records(open(sys.argv[1]).read())[:100]
+    truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
+    heads = [h for h, _ in records(open(sys.argv[3]).read())] \
+        if len(sys.argv) > 3 else [""] * len(truth)
+    have_potrace = shutil.which("potrace") is not None
     rng = random.Random(23)
-    fails = loops = 0
-    dist, nseg = [], []
+    res = {"loft": [0, 0, [], []], "potrace": [0, 0, [], []]}
+    kept = want = false = 0
     for k, t in enumerate(truth):
         tt = np.r_[t, t[:1]]
         d = np.r_[0, np.cumsum(np.hypot(*np.diff(tt, axis=0).T))]
         sigma = [0.001, 0.0025, 0.005][k % 3] * np.ptp(t, axis=0).max()
         u = np.linspace(0, d[-1], 400, endpoint=False)
-        pts = "".join("%.4f %.4f\n" % (x + rng.gauss(0, sigma),
-                                       y + rng.gauss(0, sigma))
-                      for x, y in zip(np.interp(u, d, tt[:, 0]),
-                                      np.interp(u, d, tt[:, 1])))
-        fit = subprocess.run(["bin/splinefit", "-e", "%g" % (4 * sigma)],
-                             input=pts, capture_output=True, text=True)
-        if fit.returncode != 0:
-            fails += 1
-            continue
-        nseg.append(len(fit.stdout.strip().splitlines()) - 1)
-        c = records(subprocess.run(["bin/sample", "-n", "30"], input=fit.stdout,
-                                   capture_output=True, text=True).stdout)[0]
-        if np.allclose(c[0], c[-1]):
-            c = c[:-1]
-        loops += crosses(c)
+        pts = np.array([[x + rng.gauss(0, sigma), y + rng.gauss(0, sigma)]
+                        for x, y in zip(np.interp(u, d, tt[:, 0]),
+                                        np.interp(u, d, tt[:, 1]))])
+        pts = np.round(pts, 4)
         dense = np.concatenate([np.linspace(tt[i], tt[i + 1], 20,
                                             endpoint=False)
                                 for i in range(len(t))])
-        dist.append(max(cKDTree(dense).query(c)[0].max(),
-                        cKDTree(c).query(dense)[0].max()) / sigma)
-    dist.sort()
-    nseg.sort()
+        fit = subprocess.run(["bin/splinefit", "-e", "%g" % (4 * sigma)],
+                             input="".join("%.4f %.4f\n" % tuple(p)
+                                           for p in pts),
+                             capture_output=True, text=True)
+        r = res["loft"]
+        if fit.returncode != 0:
+            r[0] += 1
+        else:
+            head, rows = records(fit.stdout)[0]
+            c = hermite(rows)
+            r[1] += crosses(c)
+            r[2].append(hausdorff(c, dense) / sigma)
+            r[3].append(len(rows))
+            a, b, f = corners_of(head, rows, 4 * sigma,
+                                 true_corners(heads[k], t))
+            kept, want, false = kept + a, want + b, false + f
+        if have_potrace:
+            r = res["potrace"]
+            c, ns = potrace(pts, sigma, work)
+            r[1] += crosses(c)
+            r[2].append(hausdorff(c, dense) / sigma)
+            r[3].append(ns)
     print("splinefit -e 4 sigma on %d noisy glyph contours (400 points, "
-          "sigma 0.1-0.5%% of the size, no corners given)" % len(truth))
-    print("failures %d, self-crossing curves %d; Hausdorff distance to the "
-          "true outline in sigmas: median %.1f, 90%% %.1f, worst %.1f; "
-          "segments: median %d" % (fails, loops, dist[len(dist) // 2],
-                                   dist[int(0.9 * (len(dist) - 1))], dist[-1],
-                                   nseg[len(nseg) // 2]))
+          "sigma 0.1-0.5%% of the size, no corners given)%s" %
+          (len(truth), "" if have_potrace else
+           "; potrace skipped (no potrace)"))
+    report("loft", *res["loft"])
+    if have_potrace:
+        report("potrace", *res["potrace"])
+    print("  loft's corners: %d of %d true corners of %d degrees or more "
+          "kept, %d false" % (kept, want, round(math.degrees(CORNER)),
+                              false))
 
 
 if __name__ == "__main__":
