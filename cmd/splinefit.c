@@ -20,7 +20,7 @@ struct opts {
 	double merge;                   /* -d, or -1: the default distance */
 	double approx;                  /* -e: the tolerance, or 0 */
 	int rounds;                     /* -i with -e: rounds of splitting */
-	int nocorner;                   /* -K: -e finds no corners itself */
+	int findcorner;                 /* -K: -e finds corners itself */
 	int open_set, method_set;       /* -o, -m given: the record's closed=
 	                                 * and method= are not read */
 	double *seg, *other;            /* scratch, grown as records need */
@@ -384,7 +384,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	ao.have_end = fit->have_end;
 	memcpy(ao.start, fit->start, sizeof ao.start);
 	memcpy(ao.end, fit->end, sizeof ao.end);
-	if (nc == 0 && !o->nocorner)    /* none given: its own */
+	if (nc == 0 && o->findcorner)   /* none given: its own */
 		nc = loft_find_corners(rec->num, rec->nrows, dim, fit->closed,
 		    o->approx, o->corner);
 	ao.corner = o->corner;
@@ -563,7 +563,7 @@ main(int argc, char *argv[])
 		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
 		    &err); fitting = c; break;
 		case 'e': rc = parse_tolerance(optarg, &o.approx, &err); break;
-		case 'K': o.nocorner = 1; break;
+		case 'K': o.findcorner = 1; break;
 		case 'v': o.verbose = 1; break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
@@ -577,9 +577,9 @@ main(int argc, char *argv[])
 	if (o.approx > 0 && fitting)
 		loft_usage_error(usage_text, fitting, "chooses how to fit through "
 		    "knots: -e approximates, by the fair curve");
-	if (o.nocorner && !(o.approx > 0))
-		loft_usage_error(usage_text, 'K', "turns off the corners -e "
-		    "finds: use it with -e");
+	if (o.findcorner && !(o.approx > 0))
+		loft_usage_error(usage_text, 'K', "has -e find corners in the "
+		    "points: use it with -e");
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);
 	free(o.other);

@@ -167,7 +167,7 @@ $N -n 600 -s 0.1 -r 2 $I >"$T/i.pts"
 fit i 0.45
 checks i 0.45 1 $I
 $N -n 400 -s 0.3 -r 3 $I >"$T/i2.pts"
-fit i2 1.2 -K
+fit i2 1.2
 checks i2 1.2 1 $I
 
 # ---- blobs: a convex one and one with inflexions ---------------------------
@@ -188,7 +188,7 @@ same_inflexions b2 "blob" $B2
 # within the tolerance; the curve must have the truth's inflexions
 E5="ellipse 79.867 24.215"
 $N -n 740 -s 0.489 -r 59 $E5 >"$T/e5.pts"
-fit e5 1.956 -K
+fit e5 1.956
 checks e5 1.956 1 $E5
 same_inflexions e5 "ellipse 59" $E5
 $N -n 629 -s 0.07 -r 22 $I >"$T/i3.pts"
@@ -284,8 +284,8 @@ run "printf 'points\n0 0 1\n2 1 0\n\npoints\n0 0\n1 1\n3 30\n' | $B/splinefit -o
 status 0
 [ "$(grep -c '^cubic' "$T/out")" = 2 ] && ok || no "two records: $(cat "$T/out")"
 
-# ---- corners found (issue 23): a noisy square keeps its four, a noisy
-# circle has none, -K turns them off --------------------------------------
+# ---- corners found with -K (issue 23): a noisy square keeps its four, a
+# noisy circle has none; without -K none are found -------------------------
 # noisy SHAPE N SIGMA SEED: a square of side 100 (corners at 0 0, 100 0,
 # 100 100, 0 100) or a circle of radius 50, N points even in length,
 # Gaussian noise (Box-Muller on awk's rand)
@@ -330,7 +330,7 @@ twoway() {
 }
 for seed in 1 2 3; do
 	shape square 400 0.3 $seed >"$T/sq.pts"
-	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
+	"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
 	    no "square $seed: $(cat "$T/sq.err")"
 	# each true corner has a corner joint within 2 tol, and no other
 	awk 'NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
@@ -344,9 +344,9 @@ for seed in 1 2 3; do
 		  if (d <= 2.4) near++ } }
 	    END { exit !(found == 4 && near == 4) }' "$T/sq.cubic" && ok ||
 	    no "square $seed: want 4 corners at the square's: $(head -1 "$T/sq.cubic")"
-	"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
+	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/sqk.cubic" && ok ||
-	    no "square $seed, -K: want no corners: $(head -1 "$T/sqk.cubic")"
+	    no "square $seed, no -K: want no corners: $(head -1 "$T/sqk.cubic")"
 	twoway "$T/sq.cubic" "$T/sq.pts" 1.2
 	# straight runs: two sides at least are exact lines (both tangents
 	# along the chord, to rounding)
@@ -357,7 +357,7 @@ for seed in 1 2 3; do
 	    no "square $seed: want 2 straight segments at least: $(cat "$T/sq.cubic")"
 	twoway "$T/sqk.cubic" "$T/sq.pts" 1.2
 	shape circle 400 0.3 $seed >"$T/ci.pts"
-	"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
+	"$B/splinefit" -K -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/ci.cubic" && ok ||
 	    no "circle $seed: want no corner: $(head -1 "$T/ci.cubic")"
 done

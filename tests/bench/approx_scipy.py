@@ -119,7 +119,7 @@ def judge(curve, d1, d2, du, pts, truth, knots):
 
 
 def loft(bindir, text, tol, pts, truth):
-    r = run([os.path.join(bindir, "splinefit"), "-e", repr(tol), "-K"], text)
+    r = run([os.path.join(bindir, "splinefit"), "-e", repr(tol)], text)
     if r.returncode != 0:
         return None, r.stderr.strip()
     seg = rows(r.stdout)

@@ -211,7 +211,8 @@ def main():
         if len(sys.argv) > 3 else [""] * len(truth)
     have_potrace = shutil.which("potrace") is not None
     rng = random.Random(23)
-    res = {"loft": [0, 0, [], []], "potrace": [0, 0, [], []]}
+    res = {"loft": [0, 0, [], []], "loft -K": [0, 0, [], []],
+           "potrace": [0, 0, [], []]}
     kept = want = false = 0
     for k, t in enumerate(truth):
         tt = np.r_[t, t[:1]]
@@ -225,22 +226,25 @@ def main():
         dense = np.concatenate([np.linspace(tt[i], tt[i + 1], 20,
                                             endpoint=False)
                                 for i in range(len(t))])
-        fit = subprocess.run(["bin/splinefit", "-e", "%g" % (4 * sigma)],
-                             input="".join("%.4f %.4f\n" % tuple(p)
-                                           for p in pts),
-                             capture_output=True, text=True)
-        r = res["loft"]
-        if fit.returncode != 0:
-            r[0] += 1
-        else:
+        for name, opt in (("loft", []), ("loft -K", ["-K"])):
+            fit = subprocess.run(["bin/splinefit"] + opt +
+                                 ["-e", "%g" % (4 * sigma)],
+                                 input="".join("%.4f %.4f\n" % tuple(p)
+                                               for p in pts),
+                                 capture_output=True, text=True)
+            r = res[name]
+            if fit.returncode != 0:
+                r[0] += 1
+                continue
             head, rows = records(fit.stdout)[0]
             c = hermite(rows)
             r[1] += crosses(c)
             r[2].append(hausdorff(c, dense) / sigma)
             r[3].append(len(rows))
-            a, b, f = corners_of(head, rows, 4 * sigma,
-                                 true_corners(heads[k], t))
-            kept, want, false = kept + a, want + b, false + f
+            if opt:
+                a, b, f = corners_of(head, rows, 4 * sigma,
+                                     true_corners(heads[k], t))
+                kept, want, false = kept + a, want + b, false + f
         if have_potrace:
             r = res["potrace"]
             c, ns = potrace(pts, sigma, work)
@@ -252,9 +256,10 @@ def main():
           (len(truth), "" if have_potrace else
            "; potrace skipped (no potrace)"))
     report("loft", *res["loft"])
+    report("loft -K", *res["loft -K"])
     if have_potrace:
         report("potrace", *res["potrace"])
-    print("  loft's corners: %d of %d true corners of %d degrees or more "
+    print("  loft -K's corners: %d of %d true corners of %d degrees or more "
           "kept, %d false" % (kept, want, round(math.degrees(CORNER)),
                               false))
 
