@@ -2003,10 +2003,25 @@ span_is_line(const struct work *w, size_t j)
 	return count >= APPROX_LINE_MIN;
 }
 
+/* The inflexions of the curve as measure(1) counts them (exactly, a
+ * straight stretch between bends of opposite sign one); 0 for a space
+ * curve, whose curvature has no sign. */
+static long
+inflexions(const struct work *w)
+{
+	struct loft_curve c;
+	struct loft_error err;
+	long count;
+
+	loft_curve_cubic(&c, w->seg, nseg_of(w), w->dim, w->closed);
+	return loft_curve_inflexions(&c, &count, &err) == 0 ? count : 0;
+}
+
 /* Straight runs of points become straight spans: the spans whose points
  * lie along their chord are refitted straight, kept where every point
- * is still within the tolerance and the curve passes both checks.
- * Returns 0, or an error. */
+ * is still within the tolerance, the curve passes both checks and it
+ * has no more inflexions than before (a line between bends of one sign
+ * must not bring in reverse bends).  Returns 0, or an error. */
 static int
 straight_runs(struct work *w, double *worst, size_t *at,
     struct loft_error *err)
@@ -2022,12 +2037,14 @@ straight_runs(struct work *w, double *worst, size_t *at,
 	if (nl > 0) {
 		double was = *worst;
 		size_t wat = *at;
+		long infl = inflexions(w);
 
 		save_state(w);
 		w->fit.straight = line;
 		w->fit.nstraight = nl;
 		if (fit_project(w, worst, at, err) != 0 ||
-		    *worst > w->tol || (bad = check_spans(w, *worst)) != 0) {
+		    *worst > w->tol || (bad = check_spans(w, *worst)) != 0 ||
+		    inflexions(w) > infl) {
 			restore_state(w);       /* the curve as it was */
 			*worst = was;
 			*at = wat;

@@ -181,6 +181,15 @@ fit b2 0.4
 checks b2 0.4 1 $B2
 same_inflexions b2 "blob" $B2
 
+# case 45 of make compare-approx (4 sigma): a blob whose points lie along
+# a chord for a stretch, where a straight span beside bends of one sign
+# brought in two reverse bends; a straight run is kept only without them
+B3="blob 60.784 0.064 3"
+$N -n 618 -s 0.062 -r 45 $B3 >"$T/b3.pts"
+fit b3 0.248
+checks b3 0.248 1 $B3
+same_inflexions b3 "blob 45" $B3
+
 # ---- nearly straight stretches: a wiggle the points leave no room to drop
 # Cases 59 and 22 of make compare-approx (4 sigma): the knots that fit
 # the points best there bend the curve the wrong way for a few mm, two
