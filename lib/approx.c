@@ -1864,8 +1864,8 @@ fair_wiggles(struct work *w)
 	struct fairing f;
 	unsigned char *on = malloc(w->m);
 	double floor = 0, turn;
-	size_t ja, jb, nmax = w->n;
-	int sg, rc = 0;
+	size_t ja = 0, jb = 0, nmax = w->n;
+	int sg = 0, rc = 0;
 
 	if (w->dim != 2) {
 		free(on);
@@ -2027,7 +2027,6 @@ straight_runs(struct work *w, double *worst, size_t *at,
     struct loft_error *err)
 {
 	size_t ns = nseg_of(w), nl = 0, *line = malloc(ns * sizeof *line);
-	size_t bad;
 
 	if (line == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -2043,7 +2042,7 @@ straight_runs(struct work *w, double *worst, size_t *at,
 		w->fit.straight = line;
 		w->fit.nstraight = nl;
 		if (fit_project(w, worst, at, err) != 0 ||
-		    *worst > w->tol || (bad = check_spans(w, *worst)) != 0 ||
+		    *worst > w->tol || check_spans(w, *worst) != 0 ||
 		    inflexions(w) > infl) {
 			restore_state(w);       /* the curve as it was */
 			*worst = was;

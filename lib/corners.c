@@ -162,11 +162,10 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 		 * the scale are two */
 		for (size_t j = a; best && j != b; j = (j + 1) % n)
 			if (j != i && (turn[j] > turn[i] ||
-			    (turn[j] == turn[i] && j < i)))
+			    (j < i && turn[j] == turn[i])))
 				best = 0;
 		if (best)
 			corner[nc++] = i;
-
 	}
 	free(s);
 	free(turn);

@@ -1187,7 +1187,7 @@ spline_rational(struct dxf *d, struct ent *e, const double *ctl, int dim,
 	put_where(d, w, e->layer, e->nlayer);
 	loft_end_line(w);
 	for (size_t i = (size_t)p; i < n && !d->oom; i++) {
-		double lo[3], hi[3], ext = 0, tol, err;
+		double lo[3], hi[3], ext = 0, tol, err = HUGE_VAL;
 		long k = 1;
 		size_t cap = 0;
 

@@ -248,8 +248,11 @@ static int
 number_vertices(struct loft_sew *w)
 {
 	size_t nc = 4 * w->nface;
-	long *num = malloc(nc * sizeof *num);
+	long *num;
 
+	if (nc == 0)            /* no faces: no corners to number */
+		return 0;
+	num = malloc(nc * sizeof *num);
 	if (num == NULL || (w->vert = malloc(3 * nc * sizeof *w->vert)) ==
 	    NULL) {
 		free(num);
@@ -318,7 +321,7 @@ gauss(int k, double *x, double *wt)
 static double
 signed_volume(const struct loft_sew *w)
 {
-	double x[MAXGAUSS], wt[MAXGAUSS], vol = 0;
+	double x[MAXGAUSS] = { 0 }, wt[MAXGAUSS] = { 0 }, vol = 0;
 
 	for (size_t f = 0; f < w->nface; f++) {
 		const struct loft_sew_face *F = w->face + f;

@@ -223,6 +223,8 @@ shift_text(char *buf, const char *sci, int unit)
 	for (const char *c = sci + neg; c < e && nd <= MAX_DIGITS; c++)
 		if (*c >= '0' && *c <= '9')
 			dig[nd++] = *c;
+	if (nd == 0)                            /* no digit: not a number */
+		return snprintf(buf, 64, "0");
 	while (nd > 1 && dig[nd - 1] == '0')
 		nd--;
 	if (ex < SHIFT_MIN || ex > SHIFT_MAX)
