@@ -36,7 +36,7 @@ static const char *const methods[] = { "manning", "ferguson", "chord",
     "fair", NULL };
 
 static const char usage_text[] =
-    "usage: splinefit [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-a alpha] "
+    "usage: splinefit [-1o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] [-a alpha] "
     "[-k positive|turn]\n"
     "                 [-m fair|manning|ferguson|chord] [-t tol] [-i maxiter] "
     "[-p digits]\n"
@@ -76,7 +76,8 @@ record_tangent(const struct loft_record *rec, const char *key, int dim,
 static int
 grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 {
-	size_t need = 4 * (size_t)dim * n, rows = n;
+	size_t need = 4 * (size_t)dim * n * (n <= LOFT_FIT_SPLIT_KNOTS ?
+	    LOFT_FIT_SPLIT : 1), rows = n;
 	void *v;
 
 	if (need <= o->segcap && n <= o->rowcap)
@@ -482,12 +483,13 @@ fit_record(struct loft_run *run, const struct loft_record *rec,
 	fit.ncorner = nc;
 	fit.straight = o->straight;
 	fit.nstraight = o->nstraight;
+	fit.split = fit.split && n <= LOFT_FIT_SPLIT_KNOTS; /* seg's room */
 	if ((rc = loft_fit(&fit, o->knots, m, dim, o->seg, &info, err)) != 0) {
 		if (err->row >= 0 && (size_t)err->row < m)
 			err->row = (long)o->keep[err->row];
 		return rc;
 	}
-	nseg = fit.closed ? m : m - 1;
+	nseg = info.nseg;
 	merge_notes(run, rec, m, dist);
 	if (o->verbose)
 		report(run, rec, m, &fit, &info, nseg);
@@ -541,9 +543,11 @@ main(int argc, char *argv[])
 	long whole;
 
 	loft_fit_defaults(&o.fit);
+	o.fit.split = 1;
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "oS:E:a:k:m:t:i:p:d:e:Kvh")) != -1) {
+	while ((c = getopt(argc, argv, "1oS:E:a:k:m:t:i:p:d:e:Kvh")) != -1) {
 		switch (c) {
+		case '1': o.fit.split = 0; fitting = c; break;
 		case 'o': o.fit.closed = 0; o.open_set = 1; break;
 		case 'S': parse_vector(c, optarg, o.fit.start,
 		    &o.fit.have_start, &o.start_dim); break;

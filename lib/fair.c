@@ -25,12 +25,17 @@
  * one of them a direction estimate in Spiro's manner (spiral_solve: the
  * knots' tangent angles at which Euler spirals through consecutive knots
  * meet with equal curvature, by Newton), each run to convergence, and
- * the spirals' own G2 cubics.  The measure they are kept by is the
+ * the spirals' own G2 cubics: one a span, and, where the caller has
+ * room (loft_fit_opts.split), a span split into cubics of at most 45
+ * degrees' turning each, which follow a spiral that one cubic cannot
+ * (a far-out knot's).  The measure they are kept by is the
  * scale-free E L (energy times length), not E: E falls as a curve grows,
  * so its least rewards swelling, where E L is least for the circle
  * (4 pi^2) and does not depend on the units.  This differs from the
  * paper (Manning's normalisation minimises nothing) and from a batten's
- * least E alike.  An open curve, as a piece between corners is, is
+ * least E alike; but the spirals' cubics are kept over a curve of less
+ * E L where their E is less and their E L not much more
+ * (FAIR_SPIRAL_SLACK).  An open curve, as a piece between corners is, is
  * further kept from swelling past the chord spline span by span
  * (unswell).  Every result is judged against the chord spline: no more
  * energy, no sharper bend (by the exact least radius; in the quick
@@ -868,7 +873,7 @@ estimate_tangent(const struct fair *f, size_t i, double *t)
 /* Records of at most this many knots get the start below: its Newton
  * step solves a dense system, n^3, which at 64 knots costs about what a
  * thorough descent does. */
-#define SPIRAL_MAXKNOTS 64
+#define SPIRAL_MAXKNOTS LOFT_FIT_SPLIT_KNOTS
 
 /* Newton's iterations at most, and the residual that ends them: the
  * curvature jump over the knots' mean curvature 1 / chord, and the
@@ -878,7 +883,7 @@ estimate_tangent(const struct fair *f, size_t i, double *t)
 
 /* No end angle of a spiral beyond this from its chord: past it the
  * spiral curls, and no cubic of tame tangents follows it. */
-#define SPIRAL_MAXANGLE 3.1
+#define SPIRAL_MAXANGLE 6.0
 
 /*
  * The Euler spiral (curvature linear in arc length) that leaves its
@@ -1164,32 +1169,137 @@ spiral_solve(const struct fair *f, struct angles *a, double **mem)
 	return 1;
 }
 
+/* A span whose spiral turns through more than this (radians, along
+ * it) is split, where the caller has room (loft_fit_opts.split), into
+ * cubics that turn this much at most: a G2 cubic follows a quarter
+ * circle to about 1e-4 of its radius, an eighth to some 1e-6, and a
+ * spiral past half a turn not at all.  LOFT_FIT_SPLIT a span at most. */
+#define SPIRAL_PIECE_TURN (M_PI / 4)
+
+/* A split span's cubic whose tangent magnitude is farther than this
+ * factor (a log) from its piece's length follows its spiral badly
+ * (nearly stopping at one end): the span is split finer. */
+#define SPIRAL_PIECE_MAG 0.6931471805599453
+
+/* The parts of 4-point Gauss along a piece when its points are placed:
+ * a piece's angle is a quadratic of at most SPIRAL_PIECE_TURN's change,
+ * which 4 parts integrate to rounding. */
+#define SPIRAL_QUAD 4
+
+/* How far span s's spiral turns, the integral of |angle'| along it:
+ * its angle's rate is alpha + d t, t from 0 to 1. */
+static double
+spiral_turning(const struct angles *a, size_t s)
+{
+	double turn = (a->k0[s] + a->k1[s]) / 2 * a->len[s];
+	double d = (a->k1[s] - a->k0[s]) * a->len[s], al = turn - d / 2;
+	double be = al + d, r;
+
+	if ((al >= 0) == (be >= 0))
+		return fabs(turn);
+	r = al / (al - be);
+	return (fabs(al) * r + fabs(be) * (1 - r)) / 2;
+}
+
+/* The angle of span s's spiral at t (0 to 1 along it), absolute. */
+static double
+spiral_angle(const struct angles *a, size_t s, double t)
+{
+	double psi0 = angle_diff(a->ref[s], a->phi[s]) + a->x[s];
+	double turn = (a->k0[s] + a->k1[s]) / 2 * a->len[s];
+	double d = (a->k1[s] - a->k0[s]) * a->len[s];
+
+	return a->phi[s] + psi0 + turn * t + d / 2 * (t * t - t);
+}
+
+/* The point of span s's spiral at tb into pb, from its point pa at ta:
+ * the integral of its unit tangent times its length. */
+static void
+spiral_point(const struct angles *a, size_t s, double ta, double tb,
+    const double *pa, double *pb)
+{
+	double w = (tb - ta) / SPIRAL_QUAD;
+
+	pb[0] = pa[0], pb[1] = pa[1];
+	for (int part = 0; part < SPIRAL_QUAD; part++)
+		for (int j = 0; j < GAUSS; j++) {
+			double th = spiral_angle(a, s, ta + w * (part +
+			    gauss_u[j]));
+
+			pb[0] += a->len[s] * w * gauss_w[j] * cos(th);
+			pb[1] += a->len[s] * w * gauss_w[j] * sin(th);
+		}
+}
+
 /*
- * The spirals of spiral_solve as cubics, each with its spiral's end
- * tangents and curvatures (g2_magnitudes), into f->seg: a G2 curve
- * that is the circle, to the error of a cubic arc, where the knots are
- * on one.  0, 1 where it is not to be had, -1 out of memory.
+ * Span s of the spirals of a as m cubics into q (8 m numbers), G2
+ * Hermite each (g2_magnitudes) to the spiral's points, angles and
+ * curvatures at t = j / m; the last ends on the knot itself.  0, or 1
+ * where a piece has no such cubic.
  */
 static int
-spiral_start(struct fair *f)
+spiral_span(const struct fair *f, const struct angles *a, size_t s, int m,
+    double *q)
+{
+	size_t t = (s + 1) % f->n;
+	double pa[2], tha = spiral_angle(a, s, 0), ka = a->k0[s];
+
+	memcpy(pa, f->p + 2 * s, sizeof pa);
+	for (int j = 1; j <= m; j++, q += 8) {
+		double tb = (double)j / m, pb[2], thb = spiral_angle(a, s, tb);
+		double kb = j == m ? a->k1[s] : (a->k0[s] * (1 - tb) + a->k1[s] *
+		    tb), c, ph, ma = 0, mb = 0;
+
+		if (j == m)
+			memcpy(pb, f->p + 2 * t, sizeof pb);
+		else
+			spiral_point(a, s, (j - 1.0) / m, tb, pa, pb);
+		c = hypot(pb[0] - pa[0], pb[1] - pa[1]);
+		ph = atan2(pb[1] - pa[1], pb[0] - pa[0]);
+		if (g2_magnitudes(c, angle_diff(tha, ph), angle_diff(thb, ph),
+		    ka, kb, a->len[s] / m, &ma, &mb) != 0 || (m > 1 &&
+		    !(fabs(log(ma * m / a->len[s])) <= SPIRAL_PIECE_MAG &&
+		    fabs(log(mb * m / a->len[s])) <= SPIRAL_PIECE_MAG)))
+			return 1;
+		memcpy(q, pa, sizeof pa);
+		memcpy(q + 2, pb, sizeof pb);
+		q[4] = ma * cos(tha), q[5] = ma * sin(tha);
+		q[6] = mb * cos(thb), q[7] = mb * sin(thb);
+		memcpy(pa, pb, sizeof pa);
+		tha = thb, ka = kb;
+	}
+	return 0;
+}
+
+/*
+ * The spirals of spiral_solve as cubics into seg, each span one cubic
+ * (split 0) or as many as keep each within SPIRAL_PIECE_TURN (split 1;
+ * seg then has room for LOFT_FIT_SPLIT a span), each with its spiral's
+ * end tangents and curvatures: a G2 curve that is the circle, to the
+ * error of a cubic arc, where the knots are on one.  The segments into
+ * *nseg; 0, 1 where it is not to be had, -1 out of memory.
+ */
+static int
+spiral_start(struct fair *f, int split, double *seg, size_t *nseg)
 {
 	struct angles a;
 	double *mem;
 	int rc = spiral_solve(f, &a, &mem);
 
+	*nseg = 0;
 	for (size_t s = 0; s < f->n && rc == 0; s++) {
-		size_t t = (s + 1) % f->n;
-		double *q = f->seg + 8 * s, th0 = a.ref[s] + a.x[s];
-		double th1 = a.ref[t] + a.x[t], ma = 0, mb = 0;
+		/* a quarter turn is two pieces, whatever its rounding */
+		int m = split ? (int)ceil(spiral_turning(&a, s) /
+		    SPIRAL_PIECE_TURN * (1 - 1e-9)) : 1;
 
-		if (g2_magnitudes(a.c[s], angle_diff(th0, a.phi[s]),
-		    angle_diff(th1, a.phi[s]), a.k0[s], a.k1[s], a.len[s],
-		    &ma, &mb) != 0)
+		m = m < 1 ? 1 : m;
+		while (m <= LOFT_FIT_SPLIT && spiral_span(f, &a, s, m, seg +
+		    8 * *nseg) != 0)
+			m = split ? m + 1 : LOFT_FIT_SPLIT + 1;
+		if (m > LOFT_FIT_SPLIT)
 			rc = 1;
-		memcpy(q, f->p + 2 * s, 2 * sizeof *q);
-		memcpy(q + 2, f->p + 2 * t, 2 * sizeof *q);
-		q[4] = ma * cos(th0), q[5] = ma * sin(th0);
-		q[6] = mb * cos(th1), q[7] = mb * sin(th1);
+		else
+			*nseg += m;
 	}
 	free(mem);
 	return rc;
@@ -1354,6 +1464,8 @@ least_speed(const double *seg, size_t nseg, int dim, double *kmax)
 struct best {
 	double *x;              /* its log intervals and factors */
 	double score;           /* E L by the check's parts */
+	double e;               /* its E */
+	double least;           /* the least E L kept yet */
 	double echord;          /* the chord spline's E by them: no more */
 	int chord_loops;        /* whether the chord spline crosses itself:
 	                         * -1 not yet known */
@@ -1361,6 +1473,8 @@ struct best {
 	int found;              /* 0 the chord spline's, 1 x a descent's, 2
 	                         * sseg the spiral start's */
 	double *sseg;           /* room for the spiral start's segments */
+	size_t nsseg;           /* and their number */
+	double *pseg;           /* room for split spirals, or NULL */
 	int have_cseg;          /* whether cseg holds it (0 where it fails) */
 	double rchord;          /* its least radius, exactly: -1 unknown */
 };
@@ -1385,22 +1499,23 @@ chord_spline(struct fair *f, struct best *b, double *h)
  * (exact, where the samples of max_curvature and least_speed may step
  * over a cusp); 0 at a cusp or a retracted handle. */
 static double
-least_radius(const struct fair *f, const double *seg)
+least_radius(const struct fair *f, const double *seg, size_t nseg)
 {
 	struct loft_curve c;
 	struct loft_error err;
 	double r, u;
 
-	loft_curve_cubic(&c, seg, f->nseg, f->dim, f->o->closed);
+	loft_curve_cubic(&c, seg, nseg, f->dim, f->o->closed);
 	return loft_curve_min_radius(&c, &r, &u, &err) == 0 && r > 0 ? r : 0;
 }
 
-/* Whether the curve in f->seg bends more sharply anywhere than the
+/* Whether the nseg segments seg bend more sharply anywhere than the
  * chord spline does (the guarantee), by the exact least radius of
  * both: a descent may slip a cusp between the points of the sampled
  * caps, whose energy is then unbounded. */
 static int
-sharper(struct fair *f, struct best *b, double *h)
+sharper(struct fair *f, struct best *b, double *h, const double *seg,
+    size_t nseg)
 {
 	double least = HUGE_VAL;
 
@@ -1408,15 +1523,15 @@ sharper(struct fair *f, struct best *b, double *h)
 	 * where the samples see a bend: the root finder (which took the
 	 * bench's 10^4 insoles from 0.47 to 0.63 of GNU spline's time)
 	 * only where some segment slows below it */
-	for (size_t s = 0; !f->scalefree && s < f->nseg; s++)
-		least = fmin(least, segment_least_speed(f->seg + s * 4 * f->dim,
+	for (size_t s = 0; !f->scalefree && s < nseg; s++)
+		least = fmin(least, segment_least_speed(seg + s * 4 * f->dim,
 		    f->dim));
 	if ((!f->scalefree && least >= FAIR_SLOW * FAIR_SLOW) ||
 	    chord_spline(f, b, h) != 0)
 		return 0;
 	if (b->rchord < 0)
-		b->rchord = least_radius(f, b->cseg);
-	return least_radius(f, f->seg) < b->rchord * (1 - FAIR_RADIUS_EPS);
+		b->rchord = least_radius(f, b->cseg, f->nseg);
+	return least_radius(f, seg, nseg) < b->rchord * (1 - FAIR_RADIUS_EPS);
 }
 
 /* Whether the chord spline crosses itself (plane curves; once); -1 out
@@ -1430,43 +1545,63 @@ chord_loops(struct fair *f, struct best *b, double *h)
 	return b->chord_loops;
 }
 
+/* The spirals' cubics (Spiro's manner: the batten's shape, Levien
+ * 2009) are kept over a descent's curve of less E L where their E is
+ * less and their E L no more than this factor above the least: the
+ * least E L hugs a far-out knot in a sharper bend than a batten makes
+ * (make compare: at 1.0, 3 of 300 sets bend more than twice as sharply
+ * as Spiro's curve). */
+#define FAIR_SPIRAL_SLACK 1.1
+
 /*
- * Judge the curve in f->seg, of x: kept as the best where, by the
- * check's parts, its E L is below the best's, its E no more than the
- * chord spline's, no curvature past the chord spline's largest, and (in
- * the plane) no crossing unless the chord spline crosses too.
- * Returns 0, or -1 out of memory.
+ * Judge the nseg segments seg, of x (NULL: the spirals' cubics): kept
+ * as the best where, by the check's parts (FAIR_CHECK a segment where
+ * nseg is not the knots' spans), its E L is below the best's, its E no
+ * more than the chord spline's, no curvature past the chord spline's
+ * largest, and (in the plane) no crossing unless the chord spline
+ * crosses too.  Returns 0, or -1 out of memory.
  */
 static int
-judge(struct fair *f, struct best *b, const double *x, double *h)
+judge_segs(struct fair *f, struct best *b, const double *x, double *h,
+    const double *seg, size_t nseg)
 {
-	double e, len, kmax;
+	const unsigned char *parts = nseg == f->nseg ? f->check : NULL;
+	double e, el, len, kmax;
 	int loops;
 
-	e = curve_energy(f->seg, f->nseg, f->dim, 0, f->check, NULL, &kmax,
+	e = curve_energy(seg, nseg, f->dim, FAIR_CHECK, parts, NULL, &kmax,
 	    NULL, &len);
-	if (f->scalefree)
-		e *= len;
-	if (!(e < b->score) || !(e <= b->echord * (f->scalefree ? len : 1)) ||
-	    !(max_curvature(f->seg, f->nseg, f->dim) <= f->kcap) ||
-	    (f->scalefree && (!(least_speed(f->seg, f->nseg, f->dim, &kmax) >=
-	    FAIR_CUSP) || !(kmax <= f->kcap))) || sharper(f, b, h))
+	el = f->scalefree ? e * len : e;
+	if (!(el < b->score || (x == NULL && el <= FAIR_SPIRAL_SLACK *
+	    b->least && e < b->e)) || !(e <= b->echord) ||
+	    !(max_curvature(seg, nseg, f->dim) <= f->kcap) ||
+	    (f->scalefree && (!(least_speed(seg, nseg, f->dim, &kmax) >=
+	    FAIR_CUSP) || !(kmax <= f->kcap))) || sharper(f, b, h, seg, nseg))
 		return 0;
-	loops = f->dim == 2 ? loft_fit_crosses(f->seg, f->nseg, f->o->closed) :
-	    0;
+	loops = f->dim == 2 ? loft_fit_crosses(seg, nseg, f->o->closed) : 0;
 	if (loops == 1)
 		loops = chord_loops(f, b, h) == 0 ? 2 : chord_loops(f, b, h);
 	if (loops < 0)
 		return -1;
 	if (loops == 2)
 		return 0;
-	b->score = e;
+	b->score = el;
+	b->e = e;
+	b->least = fmin(b->least, el);
 	b->found = x != NULL ? 1 : 2;
 	if (x != NULL)
 		memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
 	else
-		memcpy(b->sseg, f->seg, 4 * f->dim * f->nseg * sizeof *f->seg);
+		memcpy(b->sseg, seg, 4 * f->dim * nseg * sizeof *seg);
+	b->nsseg = x != NULL ? b->nsseg : nseg;
 	return 0;
+}
+
+/* judge_segs of the curve of x in f->seg. */
+static int
+judge(struct fair *f, struct best *b, const double *x, double *h)
+{
+	return judge_segs(f, b, x, h, f->seg, f->nseg);
 }
 
 /* How much farther than swell_allowed a span of an open curve may
@@ -1578,7 +1713,7 @@ unswell(struct fair *f, struct best *b, double *xt, double *h)
 		return 0;
 	memcpy(xt, b->x, (f->nseg + f->n) * sizeof *xt);
 	b->found = 0;
-	b->score = HUGE_VAL;
+	b->score = b->least = b->e = HUGE_VAL;
 	for (int k = 0; k < FAIR_UNSWELL && !b->found; k++) {
 		for (size_t s = 0; s < f->nseg; s++) {
 			double c = log(vdist(f->p + ((s + 1) % f->n) * f->dim,
@@ -1618,7 +1753,7 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 	struct loft_error err;
 
 	if (chord_spline(f, b, h) == 0 && b->rchord < 0)
-		b->rchord = least_radius(f, b->cseg);
+		b->rchord = least_radius(f, b->cseg, f->nseg);
 	/* the chord spline's largest curvature, exactly where the samples
 	 * of its cap missed its peak */
 	if (b->rchord > 0)
@@ -1637,7 +1772,8 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 		return 0;
 	b->echord = curve_energy(f->seg, f->nseg, f->dim, 0, f->check, NULL,
 	    &k, NULL, &len) * (1 + 1e-12);
-	b->score = b->echord * len;
+	b->score = b->least = b->echord * len;
+	b->e = b->echord;
 	b->found = 0;
 	f->e0 = b->score;
 	memcpy(b->x, x, (f->nseg + f->n) * sizeof *x);
@@ -1668,9 +1804,15 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 		if (e < HUGE_VAL && judge(f, b, x, h) != 0)
 			return -1;
 	}
-	rc = spiral_start(f);
-	if (rc < 0 || (rc == 0 && judge(f, b, NULL, h) != 0))
-		return -1;
+	/* the spirals, a cubic a span, and split where the caller allows */
+	for (int split = 0; split <= (b->pseg != NULL); split++) {
+		size_t ns;
+		double *q = split ? b->pseg : f->seg;
+
+		rc = spiral_start(f, split, q, &ns);
+		if (rc < 0 || (rc == 0 && judge_segs(f, b, NULL, h, q, ns) != 0))
+			return -1;
+	}
 	return steps;
 }
 
@@ -1679,9 +1821,12 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	size_t nseg = o->closed ? n : n - 1, m = 2 * n;
+	/* split spirals' room: LOFT_FIT_SPLIT segments a span */
+	size_t room = o->split && dim == 2 && o->closed && n <=
+	    SPIRAL_MAXKNOTS ? LOFT_FIT_SPLIT : 1;
 	struct fair f = { o, p, n, nseg, dim, seg, NULL, NULL, NULL, 0, 0, NULL,
 	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
-	struct best b = { NULL, 0, 0, -1, NULL, 0, NULL, 0, -1 };
+	struct best b = { NULL, 0, 0, 0, 0, -1, NULL, 0, NULL, 0, NULL, 0, -1 };
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc, more = 0;
 
@@ -1693,7 +1838,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		return loft__fit_cspline(&co, p, n, dim, seg, err);
 	}
 	mem = calloc((7 + 2 * dim) * n + 2 * dim * n + 4 * dim * n + 2 * m +
-	    n + m * (2 * FAIR_MEMORY + 3) + 8 * dim * n + 2 * n / sizeof *mem +
+	    n + m * (2 * FAIR_MEMORY + 3) + 4 * dim * n * (1 + room + (room > 1 ?
+	    room : 0)) + 2 * n / sizeof *mem +
 	    1, sizeof *mem);
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -1706,7 +1852,9 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	v = h + n;
 	b.cseg = v + m * (2 * FAIR_MEMORY + 3);
 	b.sseg = b.cseg + 4 * dim * n;
-	f.parts = (unsigned char *)(b.sseg + 4 * dim * n);
+	b.pseg = room > 1 ? b.sseg + 4 * dim * n * room : NULL;
+	f.parts = (unsigned char *)(b.sseg + 4 * dim * n * (room > 1 ? 2 *
+	    room : 1));
 	f.check = f.parts + n;
 	start_intervals(&f, START_CHORD, x);
 	for (size_t s = 0; s < nseg; s++)
@@ -1720,7 +1868,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		f.slow = fmin(FAIR_SLOW * FAIR_SLOW, slow);
 		f.e0 = e;
 		b.echord = fine * (1 - 1e-15);
-		b.score = fine;
+		b.score = b.least = b.e = fine;
 		memcpy(b.x, x, m * sizeof *x);
 		if (isfinite(f.e0) && f.e0 > 0) {
 			info->iterations = descend(&f, x, h, v, &e);
@@ -1742,7 +1890,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		/* the best: the chord spline unless a descent or the spiral
 		 * start beat it */
 		if (b.found == 2) {
-			memcpy(seg, b.sseg, 4 * dim * nseg * sizeof *seg);
+			memcpy(seg, b.sseg, 4 * dim * b.nsseg * sizeof *seg);
+			info->nseg = b.nsseg;
 			info->converged = 1;
 			free(mem);
 			return 0;

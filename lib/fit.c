@@ -361,6 +361,7 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 		for (size_t i = 0; i < len; i++)
 			vcopy(pk + i * dim, q + ((a + i) % n) * dim, dim);
 		po.closed = 0;
+		po.split = 0;
 		po.ncorner = 0;
 		po.nstraight = 0;
 		po.have_start = !o->closed && k == 0 && o->have_start;
@@ -409,6 +410,7 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 	if (info == NULL)
 		info = &dummy;
 	memset(info, 0, sizeof *info);
+	info->nseg = nseg;
 	if (dim < 2 || dim > LOFT_MAXDIM || n == 0)
 		return loft__check_knots(o, p, n, dim, err);
 	if ((q = malloc(n * dim * sizeof *q)) == NULL)
@@ -421,7 +423,7 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 		rc = fit_method(o, q, n, dim, seg, info, err);
 	free(q);
 	/* back to the knots' own units, exactly */
-	for (size_t i = 0; rc == 0 && i < nseg * 4 * dim; i++)
+	for (size_t i = 0; rc == 0 && i < info->nseg * 4 * dim; i++)
 		seg[i] = ldexp(seg[i], e);
 	return rc;
 }

@@ -259,7 +259,15 @@ struct loft_fit_opts {
 	const size_t *straight; /* straight spans (knot i to i + 1, 0-based,
 	                         * increasing), or NULL */
 	size_t nstraight;
+	int split;              /* LOFT_FAIR: a span may be several segments
+	                         * (see loft_fit) */
 };
+
+/* With loft_fit_opts.split, LOFT_FAIR may write a closed plane record
+ * of at most LOFT_FIT_SPLIT_KNOTS knots, without corners or straight
+ * spans, with a span split into as many as LOFT_FIT_SPLIT segments. */
+#define LOFT_FIT_SPLIT 16
+#define LOFT_FIT_SPLIT_KNOTS 64
 
 /* The programs' defaults: the method LOFT_FAIR; for LOFT_MANNING the
  * paper's alpha and sign rule. */
@@ -269,6 +277,7 @@ struct loft_fit_info {
 	int iterations;         /* Manning's iteration; 0 for the baselines */
 	double change;          /* last largest change of a unit tangent */
 	int converged;
+	size_t nseg;            /* the segments written */
 };
 
 /*
@@ -276,7 +285,13 @@ struct loft_fit_info {
  * write its segments to seg, 4 * dim numbers per segment in the row
  * layout of loft_cubic_eval: n segments for a closed curve, n - 1 for an
  * open one.  seg must hold 4 * dim * n doubles.  Open curves whose end
- * tangents are not given get loft_end_tangent's estimate.  Returns 0, or
+ * tangents are not given get loft_end_tangent's estimate.  With
+ * o->split, a closed plane record of at most LOFT_FIT_SPLIT_KNOTS
+ * knots and no corners or straight spans may have its spans split
+ * (LOFT_FAIR, where one cubic cannot follow the fairest curve round a
+ * span), and seg must then hold LOFT_FIT_SPLIT times as many; every
+ * knot begins a segment, in order, and info->nseg (info not NULL)
+ * says how many were written.  Returns 0, or
  * LOFT_EGEOM (too few knots, coincident consecutive knots (row: the
  * second), collinear knots on a closed curve, a zero end tangent, a
  * vanishing tangent), LOFT_ENOCONV (info->change says how far it got) or

@@ -147,9 +147,11 @@ out_is "cubic closed=1
 1 1 0 1 -0.828427 0.828427 -0.828427 -0.828427
 0 1 0 0 -0.828427 -0.828427 0.828427 -0.828427
 "
-# The default fits the square with the same symmetry (fit.sh checks its
-# magnitude); the tests of the stream below compare against it.
-run "$B/splinefit -p 6 $T/square.knots"
+# The default with -1 (a cubic a span) fits the square with the same
+# symmetry (fit.sh checks its magnitude); the tests of the stream below
+# compare against it.  Without -1 each quarter turn is split in two
+# (fit.sh: the knots of a circle give the circle).
+run "$B/splinefit -1 -p 6 $T/square.knots"
 status 0
 awk 'NR > 1 && NF == 8 { for (i = 5; i <= 8; i++) { a = $i < 0 ? -$i : $i
     if (v == "") v = a; else if (a != v) bad = 1 } } END { exit bad }' \
@@ -183,16 +185,19 @@ while [ $i -lt 50 ]; do
 	echo >>"$T/many.knots"
 	i=$((i + 1))
 done
-run "$B/splinefit -p 6 $T/many.knots"
+run "$B/splinefit -1 -p 6 $T/many.knots"
 status 0
 [ "$(grep -c '^cubic' "$T/out")" = 50 ] && ok || no "50 records in, 50 out"
 [ "$(sort -u "$T/out" | wc -l)" -eq 6 ] && ok || no "batch records differ"
-run "$B/splinefit $T/many.knots | $B/sample -n 4"
+run "$B/splinefit -1 $T/many.knots | $B/sample -n 4"
 [ "$(grep -c . "$T/out")" = $((50 * 17)) ] && ok || no "50 x 17 points"
+run "$B/splinefit $T/many.knots | $B/sample -n 4"
+[ "$(grep -c . "$T/out")" = $((50 * 33)) ] && ok ||
+    no "50 x 33 points: the square's quarter turns split in two"
 
 { cat "$T/square.knots"; printf '\n# bad\n0 0\nnan 1\n1 1\n\n'
   cat "$T/square.knots"; } >"$T/mixed.knots"
-run "$B/splinefit -p 6 $T/mixed.knots"
+run "$B/splinefit -1 -p 6 $T/mixed.knots"
 status 1
 says "splinefit: $T/mixed.knots:8: 'nan' is not a number"
 cat "$T/square.cubic6" "$T/square.cubic6" | cmp -s - "$T/out" && ok ||
@@ -254,7 +259,7 @@ run "$B/splinefit -v -m chord $T/square.knots"
 says "0 iterations"
 
 # ---- files, standard input, output errors ---------------------------
-run "$B/splinefit -p 6 $T/nonexistent.knots - $T/square.knots < $T/square.knots"
+run "$B/splinefit -1 -p 6 $T/nonexistent.knots - $T/square.knots < $T/square.knots"
 status 1
 says "splinefit: $T/nonexistent.knots: No such file or directory"
 cat "$T/square.cubic6" "$T/square.cubic6" | cmp -s - "$T/out" && ok ||
@@ -271,7 +276,7 @@ run "$B/splinefit $T/big.knots | $B/sample | head -1"
 status 0
 out_is "0 0"
 # CRLF line ends, no final newline
-run "printf '0 0\r\n1 0\r\n1 1\r\n0 1' | $B/splinefit -p 6"
+run "printf '0 0\r\n1 0\r\n1 1\r\n0 1' | $B/splinefit -1 -p 6"
 cmp -s "$T/out" "$T/square.cubic6" && ok || no "CRLF and no final newline"
 
 # ---- the README's tour --------------------------------------------------

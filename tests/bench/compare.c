@@ -308,6 +308,7 @@ run(const char *file)
 	double k[MAXK][2], e[NMETHOD], kmax[NMETHOD];
 	int nfam[3] = { 0, 0, 0 }, sharper[NMETHOD] = { 0 };
 	int twice[NMETHOD] = { 0 };    /* largest curvature over 2 Spiro's */
+	long infl[NMETHOD] = { 0 };    /* inflexions, all sets */
 	int nset = 0, loops[NMETHOD] = { 0 }, fails[NMETHOD] = { 0 };
 	int best[NMETHOD] = { 0 }, nk = 0, have[NMETHOD];
 	char line[256];
@@ -341,9 +342,14 @@ run(const char *file)
 			loft_fit_defaults(&o);
 			o.method = m == FAIR ? LOFT_FAIR : m == MANNING ?
 			    LOFT_MANNING : LOFT_CHORD;
-			if (m <= CHORD)
-				ok = loft_fit(&o, &k[0][0], nk, 2, seg, NULL,
+			o.split = m == FAIR;    /* splinefit's default */
+			if (m <= CHORD) {
+				struct loft_fit_info info;
+
+				ok = loft_fit(&o, &k[0][0], nk, 2, seg, &info,
 				    &err) == 0;
+				ns = (int)info.nseg;
+			}
 			else if (m == HOBBY)
 				ok = hobby((const double (*)[2])k, nk, seg) == 0;
 			else {
@@ -370,10 +376,13 @@ run(const char *file)
 			kmax[m] = 0;
 			{
 				double r, u;
+				long ni;
 
 				if (loft_curve_min_radius(&c, &r, &u, &err) == 0 &&
 				    r > 0)
 					kmax[m] = 1 / r;
+				if (loft_curve_inflexions(&c, &ni, &err) == 0)
+					infl[m] += ni;
 			}
 		}
 		for (int m = 0; m < NMETHOD; m++) {
@@ -404,9 +413,9 @@ run(const char *file)
 	fclose(fp);
 	printf("%d uneven closed knot sets; energy over the fairest peer's "
 	    "(Spiro, Hobby, chord)\n", nset);
-	printf("%-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n",
+	printf("%-14s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s\n",
 	    "method", "median", "90%", "worst", "fairest", "loops", "sharper",
-	    "2xSpiro", "fails", "insoles", "blobs", "spikes", "spk90%",
+	    "2xSpiro", "inflex", "fails", "insoles", "blobs", "spikes", "spk90%",
 	    "spkworst");
 	for (int m = 0; m < NMETHOD; m++) {
 		if (!have[m]) {
@@ -417,17 +426,18 @@ run(const char *file)
 		qsort(ratio[m], nset, sizeof ratio[m][0], cmp);
 		for (int f = 0; f < 3; f++)
 			qsort(fam[f][m], nfam[f], sizeof fam[f][m][0], cmp);
-		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d %8d %8d %8.4f %8.4f "
+		printf("%-14s %8.4f %8.4f %8.3g %8d %8d %8d %8d %8ld %8d %8.4f %8.4f "
 		    "%8.4f %8.4f %8.3g\n", names[m], ratio[m][nset / 2],
 		    ratio[m][(int)(0.9 * (nset - 1))], ratio[m][nset - 1],
-		    best[m], loops[m], sharper[m], twice[m], fails[m],
+		    best[m], loops[m], sharper[m], twice[m], infl[m], fails[m],
 		    fam[0][m][nfam[0] / 2], fam[1][m][nfam[1] / 2],
 		    fam[2][m][nfam[2] / 2], fam[2][m][(int)(0.9 * (nfam[2] - 1))],
 		    fam[2][m][nfam[2] - 1]);
 	}
 	printf("(loops: curves that cross themselves where the chord spline "
 	    "does not; sharper: sets where the largest curvature is above\n"
-	    " the chord spline's; 2xSpiro: above twice Spiro's; insoles, "
+	    " the chord spline's; 2xSpiro: above twice Spiro's; inflex: the "
+	    "inflexions of all sets;\n insoles, "
 	    "blobs, spikes: the median of each family,\n spk90%%, spkworst: "
 	    "the spiky family's 90th percentile and worst)\n");
 	return 0;
