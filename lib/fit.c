@@ -289,6 +289,16 @@ is_straight(const struct loft_fit_opts *o, size_t s)
 	return 0;
 }
 
+/* Whether knot k is one of o's corners. */
+static int
+is_corner(const struct loft_fit_opts *o, size_t k)
+{
+	for (size_t j = 0; j < o->ncorner; j++)
+		if (o->corner[j] == k)
+			return 1;
+	return 0;
+}
+
 /*
  * The knots a curve breaks at, increasing, into brk; their count: the
  * corners and the ends of the straight spans (not an open curve's end).
@@ -374,11 +384,15 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 			vsub(s + 2 * dim, pk + dim, pk, dim);
 			vcopy(s + 3 * dim, s + 2 * dim, dim);
 		} else {
-			if ((o->closed || a > 0) && is_straight(o, (a + n - 1) % n)) {
+			/* a straight neighbour gives its direction, but not
+			 * across a corner */
+			if ((o->closed || a > 0) && is_straight(o, (a + n - 1) %
+			    n) && !is_corner(o, a % n)) {
 				po.have_start = 1;
 				span_direction(q, n, dim, a + n - 1, po.start);
 			}
-			if ((o->closed || b + 1 < n) && is_straight(o, b % n)) {
+			if ((o->closed || b + 1 < n) && is_straight(o, b % n) &&
+			    !is_corner(o, b % n)) {
 				po.have_end = 1;
 				span_direction(q, n, dim, b, po.end);
 			}
