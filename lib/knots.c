@@ -144,6 +144,22 @@ loft__open_ends(const struct loft_fit_opts *o, const double *p, size_t n,
 			return LOFT_EGEOM;
 		vscale(tn, -1, tn, dim);
 	}
+	/* two knots and one tangent given: the free end's is the circular
+	 * arc's, the given one mirrored in the chord (as three knots give
+	 * the circle's through them) */
+	if (n == 2 && o->have_start != o->have_end) {
+		double u[LOFT_MAXDIM];
+		const double *g = o->have_start ? t0 : tn;
+		double *t = o->have_start ? tn : t0;
+
+		vsub(u, last, p, dim);
+		if (vunit(u, dim) > 0) {
+			vscale(t, -1, g, dim);
+			vaxpy(t, 2 * vdot(g, u, dim), u, dim);
+			if (!(vunit(t, dim) > 0))
+				vcopy(t, u, dim);
+		}
+	}
 	return 0;
 }
 
