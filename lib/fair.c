@@ -932,7 +932,10 @@ spiral(double psi0, double psi1, double *k, double *len)
  * x[i]; segment s leaves knot s at psi0[s] from its chord, of angle
  * phi[s] and length c[s], and meets knot s + 1 at psi1[s]. */
 struct angles {
-	size_t n;
+	size_t n, nseg;
+	int closed;
+	int end[2];             /* an open curve's ends: 1 where the tangent
+	                         * is given (ref), 0 where free (an arc) */
 	double *ref, *phi, *c, *x, *k0, *k1, *len, *r, *jac, *dx, *xn;
 	double scale;           /* the mean chord */
 };
@@ -947,14 +950,18 @@ angle_diff(double a, double b)
 }
 
 /* The spirals of x and the curvature jumps at the knots, times the mean
- * chord, into a->r; the largest jump, or HUGE_VAL where a spiral fails. */
+ * chord, into a->r; the largest jump, or HUGE_VAL where a spiral fails.
+ * An open curve's end knot has instead its tangent's turn from the one
+ * given, or where none is, its span's change of curvature along it
+ * times its length (Spiro's manner: the span beside a free end is a
+ * circular arc). */
 static double
 residuals(struct angles *a, const double *x)
 {
 	size_t n = a->n;
 	double big = 0, k[2], len;
 
-	for (size_t s = 0; s < n; s++) {
+	for (size_t s = 0; s < a->nseg; s++) {
 		size_t t = (s + 1) % n;
 		double p0 = angle_diff(a->ref[s], a->phi[s]) + x[s];
 		double p1 = angle_diff(a->ref[t], a->phi[s]) + x[t];
@@ -966,7 +973,14 @@ residuals(struct angles *a, const double *x)
 		a->k1[s] = k[1] / a->len[s];
 	}
 	for (size_t i = 0; i < n; i++) {
-		a->r[i] = (a->k1[(i + n - 1) % n] - a->k0[i]) * a->scale;
+		size_t e = i == 0 ? 0 : n - 1, s = i == 0 ? 0 : n - 2;
+
+		if (a->closed || (i > 0 && i + 1 < n))
+			a->r[i] = (a->k1[(i + n - 1) % n] - a->k0[i]) * a->scale;
+		else if (a->end[i > 0])
+			a->r[i] = x[e];
+		else
+			a->r[i] = (a->k1[s] - a->k0[s]) * a->len[s];
 		big = fmax(big, fabs(a->r[i]));
 	}
 	return big;
@@ -1135,27 +1149,37 @@ spiral_solve(const struct fair *f, struct angles *a, double **mem)
 	double big;
 
 	*mem = NULL;
-	if (f->dim != 2 || !f->o->closed || n < 3 || n > SPIRAL_MAXKNOTS)
+	if (f->dim != 2 || n < (f->o->closed ? 3 : 2) || n > SPIRAL_MAXKNOTS)
 		return 1;
 	if ((*mem = malloc((10 * n + n * n) * sizeof **mem)) == NULL)
 		return -1;
 	a->n = n;
+	a->nseg = f->nseg;
+	a->closed = f->o->closed;
+	a->end[0] = f->o->have_start;
+	a->end[1] = f->o->have_end;
 	a->scale = 0;
 	a->ref = *mem, a->phi = a->ref + n, a->c = a->phi + n;
 	a->x = a->c + n, a->k0 = a->x + n, a->k1 = a->k0 + n;
 	a->len = a->k1 + n, a->r = a->len + n, a->dx = a->r + n;
 	a->xn = a->dx + n, a->jac = a->xn + n;
-	for (size_t i = 0; i < n; i++) {
+	for (size_t i = 0; i < a->nseg; i++) {
 		double u[2];
 
 		a->c[i] = unit_chord(f, i, u);
 		a->phi[i] = atan2(u[1], u[0]);
-		a->scale += a->c[i] / n;
+		a->scale += a->c[i] / a->nseg;
 	}
 	for (size_t i = 0; i < n; i++) {
 		double p = a->phi[(i + n - 1) % n];
 
-		a->ref[i] = p + angle_diff(a->phi[i], p) / 2;
+		if (a->closed || (i > 0 && i + 1 < n))
+			a->ref[i] = p + angle_diff(a->phi[i], p) / 2;
+		else if (a->end[i > 0])
+			a->ref[i] = i == 0 ? atan2(f->o->start[1], f->o->start[0]) :
+			    atan2(f->o->end[1], f->o->end[0]);
+		else
+			a->ref[i] = a->phi[i == 0 ? 0 : n - 2];
 		a->x[i] = 0;
 	}
 	big = residuals(a, a->x);
@@ -1287,7 +1311,7 @@ spiral_start(struct fair *f, int split, double *seg, size_t *nseg)
 	int rc = spiral_solve(f, &a, &mem);
 
 	*nseg = 0;
-	for (size_t s = 0; s < f->n && rc == 0; s++) {
+	for (size_t s = 0; s < f->nseg && rc == 0; s++) {
 		/* a quarter turn is two pieces, whatever its rounding */
 		int m = split ? (int)ceil(spiral_turning(&a, s) /
 		    SPIRAL_PIECE_TURN * (1 - 1e-9)) : 1;
@@ -1317,9 +1341,9 @@ static int
 spiral_intervals(const struct fair *f, double *x)
 {
 	struct angles a;
-	double *mem;
+	double *mem = NULL;
 	size_t n = f->n;
-	int rc = spiral_solve(f, &a, &mem);
+	int rc = f->o->closed ? spiral_solve(f, &a, &mem) : 1;
 
 	for (size_t i = 0; i < n && rc == 0; i++)
 		x[i] = log(a.len[i]);
@@ -1816,6 +1840,27 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 	return steps;
 }
 
+/* An open curve's spirals (Spiro's manner, a cubic a span: the span
+ * beside a free end a circular arc), where an end is free (a corner's),
+ * judged against the best yet after unswell: kept where their E is
+ * less and no span swells past what unswell allows.  Between two given
+ * tangents they add nothing to the descent's (splinefit -e's fits,
+ * between straight runs, came out farther from the truth).  0, or -1
+ * out of memory. */
+static int
+open_spiral(struct fair *f, struct best *b, double *h)
+{
+	size_t ns;
+	int rc = f->o->have_start && f->o->have_end ? 1 :
+	    spiral_start(f, 0, f->seg, &ns);
+
+	if (rc != 0)
+		return rc < 0 ? -1 : 0;
+	if (chord_spline(f, b, h) != 0 || swells(f, b))
+		return 0;
+	return judge_segs(f, b, NULL, h, f->seg, ns);
+}
+
 int
 loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -1879,6 +1924,8 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 			    chords * FAIR_SHARP > 1)))
 				more = thorough(&f, &b, x, h, v);
 			if (more >= 0 && !o->closed && unswell(&f, &b, v, h) < 0)
+				more = -1;
+			if (more >= 0 && !o->closed && open_spiral(&f, &b, h) < 0)
 				more = -1;
 			if (more < 0) {
 				free(mem);

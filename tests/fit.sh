@@ -107,14 +107,15 @@ out_is "cubic closed=0 corners=2
 0 0 1 0 1 0 1 0
 1 0 1 1 0 1 0 1
 "
-# With -S 0,1 the first piece starts up and ends along its chord at the
-# corner: Manning's eq. 11 with cos A = 0, cos B = 1, alpha = 2/3 gives
-# r = 2/(1 + 2/3) = 1.2 and l = 2/(1 + 1/3) = 1.5; -E changes the
-# second piece alone the same way (cos A = 1, cos B = 0: r = 1.5, l = 1.2).
+# With -S 0,1 the first piece, two knots, starts up and reaches the
+# corner as the circular arc that leaves so: down, -S mirrored in its
+# chord.  Manning's eq. 11 with cos A = cos B = 0 gives r = l = 2 (with
+# alpha = 2/3, r = 2/(1 + alpha cos B + (1 - alpha) cos A)); -E changes
+# the second piece alone the same way: it leaves the corner along -x.
 run "$B/splinefit -m manning -o -S 0,1 -E 1,0 -p 6 $T/l.knots"
 out_is "cubic closed=0 corners=2
-0 0 1 0 0 1.2 1.5 0
-1 0 1 1 0 1.5 1.2 0
+0 0 1 0 0 2 0 -2
+1 0 1 1 -2 0 2 0
 "
 # a corner at an end of an open curve changes nothing but the header,
 # which names the joints: 1 and n + 1 = 3 (loft.5)
@@ -268,6 +269,21 @@ for c in "" -o; do
 	$E "$T/st.cubic" | awk '{ exit !($5 < 1e-9) }' && ok ||
 	    no "$what: tangent jumps: $($E "$T/st.cubic")"
 done
+# A straight span whose knot is a corner too gives the piece beyond the
+# corner no direction (a Z's diagonal between its corners stays the
+# straight line between them, as any span between neighbouring corners
+# is): span 1, corner to corner, beside straight span 2 from corner 2
+for m in fair manning chord; do
+	what="-m $m: a span between corners beside a straight span"
+	printf 'points corners=1,2,3 straight=2\n0 0\n4 4\n0 4\n-1 2\n' |
+	    $B/splinefit -m $m >"$T/z.cubic"
+	awk 'NR == 2 { cx = $3 - $1; cy = $4 - $2; c = cx * cx + cy * cy
+	    a = ($5 * cy - $6 * cx)^2 / (c * ($5 * $5 + $6 * $6))
+	    b = ($7 * cy - $8 * cx)^2 / (c * ($7 * $7 + $8 * $8))
+	    exit !(a <= 1e-24 && b <= 1e-24 && $5 * cx > 0 && $7 * cx > 0) }' \
+	    "$T/z.cubic" &&
+	    ok || no "$what: not straight: $(sed -n 2p "$T/z.cubic")"
+done
 for bad in 0 7 2,2 3,1 x; do
 	run "printf 'points straight=$bad\n0 0\n4 0\n5 1\n4 2\n0 2\n-1 1\n' | $B/splinefit"
 	status 1
@@ -323,6 +339,19 @@ if /usr/bin/python3 tests/glyphs.py "$T/glyphs.knots" "$T/glyphs.truth" 300 \
 	awk -f tests/swell.awk "$T/out" "$T/gchord.cubic" >"$T/swell"
 	awk '{ exit !($1 == 0 && $2 >= 1000) }' "$T/swell" && ok ||
 	    no "$what: spans past the chord spline's swell: $(cat "$T/swell")"
+	# two of issue 23's targets, against Spiro's and Hobby's curves
+	# through the same knots (tests/bench/glyphs_cmp.py): the distance
+	# to the designer's outline at the 90th percentile no more than the
+	# better peer's, and fewer inflexions the outline lacks than Spiro's
+	$B/sample -n 50 "$T/out" >"$T/g-def.pts"
+	/usr/bin/python3 tests/bench/glyphs_cmp.py "$T/glyphs.truth" default \
+	    "$T/g-def.pts" >"$T/gcmp" 2>&1
+	if grep -q '^targets (issue 23) for default: ' "$T/gcmp"; then
+		grep -q '90% [0-9.]* <= [0-9.]* pass;.*xinflex [0-9]* < Spiro.s [0-9]* pass$' \
+		    "$T/gcmp" && ok || no "$what: $(grep '^targets' "$T/gcmp")"
+	else
+		echo "fit: glyphs beside Spiro and Hobby skipped: $(tail -1 "$T/gcmp")"
+	fi
 else
 	echo "fit: glyph contours skipped: $(head -1 "$T/glyphs.err")"
 fi
