@@ -120,6 +120,7 @@ struct work {
 	double *seg;            /* the curve through the knots */
 	double *pow;            /* its spans in powers of u */
 	double *spanmax;        /* the largest distance on each span */
+	size_t *eoff, *elist;   /* the polyline's edges near each span */
 	double *sk, *sseg, *sfu;        /* a try's saved knots, curve, feet */
 	size_t *sfj;
 	unsigned char *sfixed, *tried, *near;  /* near: points of a try */
@@ -148,6 +149,8 @@ work_free(struct work *w)
 	free(w->seg);
 	free(w->pow);
 	free(w->spanmax);
+	free(w->eoff);
+	free(w->elist);
 	free(w->sk);
 	free(w->sseg);
 	free(w->sfu);
@@ -179,6 +182,8 @@ work_alloc(struct work *w, size_t n, int dim)
 	w->seg = malloc(4 * dim * m * sizeof *w->seg);
 	w->pow = malloc(4 * dim * m * sizeof *w->pow);
 	w->spanmax = malloc(m * sizeof *w->spanmax);
+	w->eoff = malloc((m + 1) * sizeof *w->eoff);
+	w->elist = malloc(6 * n * sizeof *w->elist);
 	w->sk = malloc(m * dim * sizeof *w->sk);
 	w->sseg = malloc(4 * dim * m * sizeof *w->sseg);
 	w->sfu = malloc(n * sizeof *w->sfu);
@@ -190,7 +195,8 @@ work_alloc(struct work *w, size_t n, int dim)
 	w->sdist = malloc(n * sizeof *w->sdist);
 	return w->qbuf && w->sm && w->s && w->fj && w->fu && w->dist && w->k &&
 	    w->acc && w->wsum && w->fixed && w->corner && w->kidx && w->seg &&
-	    w->spanmax && w->pow && w->sk && w->sseg && w->sfu && w->sfj && w->sfixed &&
+	    w->spanmax && w->eoff && w->elist && w->pow && w->sk && w->sseg &&
+	    w->sfu && w->sfj && w->sfixed &&
 	    w->tried && w->near && w->stried && w->sdist ? 0 : -1;
 }
 
@@ -623,22 +629,72 @@ span_near(const struct work *w, size_t a, size_t b)
 	return d <= 1 || (w->closed && ns - d <= 1);
 }
 
+/* The spans near edge i of the points' polyline (from point i to the
+ * next): those span_near the foot of either end, each once, into c;
+ * returns how many (6 at most). */
+static int
+edge_spans(const struct work *w, size_t i, size_t *c)
+{
+	size_t ns = nseg_of(w), end[2] = { w->fj[i], w->fj[(i + 1) % w->n] };
+	int k = 0;
+
+	for (int e = 0; e < 2; e++)
+		for (int o = -1; o <= 1; o++) {
+			size_t j = end[e] + ns + o;     /* end[e] + o, cyclic */
+			int seen = 0;
+
+			if (!w->closed && (j < ns || j >= 2 * ns))
+				continue;       /* off an open curve's ends */
+			j %= ns;
+			for (int t = 0; t < k; t++)
+				seen |= c[t] == j;
+			if (!seen && span_near(w, end[e], j))
+				c[k++] = j;
+		}
+	return k;
+}
+
+/* The edges of the points' polyline near each span, from the feet as
+ * they are: those of span j (edge_spans) are elist[eoff[j] ..
+ * eoff[j + 1]), in the order of the edges.  So polyline_foot visits
+ * only them, not every edge, and the stray check is linear in the
+ * points rather than in their product with the samples. */
+static void
+near_edges(struct work *w)
+{
+	size_t ns = nseg_of(w), ne = w->closed ? w->n : w->n - 1, c[6];
+	size_t *off = w->eoff;
+
+	memset(off, 0, (ns + 1) * sizeof *off);
+	for (size_t i = 0; i < ne; i++)
+		for (int k = 0, nk = edge_spans(w, i, c); k < nk; k++)
+			off[c[k] + 1]++;
+	for (size_t j = 0; j < ns; j++)
+		off[j + 1] += off[j];
+	/* off[j] runs along span j's list as it fills, ending at its
+	 * successor's start; then each moves back one */
+	for (size_t i = 0; i < ne; i++)
+		for (int k = 0, nk = edge_spans(w, i, c); k < nk; k++)
+			w->elist[off[c[k]]++] = i;
+	for (size_t j = ns; j > 0; j--)
+		off[j] = off[j - 1];
+	off[0] = 0;
+}
+
 /* The nearest point to x of the polyline of the points near span j
- * (edge i from point i to the next), into f; returns its distance. */
+ * (edge i from point i to the next; the list of near_edges, made from
+ * the feet as they are), into f; returns its distance. */
 static double
 polyline_foot(const struct work *w, size_t j, const double *x, double *f)
 {
 	int dim = w->dim;
-	size_t ne = w->closed ? w->n : w->n - 1;
 	double best = HUGE_VAL;
 
-	for (size_t i = 0; i < ne; i++) {
-		size_t i1 = (i + 1) % w->n;
+	for (size_t e = w->eoff[j]; e < w->eoff[j + 1]; e++) {
+		size_t i = w->elist[e], i1 = (i + 1) % w->n;
 		const double *a = w->q + i * dim, *b = w->q + i1 * dim;
 		double ab[LOFT_MAXDIM], ax[LOFT_MAXDIM], c[LOFT_MAXDIM], t, l2, d;
 
-		if (!span_near(w, w->fj[i], j) && !span_near(w, w->fj[i1], j))
-			continue;
 		vsub(ab, b, a, dim);
 		vsub(ax, x, a, dim);
 		l2 = vdot(ab, ab, dim);
@@ -663,6 +719,7 @@ stray_spans(struct work *w)
 	size_t ns = nseg_of(w), bad = 0;
 	double room = w->tol + w->s[w->n] / w->n;
 
+	near_edges(w);
 	for (size_t j = 0; j < ns; j++)
 		for (int k = 1; k < APPROX_STRAY_SAMPLES; k++) {
 			double x[LOFT_MAXDIM];
@@ -803,6 +860,11 @@ split(struct work *w, size_t only)
 	}
 	if (add == 0)
 		return 0;
+	for (size_t j = 0; j < ns; j++)
+		if (count[j] && w->spanmax[j] == APPROX_FORCE) {
+			near_edges(w);  /* polyline_foot's, for the feet now */
+			break;
+		}
 	/* knots and their flags, the new after the span's first; to[j]: where
 	 * knot j goes */
 	for (size_t j = 0, t = 0; j < w->m; j++) {

@@ -22,9 +22,10 @@ fit() {
 	    2>"$T/$n.v" && ok || no "splinefit -e $tol $* $n: $(cat "$T/$n.v")"
 	"$B/sample" -n 128 "$T/$n.cubic" >"$T/$n.dense"
 }
-# le WHAT GOT BOUND: GOT <= BOUND
+# le WHAT GOT BOUND: GOT <= BOUND (no GOT, as from a curve not written,
+# fails)
 le() {
-	awk -v g="$2" -v b="$3" 'BEGIN { exit !(g + 0 <= b + 0) }' && ok ||
+	awk -v g="$2" -v b="$3" 'BEGIN { exit !(g != "" && g + 0 <= b + 0) }' && ok ||
 	    no "$1: got $2, want at most $3"
 }
 # field WORD TEXT: the word after WORD in TEXT
@@ -372,6 +373,29 @@ for seed in 1 2 3; do
 done
 run "$B/splinefit -K $T/sq.pts"
 status 2
+
+# ---- a corner beside a sparse run: the span over it has too few points
+# to split at its middle.  A rectangle 100 x 60, a point a mm along its
+# bottom, top and left sides, one every 30 mm along its right side, which
+# starts at the corner (100, 0); noise 0.05 from awk's generator.  The
+# span that rounds that corner is far from the corner's point and holds
+# it alone: without a knot put on the points there (split_far) the fit
+# ends "no span left to split".  The fit is written and every point is
+# within TOL of it (nearest).  Not checked yet, a defect left: the other
+# way (twoway) this curve passes TOL plus the mean spacing of the
+# points' polyline, by some mm, between two points of the sparse side,
+# where the stray check gives up after its rounds.
+awk 'BEGIN { srand(3); pi = atan2(0, -1)
+    side(0, 0, 100, 0, 1); side(100, 0, 100, 60, 30)
+    side(100, 60, 0, 60, 1); side(0, 60, 0, 0, 1) }
+    function side(x0, y0, x1, y1, sp,   k, i, t) {
+	k = int(sqrt((x1 - x0) ^ 2 + (y1 - y0) ^ 2) / sp + 0.5)
+	for (i = 0; i < k; i++) { t = i / k
+	    printf "%.6f %.6f\n", x0 + t * (x1 - x0) + g(), y0 + t * (y1 - y0) + g() } }
+    function g() { return 0.05 * sqrt(-2 * log(1 - rand())) * cos(2 * pi * rand()) }' \
+    >"$T/sparse.pts"
+fit sparse 1
+within sparse 1
 
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then
