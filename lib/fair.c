@@ -1829,7 +1829,7 @@ thorough(struct fair *f, struct best *b, double *x, double *h, double *v)
 			return -1;
 	}
 	/* the spirals, a cubic a span, and split where the caller allows */
-	for (int split = 0; split <= (b->pseg != NULL); split++) {
+	for (int split = 0; split < (b->pseg != NULL ? 2 : 1); split++) {
 		size_t ns;
 		double *q = split ? b->pseg : f->seg;
 
