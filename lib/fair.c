@@ -1861,6 +1861,35 @@ open_spiral(struct fair *f, struct best *b, double *h)
 	return judge_segs(f, b, NULL, h, f->seg, ns);
 }
 
+/*
+ * From the chord spline in f->seg (its E in f->e0), the quick descent,
+ * judged; then a closed record few or sharp enough searched thoroughly,
+ * an open one kept from swelling and given Spiro's spirals' chance.
+ * The steps into info->iterations; 0, or -1 out of memory.
+ */
+static int
+search(struct fair *f, struct best *b, double *x, double *h, double *v,
+    double chords, struct loft_fit_info *info)
+{
+	const struct loft_fit_opts *o = f->o;
+	double e;
+	int more = 0;
+
+	info->iterations = descend(f, x, h, v, &e);
+	if (info->iterations > 0 && e < HUGE_VAL)
+		more = judge(f, b, x, h);
+	if (more == 0 && o->closed && !o->quick && (f->n <= FAIR_FEW ||
+	    (f->n <= FAIR_THOROUGH && max_curvature(f->seg, f->nseg, f->dim) *
+	    chords * FAIR_SHARP > 1)))
+		more = thorough(f, b, x, h, v);
+	if (more >= 0 && !o->closed && (unswell(f, b, v, h) < 0 ||
+	    open_spiral(f, b, h) < 0))
+		more = -1;
+	if (more >= 0)
+		info->iterations += more;
+	return more < 0 ? -1 : 0;
+}
+
 int
 loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -1873,7 +1902,7 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	    NULL, 0, 0, 1, FAIR_STEPS, FAIR_SETTLED };
 	struct best b = { NULL, 0, 0, 0, 0, -1, NULL, 0, NULL, 0, NULL, 0, -1 };
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
-	int rc, more = 0;
+	int rc;
 
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
@@ -1915,24 +1944,10 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		b.echord = fine * (1 - 1e-15);
 		b.score = b.least = b.e = fine;
 		memcpy(b.x, x, m * sizeof *x);
-		if (isfinite(f.e0) && f.e0 > 0) {
-			info->iterations = descend(&f, x, h, v, &e);
-			if (info->iterations > 0 && e < HUGE_VAL)
-				more = judge(&f, &b, x, h);
-			if (more == 0 && o->closed && !o->quick && (n <= FAIR_FEW ||
-			    (n <= FAIR_THOROUGH && max_curvature(seg, nseg, dim) *
-			    chords * FAIR_SHARP > 1)))
-				more = thorough(&f, &b, x, h, v);
-			if (more >= 0 && !o->closed && unswell(&f, &b, v, h) < 0)
-				more = -1;
-			if (more >= 0 && !o->closed && open_spiral(&f, &b, h) < 0)
-				more = -1;
-			if (more < 0) {
-				free(mem);
-				return loft_fail(err, LOFT_ENOMEM, -1,
-				    "out of memory");
-			}
-			info->iterations += more;
+		if (isfinite(f.e0) && f.e0 > 0 && search(&f, &b, x, h, v,
+		    chords, info) < 0) {
+			free(mem);
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		}
 		/* the best: the chord spline unless a descent or the spiral
 		 * start beat it */
