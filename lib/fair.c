@@ -1864,7 +1864,9 @@ open_spiral(struct fair *f, struct best *b, double *h)
 /*
  * From the chord spline in f->seg (its E in f->e0), the quick descent,
  * judged; then a closed record few or sharp enough searched thoroughly,
- * an open one kept from swelling and given Spiro's spirals' chance.
+ * an open one kept from swelling and given Spiro's spirals' chance
+ * (unless o->quick: splinefit -e's trial fits, many, where the spirals'
+ * Newton made -K -e on noisy glyphs up to 9 times slower).
  * The steps into info->iterations; 0, or -1 out of memory.
  */
 static int
@@ -1883,7 +1885,7 @@ search(struct fair *f, struct best *b, double *x, double *h, double *v,
 	    chords * FAIR_SHARP > 1)))
 		more = thorough(f, b, x, h, v);
 	if (more >= 0 && !o->closed && (unswell(f, b, v, h) < 0 ||
-	    open_spiral(f, b, h) < 0))
+	    (!o->quick && open_spiral(f, b, h) < 0)))
 		more = -1;
 	if (more >= 0)
 		info->iterations += more;
