@@ -962,7 +962,7 @@ residuals(struct angles *a, const double *x)
 	double big = 0, k[2], len;
 
 	for (size_t s = 0; s < a->nseg; s++) {
-		size_t t = (s + 1) % n;
+		size_t t = s + 1 < n ? s + 1 : 0;       /* nseg <= n */
 		double p0 = angle_diff(a->ref[s], a->phi[s]) + x[s];
 		double p1 = angle_diff(a->ref[t], a->phi[s]) + x[t];
 
