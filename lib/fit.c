@@ -279,24 +279,28 @@ fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 	return loft__fit_cspline(o, q, n, dim, seg, err);
 }
 
+/* Whether k is one of the n numbers a. */
+static int
+listed(const size_t *a, size_t n, size_t k)
+{
+	for (size_t j = 0; j < n; j++)
+		if (a[j] == k)
+			return 1;
+	return 0;
+}
+
 /* Whether span s (knot s to s + 1) is one of o's straight ones. */
 static int
 is_straight(const struct loft_fit_opts *o, size_t s)
 {
-	for (size_t j = 0; j < o->nstraight; j++)
-		if (o->straight[j] == s)
-			return 1;
-	return 0;
+	return listed(o->straight, o->nstraight, s);
 }
 
 /* Whether knot k is one of o's corners. */
 static int
 is_corner(const struct loft_fit_opts *o, size_t k)
 {
-	for (size_t j = 0; j < o->ncorner; j++)
-		if (o->corner[j] == k)
-			return 1;
-	return 0;
+	return listed(o->corner, o->ncorner, k);
 }
 
 /*
@@ -310,10 +314,8 @@ break_knots(const struct loft_fit_opts *o, size_t n, size_t *brk)
 
 	for (size_t i = 0; i < n; i++) {
 		int at = is_straight(o, i) || (i > 0 && is_straight(o, i - 1)) ||
-		    (o->closed && i == 0 && is_straight(o, n - 1));
-
-		for (size_t j = 0; !at && j < o->ncorner; j++)
-			at = o->corner[j] == i;
+		    (o->closed && i == 0 && is_straight(o, n - 1)) ||
+		    is_corner(o, i);
 		if (at && (o->closed || (i > 0 && i + 1 < n) ||
 		    o->ncorner > 0))
 			brk[nb++] = i;
