@@ -128,6 +128,7 @@ struct work {
 	double *sdist;
 	size_t sm0;
 	int checks;             /* rounds of splitting the checks asked */
+	size_t start;           /* spans to start with */
 	struct loft_fit_opts fit;
 };
 
@@ -368,7 +369,7 @@ add_knot(struct work *w, size_t i, int corner)
 /*
  * The first knots: the corners (and the ends of an open outline), and
  * between each two of them spans of even length along the average, as
- * many as their share of APPROX_START_SPANS, two at least where there
+ * many as their share of w->start, two at least where there
  * are points enough (a closed curve needs three knots).  The feet of
  * the points: their span, and u by length along the average.
  */
@@ -396,7 +397,7 @@ first_knots(struct work *w, const size_t *corner, size_t ncorner)
 		    corner[0] == 0);
 
 		add_knot(w, i0, corner_here);
-		spans = (size_t)(APPROX_START_SPANS * len / total + 0.5);
+		spans = (size_t)(w->start * len / total + 0.5);
 		if (spans < 2)
 			spans = i1 - i0 >= 2 ? 2 : 1;
 		for (size_t t = 1, i = i0; t < spans; t++) {
@@ -2196,6 +2197,57 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 	return 0;
 }
 
+/* A fit that ends astray or crossing itself (past APPROX_CHECK_ROUNDS),
+ * or short of the tolerance, is tried again from more spans, as many
+ * as each of these while the points give each span this many at least:
+ * the few first knots of a thin stroke or a loop can settle on its two
+ * sides in turn, and the curve folds between them; from knots this
+ * close along the points, no knot spans two sides. */
+static const size_t approx_retry[] = { 48, 128 };
+#define APPROX_RETRY_POINTS 4
+
+/* The fit, and its tries again (approx_retry) while it fails a check:
+ * the first that passes, else the one that fails on the fewest spans,
+ * else the first's error.  The segments (scaled) into seg. */
+static int
+approx_tries(struct work *w, const struct loft_approx_opts *o,
+    const size_t *corner, double *seg, struct loft_approx_info *info,
+    struct loft_error *err)
+{
+	size_t best = (size_t)-1, nr = sizeof approx_retry / sizeof *approx_retry;
+	int rc = LOFT_ENOCONV;
+
+	w->start = APPROX_START_SPANS;
+	for (size_t r = 0; r <= nr && best > 0; r++) {
+		struct loft_approx_info ti, *ip = r == 0 ? info : &ti;
+		struct loft_error te;
+		size_t bad;
+		int trc;
+
+		if (r > 0)
+			w->start = approx_retry[r - 1];
+		if (w->start * APPROX_RETRY_POINTS > w->n && r > 0)
+			break;
+		w->checks = 0;
+		trc = approx_run(w, o, corner, ip, r == 0 ? err : &te);
+		if (trc == LOFT_ENOMEM)
+			return r == 0 ? trc : loft_fail(err, trc, -1, "%s",
+			    te.msg);
+		rc = r == 0 ? trc : rc;
+		if (trc != 0)
+			continue;
+		if ((bad = check_spans(w, ip->dist)) == (size_t)-1)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		if (r == 0 || rc != 0 || bad < best) {
+			best = bad;
+			rc = 0;
+			*info = *ip;
+			put_segments(w, seg);
+		}
+	}
+	return rc;
+}
+
 int
 loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_approx_info *info,
@@ -2244,10 +2296,9 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	w.q = w.qbuf;
 	for (size_t c = 0; c < o->ncorner; c++)
 		corner[c] = (o->corner[c] + n - w.shift) % n;
-	rc = approx_run(&w, o, corner, info, err);
+	rc = approx_tries(&w, o, corner, seg, info, err);
 	info->dist = ldexp(info->dist, e);
 	if (rc == 0) {
-		put_segments(&w, seg);
 		for (size_t i = 0; i < 4 * dim * info->nseg; i++)
 			seg[i] = ldexp(seg[i], e);
 	} else {

@@ -405,4 +405,23 @@ else
 	echo "skip: splinefit -e against scipy's splprep (no python3 with scipy)"
 fi
 
+# ---- folds on real outlines (issue 23): three noisy glyph contours of
+# make compare-approx's corpus (tests/glyphs.py, fontTools) on which the
+# few first knots settled on both sides of a thin stroke or a ball
+# terminal, and the fit, every point within TOL, folded between them:
+# its curve crossed itself and strayed 20 to 72 sigmas from the true
+# outline.  Now each is within 1.5 TOL (6 sigmas) of it and no curve
+# crosses itself (tests/bench/glyphs_noisy.py --check).
+if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
+    "$PY" tests/glyphs.py "$T/g.knots" "$T/g.truth" 100 2>"$T/g.err" &&
+    [ -s "$T/g.truth" ]; then
+	"$PY" tests/bench/glyphs_noisy.py --check 48,73,98 "$T/g.truth" \
+	    >"$T/gfold" 2>&1
+	awk '{ n++; if ($2 != "0" || !($3 <= 6)) bad++ }
+	    END { exit !(n == 3 && !bad) }' "$T/gfold" && ok ||
+	    no "folds on glyphs (contour, crosses, sigmas): $(cat "$T/gfold")"
+else
+	echo "skip: splinefit -e on noisy glyphs (no python3 with scipy and fontTools, or no fonts)"
+fi
+
 finish approx

@@ -3,6 +3,7 @@
 beside potrace tracing the same points rasterised.
 
     glyphs_noisy.py TRUTH WORKDIR [KNOTS]
+    glyphs_noisy.py --check K,K... TRUTH
 
 TRUTH: the designer's outlines of tests/glyphs.py (200 points a
 segment); KNOTS: its knot records, whose corners= name the true
@@ -14,11 +15,19 @@ noisy points is filled on a raster of pixels sigma wide and traced by
 potrace (its defaults) to SVG; its largest path is read back.  Printed
 for each: the fits that fail, the curves that cross themselves (their
 polyline of 30 points a segment), the Hausdorff distance to the true
-outline in sigmas, and the segments, at the median and 90th
+outline in sigmas (splinefit's curve sampled a quarter sigma apart at
+most, potrace's short segments 30 times each), and the segments, at
+the median and 90th
 percentile; for splinefit also the true corners kept (a corner= joint
 of the fit within 2 TOL of a true corner that turns by CORNER or more)
 and its false corners (a corner= joint farther than 2 TOL from every
-true corner the outline has)."""
+true corner the outline has).
+
+With --check, only contours K (from 0) are fitted, by splinefit -K -e,
+and a line is printed for each: K, whether the curve crosses itself
+(1) or not (0), and its Hausdorff distance to the true outline in
+sigmas, its curve sampled densely enough (a quarter sigma apart) for
+that distance to be the curve's, not its samples'."""
 import math
 import os
 import random
@@ -204,7 +213,62 @@ def report(name, fails, loops, dist, nseg):
            pct(nseg, 0.9)))
 
 
+def noisy(k, t, rng):
+    """Contour k of the truth t sampled as the corpus is: (points,
+    sigma, the dense truth)."""
+    tt = np.r_[t, t[:1]]
+    d = np.r_[0, np.cumsum(np.hypot(*np.diff(tt, axis=0).T))]
+    sigma = [0.001, 0.0025, 0.005][k % 3] * np.ptp(t, axis=0).max()
+    u = np.linspace(0, d[-1], 400, endpoint=False)
+    pts = np.array([[x + rng.gauss(0, sigma), y + rng.gauss(0, sigma)]
+                    for x, y in zip(np.interp(u, d, tt[:, 0]),
+                                    np.interp(u, d, tt[:, 1]))])
+    pts = np.round(pts, 4)
+    dense = np.concatenate([np.linspace(tt[i], tt[i + 1], 20,
+                                        endpoint=False)
+                            for i in range(len(t))])
+    return pts, sigma, dense
+
+
+def fine(rows, sigma):
+    """Samples of a cubic record a quarter sigma apart at most: with
+    PER a segment, the truth's distance to a long segment would be its
+    distance to the samples, up to half their spacing."""
+    global PER
+    # each span is no longer than its chord and a third of each tangent
+    span = max(np.hypot(*(r[2:4] - r[0:2])) + np.hypot(*r[4:6]) / 3 +
+               np.hypot(*r[6:8]) / 3 for r in rows)
+    keep, PER = PER, max(PER, int(np.ceil(span / (0.25 * sigma))))
+    c = hermite(rows)
+    PER = keep
+    return c
+
+
+def check(which, truth):
+    """The --check lines for contours which."""
+    rng = random.Random(23)
+    for k, t in enumerate(truth):
+        pts, sigma, dense = noisy(k, t, rng)
+        if k not in which:
+            continue
+        fit = subprocess.run(["bin/splinefit", "-K", "-e",
+                              "%g" % (4 * sigma)],
+                             input="".join("%.4f %.4f\n" % tuple(p)
+                                           for p in pts),
+                             capture_output=True, text=True)
+        if fit.returncode != 0:
+            print(k, "fails:", fit.stderr.strip())
+            continue
+        rows = records(fit.stdout)[0][1]
+        print(k, int(crosses(hermite(rows))),
+              "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma))
+
+
 def main():
+    if sys.argv[1] == "--check":
+        check([int(x) for x in sys.argv[2].split(",")],
+              [r for _, r in records(open(sys.argv[3]).read())])
+        return
     truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
     heads = [h for h, _ in records(open(sys.argv[3]).read())] \
@@ -215,17 +279,7 @@ def main():
            "potrace": [0, 0, [], []]}
     kept = want = false = 0
     for k, t in enumerate(truth):
-        tt = np.r_[t, t[:1]]
-        d = np.r_[0, np.cumsum(np.hypot(*np.diff(tt, axis=0).T))]
-        sigma = [0.001, 0.0025, 0.005][k % 3] * np.ptp(t, axis=0).max()
-        u = np.linspace(0, d[-1], 400, endpoint=False)
-        pts = np.array([[x + rng.gauss(0, sigma), y + rng.gauss(0, sigma)]
-                        for x, y in zip(np.interp(u, d, tt[:, 0]),
-                                        np.interp(u, d, tt[:, 1]))])
-        pts = np.round(pts, 4)
-        dense = np.concatenate([np.linspace(tt[i], tt[i + 1], 20,
-                                            endpoint=False)
-                                for i in range(len(t))])
+        pts, sigma, dense = noisy(k, t, rng)
         for name, opt in (("loft", []), ("loft -K", ["-K"])):
             fit = subprocess.run(["bin/splinefit"] + opt +
                                  ["-e", "%g" % (4 * sigma)],
@@ -239,7 +293,7 @@ def main():
             head, rows = records(fit.stdout)[0]
             c = hermite(rows)
             r[1] += crosses(c)
-            r[2].append(hausdorff(c, dense) / sigma)
+            r[2].append(hausdorff(fine(rows, sigma), dense) / sigma)
             r[3].append(len(rows))
             if opt:
                 a, b, f = corners_of(head, rows, 4 * sigma,
