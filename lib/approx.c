@@ -1284,7 +1284,7 @@ static void
 straighten(struct work *w)
 {
 	double floor = 0, turn, grow;
-	size_t ja, jb;
+	size_t ja = 0, jb = 0;  /* set by wiggle() where turn is finite */
 	int sg;
 
 	if (w->dim != 2)
@@ -2219,7 +2219,7 @@ approx_tries(struct work *w, const struct loft_approx_opts *o,
 
 	w->start = APPROX_START_SPANS;
 	for (size_t r = 0; r <= nr && best > 0; r++) {
-		struct loft_approx_info ti, *ip = r == 0 ? info : &ti;
+		struct loft_approx_info ti = { 0 }, *ip = r == 0 ? info : &ti;
 		struct loft_error te;
 		size_t bad;
 		int trc;
