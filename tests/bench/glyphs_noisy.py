@@ -81,10 +81,10 @@ def crosses(p):
     return False
 
 
-def hermite(rows):
-    """Samples of a cubic record's Hermite rows (pa pb da db), PER a
+def hermite(rows, per=PER):
+    """Samples of a cubic record's Hermite rows (pa pb da db), per a
     segment, closed polyline without its repeated end."""
-    u = np.linspace(0, 1, PER, endpoint=False)[:, None]
+    u = np.linspace(0, 1, per, endpoint=False)[:, None]
     h00, h10 = 2 * u**3 - 3 * u**2 + 1, u**3 - 2 * u**2 + u
     h01, h11 = -2 * u**3 + 3 * u**2, u**3 - u**2
     return np.concatenate([h00 * r[0:2] + h01 * r[2:4] + h10 * r[4:6] +
@@ -234,14 +234,18 @@ def fine(rows, sigma):
     """Samples of a cubic record a quarter sigma apart at most: with
     PER a segment, the truth's distance to a long segment would be its
     distance to the samples, up to half their spacing."""
-    global PER
     # each span is no longer than its chord and a third of each tangent
     span = max(np.hypot(*(r[2:4] - r[0:2])) + np.hypot(*r[4:6]) / 3 +
                np.hypot(*r[6:8]) / 3 for r in rows)
-    keep, PER = PER, max(PER, int(np.ceil(span / (0.25 * sigma))))
-    c = hermite(rows)
-    PER = keep
-    return c
+    return hermite(rows, max(PER, int(np.ceil(span / (0.25 * sigma)))))
+
+
+def splinefit(opt, pts, sigma):
+    """splinefit -e 4 sigma (and opt) of the points, as run."""
+    return subprocess.run(["bin/splinefit"] + opt + ["-e", "%g" % (4 * sigma)],
+                          input="".join("%.4f %.4f\n" % tuple(p)
+                                        for p in pts),
+                          capture_output=True, text=True)
 
 
 def check(which, truth):
@@ -251,11 +255,7 @@ def check(which, truth):
         pts, sigma, dense = noisy(k, t, rng)
         if k not in which:
             continue
-        fit = subprocess.run(["bin/splinefit", "-K", "-e",
-                              "%g" % (4 * sigma)],
-                             input="".join("%.4f %.4f\n" % tuple(p)
-                                           for p in pts),
-                             capture_output=True, text=True)
+        fit = splinefit(["-K"], pts, sigma)
         if fit.returncode != 0:
             print(k, "fails:", fit.stderr.strip())
             continue
@@ -281,11 +281,7 @@ def main():
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         for name, opt in (("loft", []), ("loft -K", ["-K"])):
-            fit = subprocess.run(["bin/splinefit"] + opt +
-                                 ["-e", "%g" % (4 * sigma)],
-                                 input="".join("%.4f %.4f\n" % tuple(p)
-                                               for p in pts),
-                                 capture_output=True, text=True)
+            fit = splinefit(opt, pts, sigma)
             r = res[name]
             if fit.returncode != 0:
                 r[0] += 1
