@@ -89,6 +89,10 @@
 #define APPROX_RELOCATE 1
 #define APPROX_KSAMPLES 16
 #define APPROX_FLAT 1e-9
+/* A line needs this many points to lean on; between two corners fewer
+ * start as one span (the end of a serif: a knot there would bend a
+ * stretch the points cannot hold). */
+#define APPROX_LINE_MIN 6
 
 /* Newton steps at most projecting a point onto the curve, each at most
  * APPROX_MAXSTEP in u; stop below APPROX_FOOT in u. */
@@ -399,7 +403,7 @@ first_knots(struct work *w, const size_t *corner, size_t ncorner)
 		add_knot(w, i0, corner_here);
 		spans = (size_t)(w->start * len / total + 0.5);
 		if (spans < 2)
-			spans = i1 - i0 >= 2 ? 2 : 1;
+			spans = i1 - i0 >= APPROX_LINE_MIN ? 2 : 1;
 		for (size_t t = 1, i = i0; t < spans; t++) {
 			double at = w->s[i0] + len * t / spans;
 
@@ -2037,7 +2041,6 @@ split_far(struct work *w)
  * line is the line's, and the rest of the tolerance is left for the
  * curve beside it, which the straight span now ends with its
  * direction. */
-#define APPROX_LINE_MIN 6
 #define APPROX_LINE_FRAC 0.75
 
 /* Whether the points on span j lie along the chord of its knots. */
