@@ -8,6 +8,14 @@
  * lines by its length over its radius, so only a bend too tight for a
  * smooth curve to follow within the tolerance reads as a corner; noise
  * of the size of the tolerance tilts a line over that length by little.
+ *
+ * A turn found at that scale says where a corner is only to within
+ * the scale, and one turn may be two corners: the end of a serif or a
+ * stroke, narrower than the scale, turns twice.  So each is settled by
+ * the points themselves, sharpest first: the split of the points near
+ * it into two lines that fits them best, or three lines (two corners)
+ * where that fits them better by more than the noise explains.  Other
+ * turns within the scale of a corner so settled are its echoes.
  */
 #include <stdlib.h>
 
@@ -26,7 +34,7 @@
 /* A corner turns about as much over twice the scale as over it; a
  * smooth bend, twice as much: a turn is a corner only where the turn
  * over twice the scale is at most this many times it. */
-#define CORNER_CONCENTRATED 1.5
+#define CORNER_CONCENTRATED 1.2
 
 /* A turn is a corner only where it is this many times its standard
  * error, from the scatter of the points about the two lines: noise
@@ -35,139 +43,376 @@
  * reaches three or four of them. */
 #define CORNER_SIGMAS 5.0
 
-/* The unit direction, in the order of the points, of the least-squares
- * line through points a..b (b - a + 1 of them, round the end when
- * closed), into d, and the variance of that direction (radians
- * squared) in *var; 0 where they give none. */
-static int
-direction(const double *p, size_t n, int dim, size_t a, size_t b, double *d,
-    double *var)
+/* Two corners where one was found must fit the points better than one
+ * by this many times the noise's variance: the second corner's two
+ * more unknowns absorb about two of it from noise alone, and the best
+ * of the few dozen pairs tried, up to about nine. */
+#define CORNER_SPLIT 9.0
+
+/* A corner is placed among at most about this many points either side
+ * of where its turn was found (every so many where the points are
+ * denser): the search tries each pair of them. */
+#define CORNER_PLACES 12
+
+/* The noise is taken as no less than this part of the tolerance, so
+ * that points without noise still weigh a second corner. */
+#define CORNER_NOISE_FLOOR 1e-3
+
+/* The outline: n points of dimension dim, closed or not. */
+struct outline {
+	const double *p;
+	size_t n;
+	int dim, closed;
+};
+
+/* Point j of o, counted round the end when closed; NULL where an open
+ * outline has none. */
+static const double *
+pt(const struct outline *o, long j)
 {
-	double ss = 0, lo = HUGE_VAL, hi = -HUGE_VAL;
-	size_t k = (b + n - a) % n + 1;
+	long n = (long)o->n;
+
+	if (o->closed)
+		return o->p + ((j % n + n) % n) * o->dim;
+	return j >= 0 && j < n ? o->p + j * o->dim : NULL;
+}
+
+/* The least-squares line through points a..a+k-1 of o: its unit
+ * direction, in the order of the points, into d (may be NULL); the sum
+ * of the squared distances of the points from it into *ss and their
+ * extent along it into *ext (either may be NULL).  0 where the points
+ * are missing or give no direction. */
+static int
+fit_line(const struct outline *o, long a, long k, double *d, double *ss,
+    double *ext)
+{
 	double c[LOFT_MAXDIM] = { 0 }, m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } };
-	double v[LOFT_MAXDIM], chord[LOFT_MAXDIM];
+	double v[LOFT_MAXDIM], u[LOFT_MAXDIM], lo = HUGE_VAL, hi = -HUGE_VAL;
+	double s = 0;
+	int dim = o->dim;
 
-	for (size_t t = 0; t < k; t++)
-		vaxpy(c, 1.0 / k, p + ((a + t) % n) * dim, dim);
-	for (size_t t = 0; t < k; t++) {
-		double r[LOFT_MAXDIM];
-
-		vsub(r, p + ((a + t) % n) * dim, c, dim);
+	if (k < 2 || pt(o, a) == NULL || pt(o, a + k - 1) == NULL)
+		return 0;
+	for (long t = 0; t < k; t++)
+		vaxpy(c, 1.0 / k, pt(o, a + t), dim);
+	for (long t = 0; t < k; t++) {
+		vsub(v, pt(o, a + t), c, dim);
 		for (int i = 0; i < dim; i++)
 			for (int j = 0; j < dim; j++)
-				m[i][j] += r[i] * r[j];
+				m[i][j] += v[i] * v[j];
 	}
 	/* the principal axis by power iteration from the chord */
-	vsub(chord, p + b * dim, p + a * dim, dim);
-	if (!(vunit(chord, dim) > 0))
+	vsub(u, pt(o, a + k - 1), pt(o, a), dim);
+	if (!(vunit(u, dim) > 0))
 		return 0;
-	vcopy(d, chord, dim);
 	for (int it = 0; it < 32; it++) {
 		for (int i = 0; i < dim; i++) {
 			v[i] = 0;
 			for (int j = 0; j < dim; j++)
-				v[i] += m[i][j] * d[j];
+				v[i] += m[i][j] * u[j];
 		}
 		if (!(vunit(v, dim) > 0))
 			break;
-		vcopy(d, v, dim);
+		vcopy(u, v, dim);
 	}
-	if (vdot(d, chord, dim) < 0)
-		vscale(d, -1, d, dim);
-	for (size_t t = 0; t < k; t++) {
-		double r[LOFT_MAXDIM], x;
+	vsub(v, pt(o, a + k - 1), pt(o, a), dim);
+	if (vdot(u, v, dim) < 0)
+		vscale(u, -1, u, dim);
+	for (long t = 0; t < k; t++) {
+		double x;
 
-		vsub(r, p + ((a + t) % n) * dim, c, dim);
-		x = vdot(r, d, dim);
+		vsub(v, pt(o, a + t), c, dim);
+		x = vdot(v, u, dim);
 		lo = fmin(lo, x);
 		hi = fmax(hi, x);
-		vaxpy(r, -x, d, dim);
-		ss += vdot(r, r, dim);
+		vaxpy(v, -x, u, dim);
+		s += vdot(v, v, dim);
 	}
-	*var = hi > lo && k > 2 ? ss / (k - 2) * 12 / k / ((hi - lo) * (hi - lo)) : HUGE_VAL;
+	if (d != NULL)
+		vcopy(d, u, dim);
+	if (ss != NULL)
+		*ss = s;
+	if (ext != NULL)
+		*ext = hi - lo;
 	return 1;
 }
 
-/* The first point at least len from point i (straight, not along the
- * polyline, whose length noise inflates), backward (dir -1) or
- * forward; *ok 0 where an open outline ends first, or none is. */
-static size_t
-reach(const double *p, size_t n, int dim, int closed, size_t i, int dir,
-    double len, int *ok)
+/* The angle between unit vectors u and v. */
+static double
+angle(const double *u, const double *v, int dim)
 {
-	size_t j = i;
+	double c = vdot(u, v, dim);
 
-	for (size_t t = 1; t < n; t++) {
-		if (!closed && ((dir < 0 && j == 0) || (dir > 0 && j == n - 1)))
-			break;
-		j = dir > 0 ? (j + 1) % n : (j + n - 1) % n;
-		if (vdist(p + j * dim, p + i * dim, dim) >= len)
-			return j;
-	}
-	*ok = 0;
-	return j;
+	return acos(c > 1 ? 1 : c < -1 ? -1 : c);
+}
+
+/* How many points from point i the first one at least len from it
+ * lies (straight, not along the polyline, whose length noise
+ * inflates), backward (dir -1) or forward; 0 where none is. */
+static long
+reach(const struct outline *o, long i, int dir, double len)
+{
+	for (long t = 1; t < (long)o->n && pt(o, i + dir * t) != NULL; t++)
+		if (vdist(pt(o, i + dir * t), pt(o, i), o->dim) >= len)
+			return t;
+	return 0;
 }
 
 /* The turn at point i over the scale len; 0 where none is measured,
  * or (gate) where it is within the noise's reach. */
 static double
-turn_at(const double *p, size_t n, int dim, int closed,
-    size_t i, double len, int gate)
+turn_at(const struct outline *o, long i, double len, int gate)
 {
-	int ok = 1;
-	size_t a = reach(p, n, dim, closed, i, -1, len, &ok);
-	size_t b = reach(p, n, dim, closed, i, 1, len, &ok);
-	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], c, va, vb, t;
+	long a = reach(o, i, -1, len), b = reach(o, i, 1, len);
+	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], sa, sb, ea, eb, t, se;
 
-	if (!ok || !direction(p, n, dim, a, i, u, &va) ||
-	    !direction(p, n, dim, i, b, v, &vb))
+	if (a == 0 || b == 0 || !fit_line(o, i - a, a + 1, u, &sa, &ea) ||
+	    !fit_line(o, i, b + 1, v, &sb, &eb))
 		return 0;
-	c = vdot(u, v, dim);
-	t = acos(c > 1 ? 1 : c < -1 ? -1 : c);
-	/* a turn within the noise's reach counts as none */
-	return !gate || t >= CORNER_SIGMAS * sqrt(va + vb) ? t : 0;
+	t = angle(u, v, o->dim);
+	/* the lines' tilts from the scatter of their points; a turn
+	 * within the noise's reach counts as none */
+	se = sqrt((a > 1 && ea > 0 ? sa / (a - 1) * 12 / (a + 1) / (ea * ea) :
+	    HUGE_VAL) + (b > 1 && eb > 0 ? sb / (b - 1) * 12 / (b + 1) /
+	    (eb * eb) : HUGE_VAL));
+	return !gate || t >= CORNER_SIGMAS * se ? t : 0;
+}
+
+static int
+by_value(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+/* The noise of the points (standard deviation across the outline),
+ * from the median distance of each point from its neighbours' chord
+ * (a bend or a corner moves few of them); 0 where there is none. */
+static double
+noise(const struct outline *o)
+{
+	double *r = malloc(o->n * sizeof *r), s = 0;
+	size_t k = 0;
+
+	if (r == NULL)
+		return 0;
+	for (long i = 0; i < (long)o->n; i++) {
+		double c[LOFT_MAXDIM], e[LOFT_MAXDIM];
+
+		if (pt(o, i - 1) == NULL || pt(o, i + 1) == NULL)
+			continue;
+		vsub(c, pt(o, i + 1), pt(o, i - 1), o->dim);
+		vsub(e, pt(o, i), pt(o, i - 1), o->dim);
+		if (!(vunit(c, o->dim) > 0))
+			continue;
+		vaxpy(e, -vdot(e, c, o->dim), c, o->dim);
+		if (isfinite(vnorm(e, o->dim)))
+			r[k++] = vnorm(e, o->dim);
+	}
+	if (k > 0) {
+		qsort(r, k, sizeof *r, by_value);
+		/* the distance is normal with variance 1.5 s^2 across a
+		 * plane curve; its median absolute value is 0.6745 of that */
+		s = r[k / 2] / (0.6745 * sqrt(1.5));
+	}
+	free(r);
+	return s;
+}
+
+/* The squared distances of points a+1..b-1 from the chord a-b; HUGE_VAL
+ * where the chord is none. */
+static double
+chord_ss(const struct outline *o, long a, long b)
+{
+	double c[LOFT_MAXDIM], r[LOFT_MAXDIM], ss = 0;
+
+	vsub(c, pt(o, b), pt(o, a), o->dim);
+	if (!(vunit(c, o->dim) > 0))
+		return HUGE_VAL;
+	for (long j = a + 1; j < b; j++) {
+		vsub(r, pt(o, j), pt(o, a), o->dim);
+		vaxpy(r, -vdot(r, c, o->dim), c, o->dim);
+		ss += vdot(r, r, o->dim);
+	}
+	return ss;
+}
+
+/* The squared distances of points lo..hi from two lines, lo..a and
+ * b..hi, with two corners a < b (the chord a-b between) or one (a ==
+ * b); HUGE_VAL where the points are missing, or where two corners do
+ * not both turn by CORNER_TURN. */
+static double
+corner_ss(const struct outline *o, long lo, long a, long b, long hi)
+{
+	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], w[LOFT_MAXDIM], sa, sb;
+
+	if (!fit_line(o, lo, a - lo + 1, u, &sa, NULL) ||
+	    !fit_line(o, b, hi - b + 1, w, &sb, NULL))
+		return HUGE_VAL;
+	if (a == b)
+		return sa + sb;
+	vsub(v, pt(o, b), pt(o, a), o->dim);
+	if (!(vunit(v, o->dim) > 0) || angle(u, v, o->dim) < CORNER_TURN ||
+	    angle(v, w, o->dim) < CORNER_TURN)
+		return HUGE_VAL;
+	return sa + sb + chord_ss(o, a, b);
+}
+
+/* The best single corner a in from..to (every step-th) and the best
+ * pair a < b, a in from..to, b up to last, for the points lo..hi: each
+ * lowers *one or *two (and sets *at, or *pa and *pb) where it fits
+ * them better. */
+static void
+search(const struct outline *o, long lo, long hi, long from, long to,
+    long last, long step, double *one, long *at, double *two, long *pa,
+    long *pb)
+{
+	double s;
+
+	for (long a = from; a <= to; a += step) {
+		if ((s = corner_ss(o, lo, a, a, hi)) < *one) {
+			*one = s;
+			*at = a;
+		}
+		for (long b = a + step; b <= last; b += step)
+			if ((s = corner_ss(o, lo, a, b, hi)) < *two) {
+				*two = s;
+				*pa = a;
+				*pb = b;
+			}
+	}
+}
+
+/* The corner or two within w points of point i: the split of the
+ * points within w + m of it into two lines, or three, that fits them
+ * best (each line m points at least); their indices into c; returns
+ * how many.  Where w exceeds CORNER_PLACES, every so many points are
+ * tried, then every point near the best. */
+static int
+settle(const struct outline *o, long i, long w, long m, double sigma,
+    long *c)
+{
+	double one = HUGE_VAL, two = HUGE_VAL;
+	long at = i, a2 = i, b2 = i, lo = i - w - m, hi = i + w + m;
+	long step = w / CORNER_PLACES + 1;
+
+	search(o, lo, hi, i - w, i + w, i + w, step, &one, &at, &two, &a2,
+	    &b2);
+	if (step > 1) {
+		long a = at, pa = a2, pb = b2;
+
+		search(o, lo, hi, a - step + 1, a + step - 1, a - step, 1,
+		    &one, &at, &two, &a2, &b2);     /* singles only */
+		if (two < HUGE_VAL)
+			search(o, lo, hi, pa - step + 1, pa + step - 1,
+			    pb + step - 1, 1, &one, &at, &two, &a2, &b2);
+	}
+	if (two + CORNER_SPLIT * sigma * sigma < one) {
+		c[0] = a2;
+		c[1] = b2;
+		return 2;
+	}
+	c[0] = at;
+	return 1;
+}
+
+static int
+by_index(const void *a, const void *b)
+{
+	size_t x = *(const size_t *)a, y = *(const size_t *)b;
+
+	return (x > y) - (x < y);
+}
+
+/* The turns of o at the scale len into turn (0 where none is a
+ * corner's), and the points either side within half of it into half;
+ * the indices of the local sharpest into cand, sharpest first;
+ * returns how many. */
+static size_t
+candidates(const struct outline *o, double len, double *turn, long *half,
+    size_t *cand)
+{
+	size_t nc = 0;
+	long n = (long)o->n;
+
+	for (long i = 0; i < n; i++)
+		if ((turn[i] = turn_at(o, i, len, 1)) > 0 &&
+		    turn_at(o, i, 2 * len, 0) > CORNER_CONCENTRATED * turn[i])
+			turn[i] = 0;    /* a bend: twice the length, twice the turn */
+	for (long i = 0; i < n; i++) {
+		long a = reach(o, i, -1, len / 2), b = reach(o, i, 1, len / 2);
+		int best = turn[i] >= CORNER_TURN && a > 0 && b > 0;
+
+		/* the sharpest within half the scale (the first of equals) */
+		for (long j = i - a; best && j <= i + b; j++)
+			if (j != i && (turn[(j + n) % n] > turn[i] ||
+			    (j < i && turn[(j + n) % n] == turn[i])))
+				best = 0;
+		if (best) {
+			half[i] = b;
+			cand[nc++] = (size_t)i;
+		}
+	}
+	/* sharpest first (insertion: they are few) */
+	for (size_t x = 1; x < nc; x++)
+		for (size_t y = x; y > 0 && turn[cand[y]] > turn[cand[y - 1]]; y--) {
+			size_t t = cand[y];
+
+			cand[y] = cand[y - 1];
+			cand[y - 1] = t;
+		}
+	return nc;
 }
 
 size_t
 loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
     size_t *corner)
 {
-	double *s = malloc((n + 1) * sizeof *s), *turn = malloc(n * sizeof *turn);
-	double len;
-	size_t nc = 0;
+	struct outline o = { p, n, dim, closed };
+	double *turn = malloc(n * sizeof *turn), sigma, len = 0;
+	long *half = malloc(n * sizeof *half);
+	size_t *cand = malloc(n * sizeof *cand), nc = 0, ncand;
+	unsigned char *taken = calloc(n, 1);
 
-	if (s == NULL || turn == NULL || n < 5) {
-		free(s);
+	if (turn == NULL || half == NULL || cand == NULL || taken == NULL ||
+	    n < 5) {
 		free(turn);
+		free(half);
+		free(cand);
+		free(taken);
 		return 0;
 	}
-	s[0] = 0;
 	for (size_t i = 1; i <= n; i++)
-		s[i] = s[i - 1] + (i < n || closed ?
-		    vdist(p + (i % n) * dim, p + (i - 1) * dim, dim) : 0);
-	len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * s[n] / n);
-	for (size_t i = 0; i < n; i++)
-		if ((turn[i] = turn_at(p, n, dim, closed, i, len, 1)) > 0 &&
-		    turn_at(p, n, dim, closed, i, 2 * len, 0) >
-		    CORNER_CONCENTRATED * turn[i])
-			turn[i] = 0;    /* a bend: twice the length, twice the turn */
-	for (size_t i = 0; i < n; i++) {
-		int ok = 1, best = turn[i] >= CORNER_TURN;
-		size_t a = reach(p, n, dim, closed, i, -1, len / 2, &ok);
-		size_t b = reach(p, n, dim, closed, i, 1, len / 2, &ok);
+		if (i < n || closed)
+			len += vdist(p + (i % n) * dim, p + (i - 1) * dim, dim);
+	len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
+	sigma = fmax(noise(&o), CORNER_NOISE_FLOOR * tol);
+	ncand = candidates(&o, len, turn, half, cand);
+	for (size_t x = 0; x < ncand; x++) {
+		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2;
+		long c[2], w = m;
+		int k;
 
-		/* the sharpest within half the scale either side (the first
-		 * of equals): the two corners of a stroke's end as thin as
-		 * the scale are two */
-		for (size_t j = a; best && j != b; j = (j + 1) % n)
-			if (j != i && (turn[j] > turn[i] ||
-			    (j < i && turn[j] == turn[i])))
-				best = 0;
-		if (best)
-			corner[nc++] = i;
+		if (taken[i])
+			continue;       /* an echo of a sharper one's */
+		k = settle(&o, i, w, m, sigma, c);
+		for (int q = 0; q < k; q++) {
+			size_t j = (size_t)((c[q] % (long)n + (long)n) % (long)n);
+
+			if (!taken[j] && (q == 0 || j != corner[nc - 1]))
+				corner[nc++] = j;
+		}
+		for (int q = 0; q < k; q++)     /* their echoes */
+			for (long d = -m; d <= m; d++)
+				if (pt(&o, c[q] + d) != NULL)
+					taken[((c[q] + d) % (long)n + (long)n) %
+					    (long)n] = 1;
 	}
-	free(s);
+	qsort(corner, nc, sizeof *corner, by_index);
 	free(turn);
+	free(half);
+	free(cand);
+	free(taken);
 	return nc;
 }

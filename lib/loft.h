@@ -394,9 +394,11 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
 /*
  * The corners of an outline given by n dense points p (dimension dim,
  * in order along it; closed: the last joins the first), found at a
- * scale of a few tol (corners.c): the points where the least-squares
- * lines through the points either side, over that length, turn by 30
- * degrees or more, the sharpest within it.  Their indices, increasing,
+ * scale of a few tol (corners.c): where the least-squares lines
+ * through the points either side, over that length, turn by 30 degrees
+ * or more, the sharpest within it; each such turn is then placed at the
+ * split of the points near it into two lines (or three: two corners,
+ * the end of a serif) that fits them best.  Their indices, increasing,
  * into corner (room for n); returns their count (0 also when out of
  * memory).  A circle or a gentle bend gives none.
  */

@@ -374,6 +374,44 @@ done
 run "$B/splinefit -K $T/sq.pts"
 status 2
 
+# ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
+# ends shorter than the six point spacings the corners are judged over
+# (as a serif's end is).  Each end turns twice: the four corners are kept,
+# each within 2 tol of the slab's, and there is no other; the curve does
+# not cross itself (its polyline, sample -n 16, against every other edge)
+for seed in 1 2 3; do
+	awk -v r="$seed" 'BEGIN { srand(r); pi = atan2(0, -1); n = 400; h = 2.5
+	    per = 200 + 2 * h
+	    for (i = 0; i < n; i++) { s = per * i / n
+		if (s < 100) { x = s; y = 0 }
+		else if (s < 100 + h) { x = 100; y = s - 100 }
+		else if (s < 200 + h) { x = 200 + h - s; y = h }
+		else { x = 0; y = per - s }
+		m = 0.05 * sqrt(-2 * log(1 - rand())); v = 2 * pi * rand()
+		printf "%.6f %.6f\n", x + m * cos(v), y + m * sin(v) } }' \
+	    >"$T/slab.pts"
+	"$B/splinefit" -K -e 0.2 "$T/slab.pts" >"$T/slab.cubic" 2>&1 &&
+	    awk 'NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
+		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
+	    { j++; if (j in want) for (q = 0; q < 4; q++) {
+		cx = (q == 1 || q == 2) * 100; cy = (q >= 2) * 2.5
+		if (sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2) <= 0.4) hit[q] = 1 } }
+	    END { exit !(nc == 4 && (0 in hit) && (1 in hit) && (2 in hit) &&
+		(3 in hit)) }' "$T/slab.cubic" && ok ||
+	    no "slab $seed: want its 4 corners: $(head -1 "$T/slab.cubic")"
+	"$B/sample" -n 16 "$T/slab.cubic" | awk '/^[-0-9.]/ { n++; x[n] = $1; y[n] = $2 }
+	    function o(a, b, c,   u) {
+		u = (x[b] - x[a]) * (y[c] - y[a])
+		return u - (y[b] - y[a]) * (x[c] - x[a]) }
+	    END { for (i = 1; i <= n; i++) for (j = i + 2; j <= n; j++) {
+		if (i == 1 && j == n) continue
+		a = i; b = i % n + 1; c = j; d = j % n + 1
+		if (o(a, b, c) * o(a, b, d) < 0 && o(c, d, a) * o(c, d, b) < 0)
+		    bad++ }
+		exit bad > 0 }' && ok ||
+	    no "slab $seed: the curve crosses itself"
+done
+
 # ---- a corner beside a sparse run: the span over it has too few points
 # to split at its middle.  A rectangle 100 x 60, a point a mm along its
 # bottom, top and left sides, one every 30 mm along its right side, which
