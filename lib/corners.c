@@ -77,22 +77,26 @@ pt(const struct outline *o, long j)
 	return j >= 0 && j < n ? o->p + j * o->dim : NULL;
 }
 
-/* The least-squares line through points a..a+k-1 of o: its unit
- * direction, in the order of the points, into d (may be NULL); the sum
- * of the squared distances of the points from it into *ss and their
- * extent along it into *ext (either may be NULL).  0 where the points
- * are missing or give no direction. */
+/* A least-squares line: through c, unit direction d; the sum of the
+ * squared distances of its points from it, and their extent along it. */
+struct line {
+	double c[LOFT_MAXDIM], d[LOFT_MAXDIM], ss, ext;
+};
+
+/* The least-squares line through points a..a+k-1 of o into *l, its
+ * direction in the order of the points.  0 where the points are
+ * missing or give no direction. */
 static int
-fit_line(const struct outline *o, long a, long k, double *d, double *ss,
-    double *ext)
+fit_line(const struct outline *o, long a, long k, struct line *l)
 {
-	double c[LOFT_MAXDIM] = { 0 }, m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } };
-	double v[LOFT_MAXDIM], u[LOFT_MAXDIM], lo = HUGE_VAL, hi = -HUGE_VAL;
-	double s = 0;
+	double m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } }, v[LOFT_MAXDIM];
+	double *c = l->c, *u = l->d, lo = HUGE_VAL, hi = -HUGE_VAL;
 	int dim = o->dim;
 
 	if (k < 2 || pt(o, a) == NULL || pt(o, a + k - 1) == NULL)
 		return 0;
+	for (int i = 0; i < dim; i++)
+		c[i] = 0;
 	for (long t = 0; t < k; t++)
 		vaxpy(c, 1.0 / k, pt(o, a + t), dim);
 	for (long t = 0; t < k; t++) {
@@ -118,6 +122,7 @@ fit_line(const struct outline *o, long a, long k, double *d, double *ss,
 	vsub(v, pt(o, a + k - 1), pt(o, a), dim);
 	if (vdot(u, v, dim) < 0)
 		vscale(u, -1, u, dim);
+	l->ss = 0;
 	for (long t = 0; t < k; t++) {
 		double x;
 
@@ -126,14 +131,9 @@ fit_line(const struct outline *o, long a, long k, double *d, double *ss,
 		lo = fmin(lo, x);
 		hi = fmax(hi, x);
 		vaxpy(v, -x, u, dim);
-		s += vdot(v, v, dim);
+		l->ss += vdot(v, v, dim);
 	}
-	if (d != NULL)
-		vcopy(d, u, dim);
-	if (ss != NULL)
-		*ss = s;
-	if (ext != NULL)
-		*ext = hi - lo;
+	l->ext = hi - lo;
 	return 1;
 }
 
@@ -164,17 +164,18 @@ static double
 turn_at(const struct outline *o, long i, double len, int gate)
 {
 	long a = reach(o, i, -1, len), b = reach(o, i, 1, len);
-	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], sa, sb, ea, eb, t, se;
+	struct line u, v;
+	double t, se;
 
-	if (a == 0 || b == 0 || !fit_line(o, i - a, a + 1, u, &sa, &ea) ||
-	    !fit_line(o, i, b + 1, v, &sb, &eb))
+	if (a == 0 || b == 0 || !fit_line(o, i - a, a + 1, &u) ||
+	    !fit_line(o, i, b + 1, &v))
 		return 0;
-	t = angle(u, v, o->dim);
+	t = angle(u.d, v.d, o->dim);
 	/* the lines' tilts from the scatter of their points; a turn
 	 * within the noise's reach counts as none */
-	se = sqrt((a > 1 && ea > 0 ? sa / (a - 1) * 12 / (a + 1) / (ea * ea) :
-	    HUGE_VAL) + (b > 1 && eb > 0 ? sb / (b - 1) * 12 / (b + 1) /
-	    (eb * eb) : HUGE_VAL));
+	se = sqrt((a > 1 && u.ext > 0 ? u.ss / (a - 1) * 12 / (a + 1) /
+	    (u.ext * u.ext) : HUGE_VAL) + (b > 1 && v.ext > 0 ?
+	    v.ss / (b - 1) * 12 / (b + 1) / (v.ext * v.ext) : HUGE_VAL));
 	return !gate || t >= CORNER_SIGMAS * se ? t : 0;
 }
 
@@ -245,18 +246,18 @@ chord_ss(const struct outline *o, long a, long b)
 static double
 corner_ss(const struct outline *o, long lo, long a, long b, long hi)
 {
-	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], w[LOFT_MAXDIM], sa, sb;
+	struct line u, w;
+	double v[LOFT_MAXDIM];
 
-	if (!fit_line(o, lo, a - lo + 1, u, &sa, NULL) ||
-	    !fit_line(o, b, hi - b + 1, w, &sb, NULL))
+	if (!fit_line(o, lo, a - lo + 1, &u) || !fit_line(o, b, hi - b + 1, &w))
 		return HUGE_VAL;
 	if (a == b)
-		return sa + sb;
+		return u.ss + w.ss;
 	vsub(v, pt(o, b), pt(o, a), o->dim);
-	if (!(vunit(v, o->dim) > 0) || angle(u, v, o->dim) < CORNER_TURN ||
-	    angle(v, w, o->dim) < CORNER_TURN)
+	if (!(vunit(v, o->dim) > 0) || angle(u.d, v, o->dim) < CORNER_TURN ||
+	    angle(v, w.d, o->dim) < CORNER_TURN)
 		return HUGE_VAL;
-	return sa + sb + chord_ss(o, a, b);
+	return u.ss + w.ss + chord_ss(o, a, b);
 }
 
 /* The best single corner a in from..to (every step-th) and the best
@@ -365,6 +366,41 @@ candidates(const struct outline *o, double len, double *turn, long *half,
 	return nc;
 }
 
+/* The index of point j of o, counted round the end. */
+static size_t
+wrap(const struct outline *o, long j)
+{
+	return (size_t)((j % (long)o->n + (long)o->n) % (long)o->n);
+}
+
+/* Settle each candidate, sharpest first, the corners into corner
+ * (their count into *nc); the points within the scale of each corner
+ * settled are taken: turns there are its echoes. */
+static void
+settle_all(const struct outline *o, const size_t *cand, size_t ncand,
+    const long *half, double sigma, unsigned char *taken, size_t *corner,
+    size_t *nc)
+{
+	for (size_t x = 0; x < ncand; x++) {
+		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2, c[2];
+		int k;
+
+		if (taken[i])
+			continue;
+		k = settle(o, i, m, m, sigma, c);
+		for (int q = 0; q < k; q++) {
+			size_t j = wrap(o, c[q]);
+
+			if (!taken[j] && !(q == 1 && j == wrap(o, c[0])))
+				corner[(*nc)++] = j;
+		}
+		for (int q = 0; q < k; q++)
+			for (long d = -m; d <= m; d++)
+				if (pt(o, c[q] + d) != NULL)
+					taken[wrap(o, c[q] + d)] = 1;
+	}
+}
+
 size_t
 loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
     size_t *corner)
@@ -376,40 +412,17 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 	unsigned char *taken = calloc(n, 1);
 
 	if (turn == NULL || half == NULL || cand == NULL || taken == NULL ||
-	    n < 5) {
-		free(turn);
-		free(half);
-		free(cand);
-		free(taken);
-		return 0;
-	}
+	    n < 5)
+		goto done;
 	for (size_t i = 1; i <= n; i++)
 		if (i < n || closed)
 			len += vdist(p + (i % n) * dim, p + (i - 1) * dim, dim);
 	len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
 	sigma = fmax(noise(&o), CORNER_NOISE_FLOOR * tol);
 	ncand = candidates(&o, len, turn, half, cand);
-	for (size_t x = 0; x < ncand; x++) {
-		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2;
-		long c[2], w = m;
-		int k;
-
-		if (taken[i])
-			continue;       /* an echo of a sharper one's */
-		k = settle(&o, i, w, m, sigma, c);
-		for (int q = 0; q < k; q++) {
-			size_t j = (size_t)((c[q] % (long)n + (long)n) % (long)n);
-
-			if (!taken[j] && (q == 0 || j != corner[nc - 1]))
-				corner[nc++] = j;
-		}
-		for (int q = 0; q < k; q++)     /* their echoes */
-			for (long d = -m; d <= m; d++)
-				if (pt(&o, c[q] + d) != NULL)
-					taken[((c[q] + d) % (long)n + (long)n) %
-					    (long)n] = 1;
-	}
+	settle_all(&o, cand, ncand, half, sigma, taken, corner, &nc);
 	qsort(corner, nc, sizeof *corner, by_index);
+done:
 	free(turn);
 	free(half);
 	free(cand);
