@@ -25,6 +25,7 @@ struct opts {
 	                                 * and method= are not read */
 	double *seg, *other;            /* scratch, grown as records need */
 	double *knots;                  /* the knots kept after merging */
+	double *cornerat;               /* -K: the corners' knots */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
 	size_t *straight, nstraight;    /* the straight spans, 0-based */
@@ -97,6 +98,9 @@ grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 		o->into = v;
 	if (v && (v = realloc(o->corner, rows * sizeof *o->corner)) != NULL)
 		o->corner = v;
+	if (v && (v = realloc(o->cornerat, LOFT_MAXDIM * rows *
+	    sizeof *o->cornerat)) != NULL)
+		o->cornerat = v;
 	if (v && (v = realloc(o->straight, rows * sizeof *o->straight)) != NULL)
 		o->straight = v;
 	if (v == NULL)
@@ -352,15 +356,16 @@ put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
  */
 static size_t
 approx_corners(struct opts *o, const struct loft_record *rec, size_t nseg,
-    size_t nc)
+    size_t nc, int found)
 {
 	int dim = rec->ncols;
 	size_t c = 0;
 
 	for (size_t j = 0; j < nseg && nc > 0; j++)
 		for (size_t k = 0; k < nc; k++)
-			if (memcmp(o->seg + j * 4 * dim, rec->num +
-			    o->corner[k] * dim, dim * sizeof *rec->num) == 0) {
+			if (memcmp(o->seg + j * 4 * dim, found ? o->cornerat +
+			    k * dim : rec->num + o->corner[k] * dim,
+			    dim * sizeof *rec->num) == 0) {
 				o->keep[c++] = j;
 				break;
 			}
@@ -376,7 +381,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	struct opts *o = run->ctx;
 	struct loft_approx_opts ao;
 	struct loft_approx_info info;
-	int rc, dim = rec->ncols;
+	int rc, dim = rec->ncols, found = nc == 0 && o->findcorner;
 
 	loft_approx_defaults(&ao);
 	ao.tol = o->approx;
@@ -385,9 +390,11 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	ao.have_end = fit->have_end;
 	memcpy(ao.start, fit->start, sizeof ao.start);
 	memcpy(ao.end, fit->end, sizeof ao.end);
-	if (nc == 0 && o->findcorner)   /* none given: its own */
+	if (found) {    /* none given: its own, at their places */
 		nc = loft_find_corners(rec->num, rec->nrows, dim, fit->closed,
-		    o->approx, o->corner);
+		    o->approx, o->corner, o->cornerat);
+		ao.corner_at = o->cornerat;
+	}
 	ao.corner = o->corner;
 	ao.ncorner = nc;
 	if (o->rounds > 0)
@@ -404,7 +411,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 		measures(run->msg, o->seg, info.nseg, dim, fit->closed);
 		fputc('\n', run->msg);
 	}
-	nc = approx_corners(o, rec, info.nseg, nc);
+	nc = approx_corners(o, rec, info.nseg, nc, found);
 	return put_curve(run, rec, info.nseg, fit->closed, o->corner, nc, err);
 }
 
@@ -591,6 +598,7 @@ main(int argc, char *argv[])
 	free(o.keep);
 	free(o.into);
 	free(o.corner);
+	free(o.cornerat);
 	free(o.straight);
 	return status;
 }

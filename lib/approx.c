@@ -114,6 +114,8 @@ struct work {
 	int e;                  /* the points are scaled by 2^-e */
 	const double *q;        /* the points from the start */
 	double *qbuf;           /* their copy, for a closed outline */
+	const double *cq;       /* the same with the corners' knots */
+	double *cqbuf;          /* where those are not the points */
 	double *sm, *s;         /* moving average; its length to each point */
 	size_t *fj;             /* the foot of each point: span, u */
 	double *fu, *dist;
@@ -140,6 +142,7 @@ static void
 work_free(struct work *w)
 {
 	free(w->qbuf);
+	free(w->cqbuf);
 	free(w->sm);
 	free(w->s);
 	free(w->fj);
@@ -365,7 +368,7 @@ add_knot(struct work *w, size_t i, int corner)
 
 	w->kidx[j] = i;
 	w->fixed[j] = (unsigned char)corner;
-	vcopy(w->k + j * w->dim, (corner ? w->q : w->sm) + i * w->dim, w->dim);
+	vcopy(w->k + j * w->dim, (corner ? w->cq : w->sm) + i * w->dim, w->dim);
 	if (corner)
 		w->corner[w->nc++] = j;
 }
@@ -2251,6 +2254,42 @@ approx_tries(struct work *w, const struct loft_approx_opts *o,
 	return rc;
 }
 
+/* w->cq: the points, scaled, with the corners' knots of o->corner_at
+ * at the corners (corner: their points from the start).  Returns 0, or
+ * an error. */
+static int
+corner_places(struct work *w, const struct loft_approx_opts *o,
+    const size_t *corner, struct loft_error *err)
+{
+	size_t n = w->n;
+	int dim = w->dim;
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], diag;
+
+	if ((w->cqbuf = malloc(n * dim * sizeof *w->cqbuf)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	memcpy(w->cqbuf, w->qbuf, n * dim * sizeof *w->cqbuf);
+	w->cq = w->cqbuf;
+	vcopy(lo, w->q, dim);
+	vcopy(hi, w->q, dim);
+	for (size_t i = 1; i < n; i++)
+		for (int k = 0; k < dim; k++) {
+			lo[k] = fmin(lo[k], w->q[i * dim + k]);
+			hi[k] = fmax(hi[k], w->q[i * dim + k]);
+		}
+	diag = vdist(lo, hi, dim);
+	for (size_t c = 0; c < o->ncorner; c++) {
+		double *x = w->cqbuf + corner[c] * dim;
+
+		for (int k = 0; k < dim; k++)
+			x[k] = ldexp(o->corner_at[c * dim + k], -w->e);
+		if (!(vdist(x, w->q + corner[c] * dim, dim) <= diag))
+			return loft_fail(err, LOFT_EINPUT, -1, "the knot of "
+			    "corner %zu is not finite, or farther from its "
+			    "point than the points' box is across", c + 1);
+	}
+	return 0;
+}
+
 int
 loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_approx_info *info,
@@ -2296,9 +2335,15 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 		for (int k = 0; k < dim; k++)
 			w.qbuf[i * dim + k] = ldexp(p[((i + w.shift) % n) * dim +
 			    k], -e);
-	w.q = w.qbuf;
+	w.q = w.cq = w.qbuf;
 	for (size_t c = 0; c < o->ncorner; c++)
 		corner[c] = (o->corner[c] + n - w.shift) % n;
+	if (o->corner_at != NULL && o->ncorner > 0 &&
+	    (rc = corner_places(&w, o, corner, err)) != 0) {
+		free(corner);
+		work_free(&w);
+		return rc;
+	}
 	rc = approx_tries(&w, o, corner, seg, info, err);
 	info->dist = ldexp(info->dist, e);
 	if (rc == 0) {

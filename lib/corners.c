@@ -15,7 +15,9 @@
  * the points themselves, sharpest first: the split of the points near
  * it into two lines that fits them best, or three lines (two corners)
  * where that fits them better by more than the noise explains.  Other
- * turns within the scale of a corner so settled are its echoes.
+ * turns within the scale of a corner so settled are its echoes.  A
+ * single corner's knot goes where the lines either side meet, which on
+ * sparse points is seldom a point.
  */
 #include <stdlib.h>
 
@@ -54,6 +56,16 @@
  * denser): the search tries each pair of them. */
 #define CORNER_PLACES 12
 
+/* A single corner's knot goes where the lines through the points
+ * either side of it meet, unless they are this near parallel (the
+ * square of the sine of their angle), or meet farther from its point
+ * than its nearer neighbour is: the true corner lies between the point
+ * and its neighbours, and a sparse outline's points miss it by up to
+ * half their spacing, which a corner at the point would cut.  (Two
+ * corners close together stay at their points: the line between them
+ * leans on too few.) */
+#define CORNER_MEET 0.01
+
 /* The noise is taken as no less than this part of the tolerance, so
  * that points without noise still weigh a second corner. */
 #define CORNER_NOISE_FLOOR 1e-3
@@ -90,13 +102,12 @@ static int
 fit_line(const struct outline *o, long a, long k, struct line *l)
 {
 	double m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } }, v[LOFT_MAXDIM];
-	double *c = l->c, *u = l->d, lo = HUGE_VAL, hi = -HUGE_VAL;
+	double c[LOFT_MAXDIM] = { 0 }, u[LOFT_MAXDIM], lo = HUGE_VAL;
+	double hi = -HUGE_VAL;
 	int dim = o->dim;
 
 	if (k < 2 || pt(o, a) == NULL || pt(o, a + k - 1) == NULL)
 		return 0;
-	for (int i = 0; i < dim; i++)
-		c[i] = 0;
 	for (long t = 0; t < k; t++)
 		vaxpy(c, 1.0 / k, pt(o, a + t), dim);
 	for (long t = 0; t < k; t++) {
@@ -133,6 +144,8 @@ fit_line(const struct outline *o, long a, long k, struct line *l)
 		vaxpy(v, -x, u, dim);
 		l->ss += vdot(v, v, dim);
 	}
+	vcopy(l->c, c, dim);
+	vcopy(l->d, u, dim);
 	l->ext = hi - lo;
 	return 1;
 }
@@ -240,18 +253,18 @@ chord_ss(const struct outline *o, long a, long b)
 }
 
 /* The squared distances of points lo..hi from two lines, lo..a and
- * b..hi, with two corners a < b (the chord a-b between) or one (a ==
- * b); HUGE_VAL where the points are missing, or where two corners do
- * not both turn by CORNER_TURN. */
+ * b..hi: one corner (two 0, b == a) or two, a and b (the chord a-b
+ * between); HUGE_VAL where the points are missing, or where two
+ * corners do not both turn by CORNER_TURN. */
 static double
-corner_ss(const struct outline *o, long lo, long a, long b, long hi)
+corner_ss(const struct outline *o, long lo, long a, long b, long hi, int two)
 {
 	struct line u, w;
 	double v[LOFT_MAXDIM];
 
 	if (!fit_line(o, lo, a - lo + 1, &u) || !fit_line(o, b, hi - b + 1, &w))
 		return HUGE_VAL;
-	if (a == b)
+	if (!two)
 		return u.ss + w.ss;
 	vsub(v, pt(o, b), pt(o, a), o->dim);
 	if (!(vunit(v, o->dim) > 0) || angle(u.d, v, o->dim) < CORNER_TURN ||
@@ -260,70 +273,162 @@ corner_ss(const struct outline *o, long lo, long a, long b, long hi)
 	return u.ss + w.ss + chord_ss(o, a, b);
 }
 
-/* The best single corner a in from..to (every step-th) and the best
- * pair a < b, a in from..to, b up to last, for the points lo..hi: each
- * lowers *one or *two (and sets *at, or *pa and *pb) where it fits
- * them better. */
+/* A split of the points: one corner (a == b) or two (a and b), and
+ * how well it fits them. */
+struct split {
+	double ss;
+	long a, b;
+};
+
+/* Try the splits with a in from..to (every step-th): one corner at a
+ * into *one, and two with b up to last into *two, each where it fits
+ * the points lo..hi better. */
 static void
 search(const struct outline *o, long lo, long hi, long from, long to,
-    long last, long step, double *one, long *at, double *two, long *pa,
-    long *pb)
+    long last, long step, struct split *one, struct split *two)
 {
 	double s;
 
 	for (long a = from; a <= to; a += step) {
-		if ((s = corner_ss(o, lo, a, a, hi)) < *one) {
-			*one = s;
-			*at = a;
-		}
+		if ((s = corner_ss(o, lo, a, a, hi, 0)) < one->ss)
+			*one = (struct split){ s, a, a };
 		for (long b = a + step; b <= last; b += step)
-			if ((s = corner_ss(o, lo, a, b, hi)) < *two) {
-				*two = s;
-				*pa = a;
-				*pb = b;
-			}
+			if ((s = corner_ss(o, lo, a, b, hi, 1)) < two->ss)
+				*two = (struct split){ s, a, b };
 	}
 }
 
 /* The corner or two within w points of point i: the split of the
  * points within w + m of it into two lines, or three, that fits them
- * best (each line m points at least); their indices into c; returns
- * how many.  Where w exceeds CORNER_PLACES, every so many points are
- * tried, then every point near the best. */
+ * best (each line m points at least).  Returns 1 (one corner, *a) or 2
+ * (corners *a and *b).  Where w exceeds
+ * CORNER_PLACES, every so many points are tried, then every point near
+ * the best. */
 static int
 settle(const struct outline *o, long i, long w, long m, double sigma,
-    long *c)
+    long *a, long *b)
 {
-	double one = HUGE_VAL, two = HUGE_VAL;
-	long at = i, a2 = i, b2 = i, lo = i - w - m, hi = i + w + m;
-	long step = w / CORNER_PLACES + 1;
+	struct split one = { HUGE_VAL, i, i }, two = { HUGE_VAL, i, i };
+	long lo = i - w - m, hi = i + w + m, step = w / CORNER_PLACES + 1;
 
-	search(o, lo, hi, i - w, i + w, i + w, step, &one, &at, &two, &a2,
-	    &b2);
+	search(o, lo, hi, i - w, i + w, i + w, step, &one, &two);
 	if (step > 1) {
-		long a = at, pa = a2, pb = b2;
+		struct split c1 = one, c2 = two;
 
-		search(o, lo, hi, a - step + 1, a + step - 1, a - step, 1,
-		    &one, &at, &two, &a2, &b2);     /* singles only */
-		if (two < HUGE_VAL)
-			search(o, lo, hi, pa - step + 1, pa + step - 1,
-			    pb + step - 1, 1, &one, &at, &two, &a2, &b2);
+		search(o, lo, hi, c1.a - step + 1, c1.a + step - 1,
+		    c1.a - step, 1, &one, &two);    /* singles only */
+		if (c2.ss < HUGE_VAL)
+			search(o, lo, hi, c2.a - step + 1, c2.a + step - 1,
+			    c2.b + step - 1, 1, &one, &two);
 	}
-	if (two + CORNER_SPLIT * sigma * sigma < one) {
-		c[0] = a2;
-		c[1] = b2;
+	if (two.ss + CORNER_SPLIT * sigma * sigma < one.ss) {
+		*a = two.a;
+		*b = two.b;
 		return 2;
 	}
-	c[0] = at;
+	*a = one.a;
+	*b = one.b;
 	return 1;
 }
 
+/* Where lines u and v come nearest each other (the middle of their
+ * nearest points) into x; 0 where they are too near parallel. */
 static int
-by_index(const void *a, const void *b)
+meet(const struct line *u, const struct line *v, int dim, double *x)
 {
-	size_t x = *(const size_t *)a, y = *(const size_t *)b;
+	double r[LOFT_MAXDIM], b = vdot(u->d, v->d, dim), den = 1 - b * b;
+	double e, f;
+
+	if (!(den > CORNER_MEET))
+		return 0;
+	vsub(r, u->c, v->c, dim);
+	e = vdot(u->d, r, dim);
+	f = vdot(v->d, r, dim);
+	/* u->c + s u->d and v->c + t v->d, with s and t that make the
+	 * gap between them square to both lines */
+	for (int i = 0; i < dim; i++)
+		x[i] = (u->c[i] + (b * f - e) / den * u->d[i] +
+		    v->c[i] + (f - b * e) / den * v->d[i]) / 2;
+	return 1;
+}
+
+/* The place of the knot of a single corner at point j into x: where
+ * the lines through the m points either side meet (not through j,
+ * which may lie on either side of the true corner), if that is nearer
+ * the point than its nearer neighbour is; else the point itself. */
+static void
+place(const struct outline *o, long j, long m, double *x)
+{
+	struct line u, v;
+	const double *p = pt(o, j);
+	double room = HUGE_VAL;
+
+	for (long d = -1; d <= 1; d += 2)
+		if (pt(o, j + d) != NULL)
+			room = fmin(room, vdist(p, pt(o, j + d), o->dim));
+	if (!fit_line(o, j - m, m, &u) || !fit_line(o, j + 1, m, &v) ||
+	    !meet(&u, &v, o->dim, x) || !(vdist(x, p, o->dim) <= room))
+		vcopy(x, p, o->dim);
+}
+
+/* A corner found: its point and its knot's place. */
+struct found {
+	size_t i;
+	double at[LOFT_MAXDIM];
+};
+
+static int
+by_point(const void *a, const void *b)
+{
+	size_t x = ((const struct found *)a)->i;
+	size_t y = ((const struct found *)b)->i;
 
 	return (x > y) - (x < y);
+}
+
+/* The index of point j of o, counted round the end. */
+static size_t
+wrap(const struct outline *o, long j)
+{
+	return (size_t)((j % (long)o->n + (long)o->n) % (long)o->n);
+}
+
+/* Settle each candidate, sharpest first, the corners and their
+ * knots' places into f (their count into *nc); the points within the
+ * scale of each corner settled are taken: turns there are its echoes. */
+static void
+settle_all(const struct outline *o, const size_t *cand, size_t ncand,
+    const long *half, double sigma, unsigned char *taken, struct found *f,
+    size_t *nc)
+{
+	for (size_t x = 0; x < ncand; x++) {
+		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2, c[2];
+		double at[2][LOFT_MAXDIM];
+		int k;
+
+		if (taken[i])
+			continue;
+		k = settle(o, i, m, m, sigma, &c[0], &c[1]);
+		if (k == 1) {
+			place(o, c[0], m, at[0]);
+		} else {
+			vcopy(at[0], pt(o, c[0]), o->dim);
+			vcopy(at[1], pt(o, c[1]), o->dim);
+		}
+		for (int q = 0; q < k; q++) {
+			size_t j = wrap(o, c[q]);
+
+			if (taken[j] || (q == 1 && j == wrap(o, c[0])))
+				continue;
+			f[*nc].i = j;
+			vcopy(f[*nc].at, at[q], o->dim);
+			++*nc;
+		}
+		for (int q = 0; q < k; q++)
+			for (long d = -m; d <= m; d++)
+				if (pt(o, c[q] + d) != NULL)
+					taken[wrap(o, c[q] + d)] = 1;
+	}
 }
 
 /* The turns of o at the scale len into turn (0 where none is a
@@ -366,66 +471,68 @@ candidates(const struct outline *o, double len, double *turn, long *half,
 	return nc;
 }
 
-/* The index of point j of o, counted round the end. */
-static size_t
-wrap(const struct outline *o, long j)
+/* The corners of the points q, scaled into the unit box, at the scale
+ * tol: into f, their count into *nc.  0, or -1 out of memory. */
+static int
+find(const struct outline *o, double tol, struct found *f, size_t *nc)
 {
-	return (size_t)((j % (long)o->n + (long)o->n) % (long)o->n);
-}
-
-/* Settle each candidate, sharpest first, the corners into corner
- * (their count into *nc); the points within the scale of each corner
- * settled are taken: turns there are its echoes. */
-static void
-settle_all(const struct outline *o, const size_t *cand, size_t ncand,
-    const long *half, double sigma, unsigned char *taken, size_t *corner,
-    size_t *nc)
-{
-	for (size_t x = 0; x < ncand; x++) {
-		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2, c[2];
-		int k;
-
-		if (taken[i])
-			continue;
-		k = settle(o, i, m, m, sigma, c);
-		for (int q = 0; q < k; q++) {
-			size_t j = wrap(o, c[q]);
-
-			if (!taken[j] && !(q == 1 && j == wrap(o, c[0])))
-				corner[(*nc)++] = j;
-		}
-		for (int q = 0; q < k; q++)
-			for (long d = -m; d <= m; d++)
-				if (pt(o, c[q] + d) != NULL)
-					taken[wrap(o, c[q] + d)] = 1;
-	}
-}
-
-size_t
-loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
-    size_t *corner)
-{
-	struct outline o = { p, n, dim, closed };
+	size_t n = o->n, ncand;
 	double *turn = malloc(n * sizeof *turn), sigma, len = 0;
 	long *half = malloc(n * sizeof *half);
-	size_t *cand = malloc(n * sizeof *cand), nc = 0, ncand;
+	size_t *cand = malloc(n * sizeof *cand);
 	unsigned char *taken = calloc(n, 1);
+	int rc = -1;
 
-	if (turn == NULL || half == NULL || cand == NULL || taken == NULL ||
-	    n < 5)
-		goto done;
-	for (size_t i = 1; i <= n; i++)
-		if (i < n || closed)
-			len += vdist(p + (i % n) * dim, p + (i - 1) * dim, dim);
-	len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
-	sigma = fmax(noise(&o), CORNER_NOISE_FLOOR * tol);
-	ncand = candidates(&o, len, turn, half, cand);
-	settle_all(&o, cand, ncand, half, sigma, taken, corner, &nc);
-	qsort(corner, nc, sizeof *corner, by_index);
-done:
+	if (turn != NULL && half != NULL && cand != NULL && taken != NULL) {
+		for (long i = 1; i <= (long)n; i++)
+			if (i < (long)n || o->closed)
+				len += vdist(pt(o, i), pt(o, i - 1), o->dim);
+		len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
+		sigma = fmax(noise(o), CORNER_NOISE_FLOOR * tol);
+		ncand = candidates(o, len, turn, half, cand);
+		settle_all(o, cand, ncand, half, sigma, taken, f, nc);
+		rc = 0;
+	}
 	free(turn);
 	free(half);
 	free(cand);
 	free(taken);
+	return rc;
+}
+
+size_t
+loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
+    size_t *corner, double *at)
+{
+	double *q = malloc(n * dim * sizeof *q), big = 0;
+	struct found *f = malloc(n * sizeof *f);
+	struct outline o = { q, n, dim, closed };
+	size_t nc = 0;
+	int e;
+
+	for (size_t i = 0; i < n * dim; i++)
+		big = fmax(big, fabs(p[i]));
+	if (q == NULL || f == NULL || n < 5 || !(big > 0) || !isfinite(big) ||
+	    !(tol > 0) || !isfinite(tol)) {
+		free(q);
+		free(f);
+		return 0;
+	}
+	/* scaled by a power of two (exactly) into the unit box, so that no
+	 * square of a distance overflows or underflows: the corners do not
+	 * depend on the units */
+	e = ilogb(big);
+	for (size_t i = 0; i < n * dim; i++)
+		q[i] = ldexp(p[i], -e);
+	if (find(&o, ldexp(tol, -e), f, &nc) == 0) {
+		qsort(f, nc, sizeof *f, by_point);
+		for (size_t c = 0; c < nc; c++) {
+			corner[c] = f[c].i;
+			for (int k = 0; at != NULL && k < dim; k++)
+				at[c * dim + k] = ldexp(f[c].at[k], e);
+		}
+	}
+	free(q);
+	free(f);
 	return nc;
 }

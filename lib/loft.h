@@ -399,11 +399,14 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * or more, the sharpest within it; each such turn is then placed at the
  * split of the points near it into two lines (or three: two corners,
  * the end of a serif) that fits them best.  Their indices, increasing,
- * into corner (room for n); returns their count (0 also when out of
- * memory).  A circle or a gentle bend gives none.
+ * into corner (room for n), and where at is not NULL (room for n * dim)
+ * the places for their knots: for a single corner where the lines
+ * either side meet, if nearer its point than its neighbours, else the
+ * point.  Returns their count (0 also when out of memory).  A circle
+ * or a gentle bend gives none.
  */
 size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
-    double tol, size_t *corner);
+    double tol, size_t *corner, double *at);
 
 /* Fewest points a closed and an open approximation take. */
 #define LOFT_APPROX_MIN_CLOSED 4
@@ -421,6 +424,8 @@ struct loft_approx_opts {
 	int have_start, have_end;       /* open curves: given end tangents */
 	double start[LOFT_MAXDIM], end[LOFT_MAXDIM];
 	const size_t *corner;   /* corner points (0-based, increasing), or NULL */
+	const double *corner_at;        /* their knots (ncorner rows), or
+	                                 * NULL: the points themselves */
 	size_t ncorner;
 	int maxround;           /* rounds of splitting at most, >= 1 */
 };
@@ -447,7 +452,9 @@ struct loft_approx_info {
  * curve passes through the middle of the noise.  Corners
  * o->corner[0..ncorner), indices of points, each greater than the one
  * before, are knots at those very points where the tangent breaks (as
- * loft_fit's corners); o->start, o->end (when have_start, have_end)
+ * loft_fit's corners), or, where o->corner_at is not NULL, at its rows
+ * (each no farther from its point than the diagonal of the points'
+ * box, else LOFT_EINPUT); o->start, o->end (when have_start, have_end)
  * the end tangents of an open curve.  The result does not depend on the
  * points' units, nor on which point a closed outline starts at (the
  * knots are the same; the segments are rotated to start near p[0]).

@@ -374,30 +374,42 @@ done
 run "$B/splinefit -K $T/sq.pts"
 status 2
 
+# rect_pts W H SPACING FIRST SEED: points round the rectangle 0 0 to W H
+# (from 0 0 along the x axis), SPACING apart along it, the first FIRST
+# from 0 0, with Gaussian noise of 0.05 (awk's generator from SEED)
+rect_pts() {
+	awk -v W="$1" -v H="$2" -v sp="$3" -v first="$4" -v r="$5" 'BEGIN {
+	    srand(r); pi = atan2(0, -1); per = 2 * (W + H)
+	    for (s = first; s < per - 1e-9; s += sp) {
+		if (s < W) { x = s; y = 0 }
+		else if (s < W + H) { x = W; y = s - W }
+		else if (s < 2 * W + H) { x = 2 * W + H - s; y = H }
+		else { x = 0; y = per - s }
+		m = 0.05 * sqrt(-2 * log(1 - rand())); v = 2 * pi * rand()
+		printf "%.6f %.6f\n", x + m * cos(v), y + m * sin(v) } }'
+}
+# rect_corners CUBIC W H R: the curve's corners= name four joints and no
+# more, one within R of each corner of the rectangle 0 0 to W H
+rect_corners() {
+	awk -v W="$2" -v H="$3" -v R="$4" 'NR == 1 {
+		n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
+		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
+	    { j++; if (j in want) for (q = 0; q < 4; q++) {
+		cx = (q == 1 || q == 2) * W; cy = (q >= 2) * H
+		if (sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2) <= R) hit[q] = 1 } }
+	    END { exit !(nc == 4 && (0 in hit) && (1 in hit) && (2 in hit) &&
+		(3 in hit)) }' "$1"
+}
+
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
 # (as a serif's end is).  Each end turns twice: the four corners are kept,
 # each within 2 tol of the slab's, and there is no other; the curve does
 # not cross itself (its polyline, sample -n 16, against every other edge)
 for seed in 1 2 3; do
-	awk -v r="$seed" 'BEGIN { srand(r); pi = atan2(0, -1); n = 400; h = 2.5
-	    per = 200 + 2 * h
-	    for (i = 0; i < n; i++) { s = per * i / n
-		if (s < 100) { x = s; y = 0 }
-		else if (s < 100 + h) { x = 100; y = s - 100 }
-		else if (s < 200 + h) { x = 200 + h - s; y = h }
-		else { x = 0; y = per - s }
-		m = 0.05 * sqrt(-2 * log(1 - rand())); v = 2 * pi * rand()
-		printf "%.6f %.6f\n", x + m * cos(v), y + m * sin(v) } }' \
-	    >"$T/slab.pts"
+	rect_pts 100 2.5 0.5125 0 "$seed" >"$T/slab.pts"
 	"$B/splinefit" -K -e 0.2 "$T/slab.pts" >"$T/slab.cubic" 2>&1 &&
-	    awk 'NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
-		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
-	    { j++; if (j in want) for (q = 0; q < 4; q++) {
-		cx = (q == 1 || q == 2) * 100; cy = (q >= 2) * 2.5
-		if (sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2) <= 0.4) hit[q] = 1 } }
-	    END { exit !(nc == 4 && (0 in hit) && (1 in hit) && (2 in hit) &&
-		(3 in hit)) }' "$T/slab.cubic" && ok ||
+	    rect_corners "$T/slab.cubic" 100 2.5 0.4 && ok ||
 	    no "slab $seed: want its 4 corners: $(head -1 "$T/slab.cubic")"
 	"$B/sample" -n 16 "$T/slab.cubic" | awk '/^[-0-9.]/ { n++; x[n] = $1; y[n] = $2 }
 	    function o(a, b, c,   u) {
@@ -410,6 +422,28 @@ for seed in 1 2 3; do
 		    bad++ }
 		exit bad > 0 }' && ok ||
 	    no "slab $seed: the curve crosses itself"
+done
+
+# ---- a corner off the points (issue 23): a square of side 100 with a
+# point every 2.5 along it, the first 0.6 past a corner, so that the
+# point nearest each corner is 0.6 past it along a side; noise 0.05.
+# The knot of each corner found goes where the lines either side meet:
+# within 0.3 of the square's corner (a knot at a point would be 0.6 off
+# at least, and cut the corner)
+for seed in 1 2 3; do
+	rect_pts 100 100 2.5 0.6 "$seed" >"$T/between.pts"
+	"$B/splinefit" -K -e 0.2 "$T/between.pts" >"$T/between.cubic" 2>&1 &&
+	    rect_corners "$T/between.cubic" 100 100 0.3 && ok ||
+	    no "between $seed: want 4 corner knots at the square's: $(cat "$T/between.cubic")"
+done
+# the same corners in any units, huge or tiny
+for s in 1e300 1e-300; do
+	awk -v s="$s" '{ printf "%.17g %.17g\n", $1 * s, $2 * s }' \
+	    "$T/between.pts" >"$T/scaled.pts"
+	"$B/splinefit" -K -e "$(awk -v s="$s" 'BEGIN { printf "%.17g", 0.2 * s }')" \
+	    "$T/scaled.pts" 2>&1 | head -1 >"$T/scaled.head"
+	head -1 "$T/between.cubic" | cmp -s - "$T/scaled.head" && ok ||
+	    no "between scaled by $s: $(cat "$T/scaled.head"), want $(head -1 "$T/between.cubic")"
 done
 
 # ---- a corner beside a sparse run: the span over it has too few points
