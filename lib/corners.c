@@ -202,15 +202,14 @@ by_value(const void *a, const void *b)
 
 /* The noise of the points (standard deviation across the outline),
  * from the median distance of each point from its neighbours' chord
- * (a bend or a corner moves few of them); 0 where there is none. */
+ * (a bend or a corner moves few of them); 0 where there is none.  r:
+ * scratch, room for o->n. */
 static double
-noise(const struct outline *o)
+noise(const struct outline *o, double *r)
 {
-	double *r = malloc(o->n * sizeof *r), s = 0;
+	double s = 0;
 	size_t k = 0;
 
-	if (r == NULL)
-		return 0;
 	for (long i = 0; i < (long)o->n; i++) {
 		double c[LOFT_MAXDIM], e[LOFT_MAXDIM];
 
@@ -230,7 +229,6 @@ noise(const struct outline *o)
 		 * plane curve; its median absolute value is 0.6745 of that */
 		s = r[k / 2] / (0.6745 * sqrt(1.5));
 	}
-	free(r);
 	return s;
 }
 
@@ -301,9 +299,8 @@ search(const struct outline *o, long lo, long hi, long from, long to,
 /* The corner or two within w points of point i: the split of the
  * points within w + m of it into two lines, or three, that fits them
  * best (each line m points at least).  Returns 1 (one corner, *a) or 2
- * (corners *a and *b).  Where w exceeds
- * CORNER_PLACES, every so many points are tried, then every point near
- * the best. */
+ * (corners *a and *b).  Where w exceeds CORNER_PLACES, every so many
+ * points are tried, then every point near the best. */
 static int
 settle(const struct outline *o, long i, long w, long m, double sigma,
     long *a, long *b)
@@ -431,13 +428,41 @@ settle_all(const struct outline *o, const size_t *cand, size_t ncand,
 	}
 }
 
+/* A candidate: its point and its turn. */
+struct turn {
+	double t;
+	size_t i;
+};
+
+static int
+by_turn(const void *a, const void *b)
+{
+	const struct turn *x = a, *y = b;
+
+	if (x->t != y->t)
+		return x->t < y->t ? 1 : -1;
+	return (x->i > y->i) - (x->i < y->i);
+}
+
+/* Order the nc points cand by their turns, sharpest first (the first
+ * point of equals first); t: room for nc. */
+static void
+sharpest_first(size_t *cand, size_t nc, const double *turn, struct turn *t)
+{
+	for (size_t x = 0; x < nc; x++)
+		t[x] = (struct turn){ turn[cand[x]], cand[x] };
+	qsort(t, nc, sizeof *t, by_turn);
+	for (size_t x = 0; x < nc; x++)
+		cand[x] = t[x].i;
+}
+
 /* The turns of o at the scale len into turn (0 where none is a
  * corner's), and the points either side within half of it into half;
- * the indices of the local sharpest into cand, sharpest first;
- * returns how many. */
+ * the indices of the local sharpest into cand, sharpest first (t:
+ * scratch, room for o->n); returns how many. */
 static size_t
 candidates(const struct outline *o, double len, double *turn, long *half,
-    size_t *cand)
+    size_t *cand, struct turn *t)
 {
 	size_t nc = 0;
 	long n = (long)o->n;
@@ -460,14 +485,7 @@ candidates(const struct outline *o, double len, double *turn, long *half,
 			cand[nc++] = (size_t)i;
 		}
 	}
-	/* sharpest first (insertion: they are few) */
-	for (size_t x = 1; x < nc; x++)
-		for (size_t y = x; y > 0 && turn[cand[y]] > turn[cand[y - 1]]; y--) {
-			size_t t = cand[y];
-
-			cand[y] = cand[y - 1];
-			cand[y - 1] = t;
-		}
+	sharpest_first(cand, nc, turn, t);
 	return nc;
 }
 
@@ -481,15 +499,17 @@ find(const struct outline *o, double tol, struct found *f, size_t *nc)
 	long *half = malloc(n * sizeof *half);
 	size_t *cand = malloc(n * sizeof *cand);
 	unsigned char *taken = calloc(n, 1);
+	struct turn *t = malloc(n * sizeof *t);
 	int rc = -1;
 
-	if (turn != NULL && half != NULL && cand != NULL && taken != NULL) {
+	if (turn != NULL && half != NULL && cand != NULL && taken != NULL &&
+	    t != NULL) {
 		for (long i = 1; i <= (long)n; i++)
 			if (i < (long)n || o->closed)
 				len += vdist(pt(o, i), pt(o, i - 1), o->dim);
 		len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
-		sigma = fmax(noise(o), CORNER_NOISE_FLOOR * tol);
-		ncand = candidates(o, len, turn, half, cand);
+		sigma = fmax(noise(o, turn), CORNER_NOISE_FLOOR * tol);
+		ncand = candidates(o, len, turn, half, cand, t);
 		settle_all(o, cand, ncand, half, sigma, taken, f, nc);
 		rc = 0;
 	}
@@ -497,6 +517,7 @@ find(const struct outline *o, double tol, struct found *f, size_t *nc)
 	free(half);
 	free(cand);
 	free(taken);
+	free(t);
 	return rc;
 }
 
@@ -504,26 +525,32 @@ size_t
 loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
     size_t *corner, double *at)
 {
-	double *q = malloc(n * dim * sizeof *q), big = 0;
-	struct found *f = malloc(n * sizeof *f);
-	struct outline o = { q, n, dim, closed };
+	double *q, big = 0;
+	struct found *f;
+	struct outline o = { NULL, n, dim, closed };
 	size_t nc = 0;
 	int e;
 
-	for (size_t i = 0; i < n * dim; i++)
-		big = fmax(big, fabs(p[i]));
-	if (q == NULL || f == NULL || n < 5 || !(big > 0) || !isfinite(big) ||
-	    !(tol > 0) || !isfinite(tol)) {
+	if (n < 5 || dim < 1 || dim > LOFT_MAXDIM || !(tol > 0) ||
+	    !isfinite(tol))
+		return 0;
+	for (size_t i = 0; i < n; i++)
+		big = fmax(big, vmaxabs(p + i * dim, dim));
+	q = calloc(n, (size_t)dim * sizeof *q);
+	f = malloc(n * sizeof *f);
+	if (q == NULL || f == NULL || !(big > 0) || !isfinite(big)) {
 		free(q);
 		free(f);
 		return 0;
 	}
+	o.p = q;
 	/* scaled by a power of two (exactly) into the unit box, so that no
 	 * square of a distance overflows or underflows: the corners do not
 	 * depend on the units */
 	e = ilogb(big);
-	for (size_t i = 0; i < n * dim; i++)
-		q[i] = ldexp(p[i], -e);
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < dim; k++)
+			q[i * dim + k] = ldexp(p[i * dim + k], -e);
 	if (find(&o, ldexp(tol, -e), f, &nc) == 0) {
 		qsort(f, nc, sizeof *f, by_point);
 		for (size_t c = 0; c < nc; c++) {
