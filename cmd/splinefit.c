@@ -350,9 +350,10 @@ put_curve(struct loft_run *run, const struct loft_record *rec, size_t nseg,
 }
 
 /*
- * -e: the joints of the nseg segments in o->seg that are the nc corner
- * points o->corner[] of rec (loft_approx keeps each corner a knot, at
- * the point itself), in o->corner as joints, increasing; their count.
+ * -e: the joints of the nseg segments in o->seg that are the nc corners
+ * o->corner[] of rec (loft_approx keeps each corner a knot: at the point
+ * itself, or where found, at its row of o->cornerat), in o->corner as
+ * joints, increasing; their count.
  */
 static size_t
 approx_corners(struct opts *o, const struct loft_record *rec, size_t nseg,
