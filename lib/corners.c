@@ -251,18 +251,18 @@ chord_ss(const struct outline *o, long a, long b)
 }
 
 /* The squared distances of points lo..hi from two lines, lo..a and
- * b..hi: one corner (two 0, b == a) or two, a and b (the chord a-b
- * between); HUGE_VAL where the points are missing, or where two
- * corners do not both turn by CORNER_TURN. */
+ * b..hi: one corner (b == a) or two, a and b (the chord a-b between);
+ * HUGE_VAL where the points are missing, or where two corners do not
+ * both turn by CORNER_TURN. */
 static double
-corner_ss(const struct outline *o, long lo, long a, long b, long hi, int two)
+corner_ss(const struct outline *o, long lo, long a, long b, long hi)
 {
 	struct line u, w;
 	double v[LOFT_MAXDIM];
 
 	if (!fit_line(o, lo, a - lo + 1, &u) || !fit_line(o, b, hi - b + 1, &w))
 		return HUGE_VAL;
-	if (!two)
+	if (a == b)
 		return u.ss + w.ss;
 	vsub(v, pt(o, b), pt(o, a), o->dim);
 	if (!(vunit(v, o->dim) > 0) || angle(u.d, v, o->dim) < CORNER_TURN ||
@@ -288,10 +288,10 @@ search(const struct outline *o, long lo, long hi, long from, long to,
 	double s;
 
 	for (long a = from; a <= to; a += step) {
-		if ((s = corner_ss(o, lo, a, a, hi, 0)) < one->ss)
+		if ((s = corner_ss(o, lo, a, a, hi)) < one->ss)
 			*one = (struct split){ s, a, a };
 		for (long b = a + step; b <= last; b += step)
-			if ((s = corner_ss(o, lo, a, b, hi, 1)) < two->ss)
+			if ((s = corner_ss(o, lo, a, b, hi)) < two->ss)
 				*two = (struct split){ s, a, b };
 	}
 }
