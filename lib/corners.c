@@ -17,7 +17,9 @@
  * where that fits them better by more than the noise explains.  Other
  * turns within the scale of a corner so settled are its echoes.  A
  * single corner's knot goes where the lines either side meet, which on
- * sparse points is seldom a point.
+ * sparse points is seldom a point.  Dense points (hundreds within the
+ * scale) are first averaged in runs: a line through the averages leans
+ * the same way, and the search then costs as on sparser points.
  */
 #include <stdlib.h>
 
@@ -69,6 +71,14 @@
 /* The noise is taken as no less than this part of the tolerance, so
  * that points without noise still weigh a second corner. */
 #define CORNER_NOISE_FLOOR 1e-3
+
+/* Where more than this many points lie within the scale of a point,
+ * runs of them are averaged into one first, leaving about half as
+ * many: the lines at the scale lean on as many as a corner needs, and
+ * ten times denser points cost no more.  The density is the median of
+ * this many points' counts, spread round the outline. */
+#define CORNER_DENSE 48
+#define CORNER_PROBES 15
 
 /* The outline: n points of dimension dim, closed or not. */
 struct outline {
@@ -489,13 +499,14 @@ candidates(const struct outline *o, double len, double *turn, long *half,
 	return nc;
 }
 
-/* The corners of the points q, scaled into the unit box, at the scale
- * tol: into f, their count into *nc.  0, or -1 out of memory. */
+/* The corners of the outline o at the scale len (its tolerance tol):
+ * into f, their count into *nc.  0, or -1 out of memory. */
 static int
-find(const struct outline *o, double tol, struct found *f, size_t *nc)
+find(const struct outline *o, double len, double tol, struct found *f,
+    size_t *nc)
 {
 	size_t n = o->n, ncand;
-	double *turn = malloc(n * sizeof *turn), sigma, len = 0;
+	double *turn = malloc(n * sizeof *turn), sigma;
 	long *half = malloc(n * sizeof *half);
 	size_t *cand = malloc(n * sizeof *cand);
 	unsigned char *taken = calloc(n, 1);
@@ -504,10 +515,6 @@ find(const struct outline *o, double tol, struct found *f, size_t *nc)
 
 	if (turn != NULL && half != NULL && cand != NULL && taken != NULL &&
 	    t != NULL) {
-		for (long i = 1; i <= (long)n; i++)
-			if (i < (long)n || o->closed)
-				len += vdist(pt(o, i), pt(o, i - 1), o->dim);
-		len = fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / n);
 		sigma = fmax(noise(o, turn), CORNER_NOISE_FLOOR * tol);
 		ncand = candidates(o, len, turn, half, cand, t);
 		settle_all(o, cand, ncand, half, sigma, taken, f, nc);
@@ -518,6 +525,113 @@ find(const struct outline *o, double tol, struct found *f, size_t *nc)
 	free(cand);
 	free(taken);
 	free(t);
+	return rc;
+}
+
+/* The scale of o at the tolerance tol: CORNER_TOLS of it, or
+ * CORNER_SPACINGS mean spacings of the points, the longer. */
+static double
+scale(const struct outline *o, double tol)
+{
+	double len = 0;
+
+	for (long i = 1; i <= (long)o->n; i++)
+		if (i < (long)o->n || o->closed)
+			len += vdist(pt(o, i), pt(o, i - 1), o->dim);
+	return fmax(CORNER_TOLS * tol, CORNER_SPACINGS * len / (double)o->n);
+}
+
+/* How many points of o make a run averaged into one before corners are
+ * sought: 1, or where the points within len of a point (the median of
+ * CORNER_PROBES spread round o) are more than CORNER_DENSE, as many as
+ * leave CORNER_DENSE / 2 of them. */
+static size_t
+run_length(const struct outline *o, double len)
+{
+	long k[CORNER_PROBES];
+	size_t nk = 0;
+
+	for (size_t i = 0; i < CORNER_PROBES; i++) {
+		long r = reach(o, (long)(i * o->n / CORNER_PROBES), 1, len);
+
+		if (r > 0)
+			k[nk++] = r;
+	}
+	for (size_t i = 1; i < nk; i++)         /* insertion: a few */
+		for (size_t j = i; j > 0 && k[j - 1] > k[j]; j--) {
+			long x = k[j];
+
+			k[j] = k[j - 1];
+			k[j - 1] = x;
+		}
+	if (nk == 0 || k[nk / 2] <= CORNER_DENSE)
+		return 1;
+	return (size_t)(k[nk / 2] / (CORNER_DENSE / 2));
+}
+
+/* The points of o averaged in runs of g into q (room for o->n / g + 1
+ * points; the last run may be shorter); returns their count. */
+static size_t
+coarsen(const struct outline *o, size_t g, double *q)
+{
+	size_t m = 0;
+
+	for (size_t a = 0; a < o->n; a += g, m++) {
+		size_t k = o->n - a < g ? o->n - a : g;
+
+		for (int d = 0; d < o->dim; d++)
+			q[m * o->dim + d] = 0;
+		for (size_t j = a; j < a + k; j++)
+			vaxpy(q + m * o->dim, 1.0 / (double)k, o->p + j * o->dim,
+			    o->dim);
+	}
+	return m;
+}
+
+/* The point of o in runs c - 1 .. c + 1 of g nearest x: where a corner
+ * found among the runs lies among the points. */
+static size_t
+uncoarsen(const struct outline *o, size_t g, size_t c, const double *x)
+{
+	long best = (long)(c * g);
+	double d = HUGE_VAL;
+
+	for (long j = ((long)c - 1) * (long)g; j < ((long)c + 2) * (long)g; j++)
+		if (pt(o, j) != NULL && vdist(pt(o, j), x, o->dim) < d) {
+			d = vdist(pt(o, j), x, o->dim);
+			best = j;
+		}
+	return wrap(o, best);
+}
+
+/* The corners of o (its points in the unit box) at the tolerance tol,
+ * into f, their count into *nc, in order along o; a run of dense points
+ * is first averaged into one.  0, or -1 out of memory. */
+static int
+find_dense(const struct outline *o, double tol, struct found *f, size_t *nc)
+{
+	double len = scale(o, tol), *q;
+	size_t g = run_length(o, len), k = 0;
+	struct outline c = *o;
+	int rc;
+
+	if (g == 1)
+		rc = find(o, len, tol, f, nc);
+	else if ((q = malloc((o->n / g + 1) * o->dim * sizeof *q)) == NULL)
+		return -1;
+	else {
+		c.p = q;
+		c.n = coarsen(o, g, q);
+		if ((rc = find(&c, len, tol, f, nc)) == 0)
+			for (size_t x = 0; x < *nc; x++)
+				f[x].i = uncoarsen(o, g, f[x].i, f[x].at);
+		free(q);
+	}
+	qsort(f, *nc, sizeof *f, by_point);
+	for (size_t x = 0; x < *nc; x++)        /* two runs, one point */
+		if (k == 0 || f[x].i != f[k - 1].i)
+			f[k++] = f[x];
+	*nc = k;
 	return rc;
 }
 
@@ -551,14 +665,14 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 	for (size_t i = 0; i < n; i++)
 		for (int k = 0; k < dim; k++)
 			q[i * dim + k] = ldexp(p[i * dim + k], -e);
-	if (find(&o, ldexp(tol, -e), f, &nc) == 0) {
-		qsort(f, nc, sizeof *f, by_point);
+	if (find_dense(&o, ldexp(tol, -e), f, &nc) == 0)
 		for (size_t c = 0; c < nc; c++) {
 			corner[c] = f[c].i;
 			for (int k = 0; at != NULL && k < dim; k++)
 				at[c * dim + k] = ldexp(f[c].at[k], e);
 		}
-	}
+	else
+		nc = 0;
 	free(q);
 	free(f);
 	return nc;

@@ -403,7 +403,9 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * the places for their knots: for a single corner where the lines
  * either side meet, if nearer its point than its neighbours, else the
  * point.  Returns their count (0 also when out of memory).  A circle
- * or a gentle bend gives none.
+ * or a gentle bend gives none.  Points denser than the scale needs
+ * are first averaged in runs, so the time grows with n, not with the
+ * points' density.
  */
 size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
     double tol, size_t *corner, double *at);
