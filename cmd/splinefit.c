@@ -20,12 +20,12 @@ struct opts {
 	double merge;                   /* -d, or -1: the default distance */
 	double approx;                  /* -e: the tolerance, or 0 */
 	int rounds;                     /* -i with -e: rounds of splitting */
-	int findcorner;                 /* -K: -e finds corners itself */
+	int nocorner;                   /* -C: -e finds no corners itself */
 	int open_set, method_set;       /* -o, -m given: the record's closed=
 	                                 * and method= are not read */
 	double *seg, *other;            /* scratch, grown as records need */
 	double *knots;                  /* the knots kept after merging */
-	double *cornerat;               /* -K: the corners' knots */
+	double *cornerat;               /* -e: the corners' knots found */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
 	size_t *straight, nstraight;    /* the straight spans, 0-based */
@@ -42,9 +42,8 @@ static const char usage_text[] =
     "                 [-m fair|manning|ferguson|chord] [-t tol] [-i maxiter] "
     "[-p digits]\n"
     "                 [-v] [-d dist] [file ...]\n"
-    "       splinefit -e tol [-K] [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]] "
-    "[-i rounds]\n"
-    "                 [-p digits] [-v] [file ...]\n";
+    "       splinefit -e tol [-C | -K] [-o] [-S tx,ty[,tz]] [-E tx,ty[,tz]]\n"
+    "                 [-i rounds] [-p digits] [-v] [file ...]\n";
 
 /*
  * The end tangent named key ("start" or "end"): the one -S or -E gave,
@@ -382,7 +381,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	struct opts *o = run->ctx;
 	struct loft_approx_opts ao;
 	struct loft_approx_info info;
-	int rc, dim = rec->ncols, found = nc == 0 && o->findcorner;
+	int rc, dim = rec->ncols, found = nc == 0 && !o->nocorner;
 
 	loft_approx_defaults(&ao);
 	ao.tol = o->approx;
@@ -547,13 +546,13 @@ main(int argc, char *argv[])
 	struct loft_run run = { .prog = "splinefit", .out = stdout,
 	    .msg = stderr, .handle = fit_record, .ctx = &o };
 	struct loft_error err;
-	int c, status, rc = 0, word, fitting = 0;
+	int c, status, rc = 0, word, fitting = 0, corners = 0;
 	long whole;
 
 	loft_fit_defaults(&o.fit);
 	o.fit.split = 1;
 	loft_opt_long(argc, argv, usage_text);
-	while ((c = getopt(argc, argv, "1oS:E:a:k:m:t:i:p:d:e:Kvh")) != -1) {
+	while ((c = getopt(argc, argv, "1oS:E:a:k:m:t:i:p:d:e:CKvh")) != -1) {
 		switch (c) {
 		case '1': o.fit.split = 0; fitting = c; break;
 		case 'o': o.fit.closed = 0; o.open_set = 1; break;
@@ -575,7 +574,8 @@ main(int argc, char *argv[])
 		case 'd': rc = loft_parse_real(optarg, 0, DBL_MAX, &o.merge,
 		    &err); fitting = c; break;
 		case 'e': rc = parse_tolerance(optarg, &o.approx, &err); break;
-		case 'K': o.findcorner = 1; break;
+		case 'C': o.nocorner = 1; corners = c; break;
+		case 'K': o.nocorner = 0; corners = c; break;
 		case 'v': o.verbose = 1; break;
 		case 'h': loft_usage(usage_text, 0); break;
 		default: loft_usage(usage_text, 2);
@@ -589,9 +589,9 @@ main(int argc, char *argv[])
 	if (o.approx > 0 && fitting)
 		loft_usage_error(usage_text, fitting, "chooses how to fit through "
 		    "knots: -e approximates, by the fair curve");
-	if (o.findcorner && !(o.approx > 0))
-		loft_usage_error(usage_text, 'K', "has -e find corners in the "
-		    "points: use it with -e");
+	if (corners && !(o.approx > 0))
+		loft_usage_error(usage_text, corners, "says whether -e finds "
+		    "corners in the points: use it with -e");
 	status = loft_run_files(&run, argc - optind, argv + optind);
 	free(o.seg);
 	free(o.other);

@@ -294,8 +294,8 @@ run "printf 'points\n0 0 1\n2 1 0\n\npoints\n0 0\n1 1\n3 30\n' | $B/splinefit -o
 status 0
 [ "$(grep -c '^cubic' "$T/out")" = 2 ] && ok || no "two records: $(cat "$T/out")"
 
-# ---- corners found with -K (issue 23): a noisy square keeps its four, a
-# noisy circle has none; without -K none are found -------------------------
+# ---- corners found by -e (issue 23): a noisy square keeps its four, a
+# noisy circle has none; with -C none are found, -K is the default ------
 # noisy SHAPE N SIGMA SEED: a square of side 100 (corners at 0 0, 100 0,
 # 100 100, 0 100) or a circle of radius 50, N points even in length,
 # Gaussian noise (Box-Muller on awk's rand)
@@ -354,13 +354,15 @@ at_square() {
 }
 for seed in 1 2 3; do
 	shape square 400 0.3 $seed >"$T/sq.pts"
-	"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
+	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" && ok ||
 	    no "square $seed: $(cat "$T/sq.err")"
+	"$B/splinefit" -C -K -e 1.2 "$T/sq.pts" | cmp -s - "$T/sq.cubic" && ok ||
+	    no "square $seed: -C -K is not the default"
 	at_square "$T/sq.cubic" && ok ||
 	    no "square $seed: want 4 corners at the square's: $(head -1 "$T/sq.cubic")"
-	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
+	"$B/splinefit" -C -e 1.2 "$T/sq.pts" >"$T/sqk.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/sqk.cubic" && ok ||
-	    no "square $seed, no -K: want no corners: $(head -1 "$T/sqk.cubic")"
+	    no "square $seed, -C: want no corners: $(head -1 "$T/sqk.cubic")"
 	twoway "$T/sq.cubic" "$T/sq.pts" 1.2
 	# straight runs: two sides at least are exact lines (both tangents
 	# along the chord, to rounding)
@@ -371,7 +373,7 @@ for seed in 1 2 3; do
 	    no "square $seed: want 2 straight segments at least: $(cat "$T/sq.cubic")"
 	twoway "$T/sqk.cubic" "$T/sq.pts" 1.2
 	shape circle 400 0.3 $seed >"$T/ci.pts"
-	"$B/splinefit" -K -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
+	"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
 	    ! grep -q corners= "$T/ci.cubic" && ok ||
 	    no "circle $seed: want no corner: $(head -1 "$T/ci.cubic")"
 done
@@ -380,14 +382,16 @@ done
 # the corners found among the runs are the square's, and a circle as
 # dense has none.
 shape square 20000 0.3 1 >"$T/sq.pts"
-"$B/splinefit" -K -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>&1 && at_square "$T/sq.cubic" &&
+"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>&1 && at_square "$T/sq.cubic" &&
     ok || no "dense square: want 4 corners at the square's: $(head -1 "$T/sq.cubic")"
 shape circle 20000 0.3 1 >"$T/ci.pts"
-"$B/splinefit" -K -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
+"$B/splinefit" -e 1.2 "$T/ci.pts" >"$T/ci.cubic" 2>&1 &&
     ! grep -q corners= "$T/ci.cubic" && ok ||
     no "dense circle: want no corner: $(head -1 "$T/ci.cubic")"
-run "$B/splinefit -K $T/sq.pts"
-status 2
+for o in -C -K; do
+	run "$B/splinefit $o $T/sq.pts"
+	status 2
+done
 
 # rect_pts W H SPACING FIRST SEED: points round the rectangle 0 0 to W H
 # (from 0 0 along the x axis), SPACING apart along it, the first FIRST
@@ -423,7 +427,7 @@ rect_corners() {
 # not cross itself (its polyline, sample -n 16, against every other edge)
 for seed in 1 2 3; do
 	rect_pts 100 2.5 0.5125 0 "$seed" >"$T/slab.pts"
-	"$B/splinefit" -K -e 0.2 "$T/slab.pts" >"$T/slab.cubic" 2>&1 &&
+	"$B/splinefit" -e 0.2 "$T/slab.pts" >"$T/slab.cubic" 2>&1 &&
 	    rect_corners "$T/slab.cubic" 100 2.5 0.4 && ok ||
 	    no "slab $seed: want its 4 corners: $(head -1 "$T/slab.cubic")"
 	"$B/sample" -n 16 "$T/slab.cubic" | awk '/^[-0-9.]/ { n++; x[n] = $1; y[n] = $2 }
@@ -447,7 +451,7 @@ done
 # at least, and cut the corner)
 for seed in 1 2 3; do
 	rect_pts 100 100 2.5 0.6 "$seed" >"$T/between.pts"
-	"$B/splinefit" -K -e 0.2 "$T/between.pts" >"$T/between.cubic" 2>&1 &&
+	"$B/splinefit" -e 0.2 "$T/between.pts" >"$T/between.cubic" 2>&1 &&
 	    rect_corners "$T/between.cubic" 100 100 0.3 && ok ||
 	    no "between $seed: want 4 corner knots at the square's: $(cat "$T/between.cubic")"
 done
@@ -455,7 +459,7 @@ done
 for s in 1e300 1e-300; do
 	awk -v s="$s" '{ printf "%.17g %.17g\n", $1 * s, $2 * s }' \
 	    "$T/between.pts" >"$T/scaled.pts"
-	"$B/splinefit" -K -e "$(awk -v s="$s" 'BEGIN { printf "%.17g", 0.2 * s }')" \
+	"$B/splinefit" -e "$(awk -v s="$s" 'BEGIN { printf "%.17g", 0.2 * s }')" \
 	    "$T/scaled.pts" 2>&1 | head -1 >"$T/scaled.head"
 	head -1 "$T/between.cubic" | cmp -s - "$T/scaled.head" && ok ||
 	    no "between scaled by $s: $(cat "$T/scaled.head"), want $(head -1 "$T/between.cubic")"
@@ -467,11 +471,13 @@ done
 # starts at the corner (100, 0); noise 0.05 from awk's generator.  The
 # span that rounds that corner is far from the corner's point and holds
 # it alone: without a knot put on the points there (split_far) the fit
-# ends "no span left to split".  The fit is written and every point is
-# within TOL of it (nearest).  Not checked yet, a defect left: the other
-# way (twoway) this curve passes TOL plus the mean spacing of the
-# points' polyline, by some mm, between two points of the sparse side,
-# where the stray check gives up after its rounds.
+# ends "no span left to split".  With -C (no corners found) the fit is
+# written and every point is within TOL of it (nearest).  Not checked
+# yet, a defect left: the other way (twoway) that smooth curve passes
+# TOL plus the mean spacing of the points' polyline, by some mm, between
+# two points of the sparse side, where the stray check gives up after
+# its rounds.  By default the rectangle's four corners are found, and
+# the curve passes both ways.
 awk 'BEGIN { srand(3); pi = atan2(0, -1)
     side(0, 0, 100, 0, 1); side(100, 0, 100, 60, 30)
     side(100, 60, 0, 60, 1); side(0, 60, 0, 0, 1) }
@@ -481,8 +487,14 @@ awk 'BEGIN { srand(3); pi = atan2(0, -1)
 	    printf "%.6f %.6f\n", x0 + t * (x1 - x0) + g(), y0 + t * (y1 - y0) + g() } }
     function g() { return 0.05 * sqrt(-2 * log(1 - rand())) * cos(2 * pi * rand()) }' \
     >"$T/sparse.pts"
+cp "$T/sparse.pts" "$T/sparsec.pts"
+fit sparsec 1 -C
+within sparsec 1
 fit sparse 1
 within sparse 1
+twoway "$T/sparse.cubic" "$T/sparse.pts" 1
+rect_corners "$T/sparse.cubic" 100 60 2 && ok ||
+    no "sparse side: want the rectangle's 4 corners: $(head -1 "$T/sparse.cubic")"
 
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then

@@ -10,7 +10,7 @@ segment); KNOTS: its knot records, whose corners= name the true
 corners.  The first 100 contours are sampled at 400 points even in arc
 length, with Gaussian noise of 0.1, 0.25 or 0.5% of the contour's size
 (sigma), and fitted one by one by splinefit -e 4*sigma (no corners
-given).  Where Debian's potrace is installed, the polygon of the same
+given: the default finds them, -C finds none).  Where Debian's potrace is installed, the polygon of the same
 noisy points is filled on a raster of pixels sigma wide and traced by
 potrace (its defaults) to SVG; its largest path is read back.  Printed
 for each: the fits that fail, the curves that cross themselves (their
@@ -23,7 +23,7 @@ of the fit within 2 TOL of a true corner that turns by CORNER or more)
 and its false corners (a corner= joint farther than 2 TOL from every
 true corner the outline has).
 
-With --check, only contours K (from 0) are fitted, by splinefit -K -e,
+With --check, only contours K (from 0) are fitted, by splinefit -e,
 and a line is printed for each: K, whether the curve crosses itself
 (1) or not (0), and its Hausdorff distance to the true outline in
 sigmas, its curve sampled densely enough (a quarter sigma apart) for
@@ -255,7 +255,7 @@ def check(which, truth):
         pts, sigma, dense = noisy(k, t, rng)
         if k not in which:
             continue
-        fit = splinefit(["-K"], pts, sigma)
+        fit = splinefit([], pts, sigma)
         if fit.returncode != 0:
             print(k, "fails:", fit.stderr.strip())
             continue
@@ -275,12 +275,12 @@ def main():
         if len(sys.argv) > 3 else [""] * len(truth)
     have_potrace = shutil.which("potrace") is not None
     rng = random.Random(23)
-    res = {"loft": [0, 0, [], []], "loft -K": [0, 0, [], []],
+    res = {"loft": [0, 0, [], []], "loft -C": [0, 0, [], []],
            "potrace": [0, 0, [], []]}
     kept = want = false = 0
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
-        for name, opt in (("loft", []), ("loft -K", ["-K"])):
+        for name, opt in (("loft", []), ("loft -C", ["-C"])):
             fit = splinefit(opt, pts, sigma)
             r = res[name]
             if fit.returncode != 0:
@@ -291,7 +291,7 @@ def main():
             r[1] += crosses(c)
             r[2].append(hausdorff(fine(rows, sigma), dense) / sigma)
             r[3].append(len(rows))
-            if opt:
+            if not opt:
                 a, b, f = corners_of(head, rows, 4 * sigma,
                                      true_corners(heads[k], t))
                 kept, want, false = kept + a, want + b, false + f
@@ -306,10 +306,10 @@ def main():
           (len(truth), "" if have_potrace else
            "; potrace skipped (no potrace)"))
     report("loft", *res["loft"])
-    report("loft -K", *res["loft -K"])
+    report("loft -C", *res["loft -C"])
     if have_potrace:
         report("potrace", *res["potrace"])
-    print("  loft -K's corners: %d of %d true corners of %d degrees or more "
+    print("  loft's corners: %d of %d true corners of %d degrees or more "
           "kept, %d false" % (kept, want, round(math.degrees(CORNER)),
                               false))
 
