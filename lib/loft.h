@@ -402,8 +402,10 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * into corner (room for n), and where at is not NULL (room for n * dim)
  * the places for their knots: for a single corner where the lines
  * either side meet, if nearer its point than its neighbours, else the
- * point.  Returns their count (0 also when out of memory).  A circle
- * or a gentle bend gives none.  Points denser than the scale needs
+ * point.  A turn is kept only where the lines fit the points near it
+ * better than a quadratic curve does (else it is a smooth bend).
+ * Returns their count (0 also when out of memory).  A circle or a
+ * gentle bend seldom gives one.  Points denser than the scale needs
  * are first averaged in runs, so the time grows with n, not with the
  * points' density.
  */
