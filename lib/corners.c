@@ -369,8 +369,9 @@ search(const struct outline *o, long lo, long hi, long from, long to,
  * points within w + m of it into two lines, or three, that fits them
  * best (each line m points at least).  Returns 1 (one corner, *a) or 2
  * (corners *a and *b), or 0 where a quadratic curve fits those points
- * nearly as well (a smooth bend).  Where w exceeds CORNER_PLACES, every
- * so many points are tried, then every point near the best. */
+ * as well, to within CORNER_SMOOTH (a smooth bend).  Where w exceeds
+ * CORNER_PLACES, every so many points are tried, then every point near
+ * the best. */
 static int
 settle(const struct outline *o, long i, long w, long m, double sigma,
     long *a, long *b)
