@@ -613,25 +613,20 @@ scale(const struct outline *o, double tol)
 static size_t
 run_length(const struct outline *o, double len)
 {
-	long k[CORNER_PROBES];
+	double k[CORNER_PROBES];
 	size_t nk = 0;
 
 	for (size_t i = 0; i < CORNER_PROBES; i++) {
 		long r = reach(o, (long)(i * o->n / CORNER_PROBES), 1, len);
 
 		if (r > 0)
-			k[nk++] = r;
+			k[nk++] = (double)r;
 	}
-	for (size_t i = 1; i < nk; i++)         /* insertion: a few */
-		for (size_t j = i; j > 0 && k[j - 1] > k[j]; j--) {
-			long x = k[j];
-
-			k[j] = k[j - 1];
-			k[j - 1] = x;
-		}
-	if (nk == 0 || k[nk / 2] <= CORNER_DENSE)
+	if (nk == 0)
 		return 1;
-	return (size_t)(k[nk / 2] / (CORNER_DENSE / 2));
+	qsort(k, nk, sizeof *k, by_value);
+	return k[nk / 2] <= CORNER_DENSE ? 1 :
+	    (size_t)(k[nk / 2] / (CORNER_DENSE / 2));
 }
 
 /* The points of o averaged in runs of g into q (room for o->n / g + 1

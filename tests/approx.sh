@@ -295,7 +295,7 @@ status 0
 [ "$(grep -c '^cubic' "$T/out")" = 2 ] && ok || no "two records: $(cat "$T/out")"
 
 # ---- corners found by -e (issue 23): a noisy square keeps its four, a
-# noisy circle has none; with -C none are found, -K is the default ------
+# noisy circle has none; with -C none are found, -K names the default --
 # noisy SHAPE N SIGMA SEED: a square of side 100 (corners at 0 0, 100 0,
 # 100 100, 0 100) or a circle of radius 50, N points even in length,
 # Gaussian noise (Box-Muller on awk's rand)

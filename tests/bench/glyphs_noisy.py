@@ -10,18 +10,18 @@ segment); KNOTS: its knot records, whose corners= name the true
 corners.  The first 100 contours are sampled at 400 points even in arc
 length, with Gaussian noise of 0.1, 0.25 or 0.5% of the contour's size
 (sigma), and fitted one by one by splinefit -e 4*sigma (no corners
-given: the default finds them, -C finds none).  Where Debian's potrace is installed, the polygon of the same
-noisy points is filled on a raster of pixels sigma wide and traced by
-potrace (its defaults) to SVG; its largest path is read back.  Printed
-for each: the fits that fail, the curves that cross themselves (their
-polyline of 30 points a segment), the Hausdorff distance to the true
-outline in sigmas (splinefit's curve sampled a quarter sigma apart at
-most, potrace's short segments 30 times each), and the segments, at
-the median and 90th
-percentile; for splinefit also the true corners kept (a corner= joint
-of the fit within 2 TOL of a true corner that turns by CORNER or more)
-and its false corners (a corner= joint farther than 2 TOL from every
-true corner the outline has).
+given: the default finds them, -C finds none).  Where Debian's potrace
+is installed, the polygon of the same noisy points is filled on a raster
+of pixels sigma wide and traced by potrace (its defaults) to SVG; its
+largest path is read back.  Printed for each: the fits that fail, the
+curves that cross themselves (their polyline of 30 points a segment),
+the Hausdorff distance to the true outline in sigmas (splinefit's curve
+sampled a quarter sigma apart at most, potrace's short segments 30 times
+each), and the segments, at the median and 90th percentile; for
+splinefit also the true corners kept (a corner= joint of the fit within
+2 TOL of a true corner that turns by CORNER or more) and its false
+corners (a corner= joint farther than 2 TOL from every true corner the
+outline has).
 
 With --check, only contours K (from 0) are fitted, by splinefit -e,
 and a line is printed for each: K, whether the curve crosses itself
