@@ -373,6 +373,44 @@ approx_corners(struct opts *o, const struct loft_record *rec, size_t nseg,
 	return c;
 }
 
+/*
+ * -e, where the corners splinefit found leave a fit that strays from the
+ * points or crosses itself (info->astray spans fail the check both
+ * ways): the fit without them into o->seg and *info in its stead, *nc
+ * then 0, where that fit passes both checks (a false corner among
+ * sparse noisy points can pin a knot the curve loops about); else
+ * nothing changed.  Returns 0, or LOFT_ENOMEM.
+ */
+static int
+approx_smooth(struct opts *o, const struct loft_record *rec,
+    const struct loft_approx_opts *ao, struct loft_approx_info *info,
+    size_t *nc, struct loft_error *err)
+{
+	struct loft_approx_opts so = *ao;
+	struct loft_approx_info si;
+	struct loft_error se;
+	size_t size = 4 * (size_t)rec->ncols * rec->nrows * sizeof *o->seg;
+	double *seg = malloc(size);
+	int rc;
+
+	if (seg == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	so.corner = NULL;
+	so.corner_at = NULL;
+	so.ncorner = 0;
+	rc = loft_approx(&so, rec->num, rec->nrows, rec->ncols, seg, &si, &se);
+	if (rc == 0 && si.astray == 0) {
+		memcpy(o->seg, seg, 4 * (size_t)rec->ncols * si.nseg *
+		    sizeof *seg);
+		*info = si;
+		*nc = 0;
+	}
+	free(seg);
+	if (rc == LOFT_ENOMEM)
+		return loft_fail(err, rc, -1, "out of memory");
+	return 0;
+}
+
 /* -e: the fair curve within o->approx of the points (loft_approx). */
 static int
 approx_record(struct loft_run *run, const struct loft_record *rec,
@@ -402,6 +440,9 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
 	    err)) != 0)
 		return rc;
+	if (found && nc > 0 && info.astray > 0 &&
+	    approx_smooth(o, rec, &ao, &info, &nc, err) != 0)
+		return LOFT_ENOMEM;
 	if (o->verbose) {
 		fprintf(run->msg, "splinefit: %s:%ld: %zu points, %zu knots "
 		    "kept, largest distance %.3g (tolerance %g) from the point "

@@ -2248,6 +2248,7 @@ approx_tries(struct work *w, const struct loft_approx_opts *o,
 			best = bad;
 			rc = 0;
 			*info = *ip;
+			info->astray = bad;
 			put_segments(w, seg);
 		}
 	}

@@ -443,6 +443,9 @@ struct loft_approx_info {
 	double dist;            /* the largest distance of a point from it */
 	size_t where;           /* that point (0-based) */
 	int rounds;             /* rounds of splitting taken */
+	size_t astray;          /* spans that stray from the points'
+	                         * polyline or cross the curve: 0 where
+	                         * the check both ways passes */
 };
 
 /*
@@ -465,10 +468,12 @@ struct loft_approx_info {
  * Writes the segments to seg, 4 * dim numbers each in the row layout of
  * loft_cubic_eval, at most n of them: seg must hold 4 * dim * n
  * doubles.  info (may be NULL) gets the knots, segments, the largest
- * distance and its point.  Returns 0, or LOFT_EINPUT (dim, tol not
- * positive and finite, tol at least half the diagonal of the points'
- * box), LOFT_EGEOM (fewer than LOFT_APPROX_MIN_CLOSED or
- * LOFT_APPROX_MIN_OPEN points, points all on a line, a fit that fails),
+ * distance and its point, and how many spans fail the check both ways
+ * (the fit that fails on fewest is written where none passes).
+ * Returns 0, or LOFT_EINPUT (dim, tol not positive and finite, tol at
+ * least half the diagonal of the points' box), LOFT_EGEOM (fewer than
+ * LOFT_APPROX_MIN_CLOSED or LOFT_APPROX_MIN_OPEN points, points all on
+ * a line, a fit that fails),
  * LOFT_ENOCONV (the tolerance not met in o->maxround rounds or with
  * every span too short to split: info->dist and info->where say what
  * was reached, err->row is that point; nothing in seg), LOFT_ENOMEM.

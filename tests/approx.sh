@@ -548,4 +548,23 @@ else
 	echo "skip: splinefit -e on noisy glyphs (no python3 with scipy and fontTools, or no fonts)"
 fi
 
+# ---- a fit whose corners found leave it astray (issue 23): contour 15
+# of the next 100 of that corpus (a Linux Libertine w, 400 points,
+# sigma 0.73).  With the 23 corners found the fit crossed itself and
+# strayed 84.6 sigmas from the true outline after every try; the fit
+# without them passes both checks, and it is now written: within 6
+# sigmas and not crossing itself.
+if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
+    "$PY" tests/glyphs.py "$T/h.knots" "$T/h.truth" 200 2>"$T/h.err" &&
+    [ "$(grep -c '^points' "$T/h.knots")" = 200 ]; then
+	awk -v RS= -v ORS='\n\n' 'NR > 100' "$T/h.truth" >"$T/h2.truth"
+	"$PY" tests/bench/glyphs_noisy.py --check 15 "$T/h2.truth" \
+	    >"$T/hstray" 2>&1
+	awk '{ n++; if ($1 != "15" || $2 != "0" || !($3 <= 6)) bad++ }
+	    END { exit !(n == 1 && !bad) }' "$T/hstray" && ok ||
+	    no "the w astray (contour, crosses, sigmas): $(cat "$T/hstray")"
+else
+	echo "skip: splinefit -e on a noisy glyph astray (no python3 with scipy and fontTools, or fewer than 200 contours)"
+fi
+
 finish approx
