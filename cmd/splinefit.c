@@ -389,8 +389,7 @@ approx_smooth(struct opts *o, const struct loft_record *rec,
 	struct loft_approx_opts so = *ao;
 	struct loft_approx_info si;
 	struct loft_error se;
-	size_t size = 4 * (size_t)rec->ncols * rec->nrows * sizeof *o->seg;
-	double *seg = malloc(size);
+	double *seg = malloc(4 * (size_t)rec->ncols * rec->nrows * sizeof *seg);
 	int rc;
 
 	if (seg == NULL)
