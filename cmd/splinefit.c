@@ -448,6 +448,9 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 		    "of line %ld", rec->file, rec->line, rec->nrows,
 		    info.nknots, info.dist, o->approx,
 		    loft_row_line(rec, (long)info.where));
+		if (info.astray > 0)
+			fprintf(run->msg, ", %zu span%s astray", info.astray,
+			    info.astray == 1 ? "" : "s");
 		measures(run->msg, o->seg, info.nseg, dim, fit->closed);
 		fputc('\n', run->msg);
 	}

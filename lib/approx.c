@@ -719,6 +719,17 @@ polyline_foot(const struct work *w, size_t j, const double *x, double *f)
 	return best;
 }
 
+/* The largest distance on each span, from the points' feet. */
+static void
+span_max(struct work *w)
+{
+	for (size_t j = 0; j < nseg_of(w); j++)
+		w->spanmax[j] = 0;
+	for (size_t i = 0; i < w->n; i++)
+		if (w->dist[i] > w->spanmax[w->fj[i]])
+			w->spanmax[w->fj[i]] = w->dist[i];
+}
+
 /* Mark (APPROX_FORCE in spanmax) each span that strays from the
  * points' polyline; returns how many. */
 static size_t
@@ -830,7 +841,9 @@ crossing_spans(struct work *w)
 }
 
 /* Both checks once every point is within the tolerance: the spans that
- * stray or cross, marked; how many. */
+ * stray or cross, marked; how many.  The marks of an earlier check are
+ * cleared first (from the points' feet, as fit_project left them), or
+ * a span still astray from then would not be counted. */
 static size_t
 check_spans(struct work *w, double worst)
 {
@@ -838,6 +851,7 @@ check_spans(struct work *w, double worst)
 
 	if (worst > w->tol)
 		return 0;
+	span_max(w);
 	bad = stray_spans(w);
 	return bad + crossing_spans(w);
 }
@@ -1017,17 +1031,6 @@ local_sweeps(struct work *w, size_t c, double *ss)
 			return HUGE_VAL;
 	}
 	return worst;
-}
-
-/* The largest distance on each span, from the points' feet. */
-static void
-span_max(struct work *w)
-{
-	for (size_t j = 0; j < nseg_of(w); j++)
-		w->spanmax[j] = 0;
-	for (size_t i = 0; i < w->n; i++)
-		if (w->dist[i] > w->spanmax[w->fj[i]])
-			w->spanmax[w->fj[i]] = w->dist[i];
 }
 
 /* Whether knot j may be removed: free, not an end, and more left than

@@ -3,7 +3,7 @@
 beside potrace tracing the same points rasterised.
 
     glyphs_noisy.py TRUTH WORKDIR [KNOTS]
-    glyphs_noisy.py --check K,K... TRUTH
+    glyphs_noisy.py --check K,K... TRUTH [OPTION...]
 
 TRUTH: the designer's outlines of tests/glyphs.py (200 points a
 segment); KNOTS: its knot records, whose corners= name the true
@@ -23,11 +23,12 @@ splinefit also the true corners kept (a corner= joint of the fit within
 corners (a corner= joint farther than 2 TOL from every true corner the
 outline has).
 
-With --check, only contours K (from 0) are fitted, by splinefit -e,
-and a line is printed for each: K, whether the curve crosses itself
-(1) or not (0), and its Hausdorff distance to the true outline in
-sigmas, its curve sampled densely enough (a quarter sigma apart) for
-that distance to be the curve's, not its samples'."""
+With --check, only contours K (from 0) are fitted, by splinefit -e
+(and the OPTIONs), and a line is printed for each: K, whether the
+curve crosses itself (1) or not (0), its Hausdorff distance to the
+true outline in sigmas (its curve sampled densely enough, a quarter
+sigma apart, for that distance to be the curve's, not its samples'),
+and the spans splinefit -v says are astray (0 where it says none)."""
 import math
 import os
 import random
@@ -248,26 +249,29 @@ def splinefit(opt, pts, sigma):
                           capture_output=True, text=True)
 
 
-def check(which, truth):
-    """The --check lines for contours which."""
+def check(which, truth, opt):
+    """The --check lines for contours which, fitted with opt."""
     rng = random.Random(23)
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         if k not in which:
             continue
-        fit = splinefit([], pts, sigma)
+        fit = splinefit(["-v"] + opt, pts, sigma)
         if fit.returncode != 0:
             print(k, "fails:", fit.stderr.strip())
             continue
         rows = records(fit.stdout)[0][1]
+        astray = re.search(r"(\d+) spans? astray", fit.stderr)
         print(k, int(crosses(hermite(rows))),
-              "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma))
+              "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma),
+              astray.group(1) if astray else 0)
 
 
 def main():
     if sys.argv[1] == "--check":
         check([int(x) for x in sys.argv[2].split(",")],
-              [r for _, r in records(open(sys.argv[3]).read())])
+              [r for _, r in records(open(sys.argv[3]).read())],
+              sys.argv[4:])
         return
     truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
