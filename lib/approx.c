@@ -65,6 +65,9 @@
  * APPROX_TRY_SWEEPS sweeps over the points on them. */
 #define APPROX_REMOVE_MAX 256
 #define APPROX_WINDOW 2
+/* A loop the crossing check finds is cut (its knots removed) where it
+ * takes this many knots at most. */
+#define APPROX_LOOP_KNOTS 8
 #define APPROX_TRY_SWEEPS 4
 
 /* A removal is kept only where the squares of the distances of the
@@ -72,8 +75,9 @@
  * the noise (estimated by the mean square distance of all the points):
  * a knot the points do not ask for adds about one or two variances (a
  * chi-square of one or two degrees of freedom, which passes 16 once in
- * some thousands); one they ask for adds many.  So the knots that stay are those the points show a need of,
- * and the curve keeps to the outline rather than using the tolerance. */
+ * some thousands); one they ask for adds many.  So the knots that stay
+ * are those the points show a need of, and the curve keeps to the
+ * outline rather than using the tolerance. */
 #define APPROX_NEED 16.0
 
 /* A run of curvature of one sign between two inflexions is a wiggle
@@ -122,7 +126,9 @@ struct work {
 	double *k, *acc, *wsum; /* knots; a sweep's sums */
 	unsigned char *fixed;   /* corners stay where they are */
 	size_t *corner, nc;     /* knots that are corners */
-	size_t *kidx;           /* the first knots' points */
+	size_t *kidx;           /* the first knots' points; then scratch:
+	                         * split's counts, the check's points on
+	                         * each span */
 	double *seg;            /* the curve through the knots */
 	double *pow;            /* its spans in powers of u */
 	double *spanmax;        /* the largest distance on each span */
@@ -130,6 +136,7 @@ struct work {
 	double *sk, *sseg, *sfu;        /* a try's saved knots, curve, feet */
 	size_t *sfj;
 	unsigned char *sfixed, *tried, *near;  /* near: points of a try */
+	unsigned char *cut;     /* knots inside a loop the check found */
 	unsigned char *stried;
 	double *sdist;
 	size_t sm0;
@@ -168,6 +175,7 @@ work_free(struct work *w)
 	free(w->near);
 	free(w->stried);
 	free(w->sdist);
+	free(w->cut);
 }
 
 static int
@@ -201,11 +209,12 @@ work_alloc(struct work *w, size_t n, int dim)
 	w->near = malloc(n);
 	w->stried = malloc(m);
 	w->sdist = malloc(n * sizeof *w->sdist);
+	w->cut = malloc(m);
 	return w->qbuf && w->sm && w->s && w->fj && w->fu && w->dist && w->k &&
 	    w->acc && w->wsum && w->fixed && w->corner && w->kidx && w->seg &&
 	    w->spanmax && w->eoff && w->elist && w->pow && w->sk && w->sseg &&
 	    w->sfu && w->sfj && w->sfixed &&
-	    w->tried && w->near && w->stried && w->sdist ? 0 : -1;
+	    w->tried && w->near && w->stried && w->sdist && w->cut ? 0 : -1;
 }
 
 /* The checks of the counts and the tolerance, before any work: after
@@ -754,6 +763,34 @@ stray_spans(struct work *w)
 	return bad;
 }
 
+/* Spans ja and jb cross: the knots between them the shorter way round
+ * (APPROX_LOOP_KNOTS at most, all free) marked to cut, the curve there
+ * a loop no point asks for where the spans between hold fewer points
+ * (w->kidx) than APPROX_SPLIT_MIN each. */
+static void
+mark_loop(struct work *w, size_t ja, size_t jb)
+{
+	size_t ns = nseg_of(w), a = ja < jb ? ja : jb, b = ja < jb ? jb : ja;
+	size_t len = b - a, pts = 0, fresh = 0;
+
+	if (w->closed && ns - len < len) {      /* the way round the end */
+		a = b;
+		len = ns - len;
+	}
+	if (len == 0 || len > APPROX_LOOP_KNOTS)
+		return;
+	for (size_t t = 1; t <= len; t++) {
+		if (w->fixed[(a + t) % w->m])
+			return;
+		pts += t < len ? w->kidx[(a + t) % ns] : 0;
+		fresh += !w->cut[(a + t) % w->m];
+	}
+	if (fresh == 0 || pts >= APPROX_SPLIT_MIN * (len - 1) + (len == 1))
+		return;
+	for (size_t t = 1; t <= len; t++)
+		w->cut[(a + t) % w->m] = 1;
+}
+
 /* The self-crossing check of a plane curve: its polyline of
  * APPROX_STRAY_SAMPLES edges a span, filed in a grid; two edges, not
  * neighbours, that cross mark both their spans. */
@@ -792,6 +829,7 @@ edge_crosses(void *ctx, size_t f)
 		c->bad += (c->w->spanmax[ja] != APPROX_FORCE) +
 		    (c->w->spanmax[jb] != APPROX_FORCE && jb != ja);
 		c->w->spanmax[ja] = c->w->spanmax[jb] = APPROX_FORCE;
+		mark_loop(c->w, ja, jb);
 	}
 	return 0;
 }
@@ -852,6 +890,10 @@ check_spans(struct work *w, double worst)
 	if (worst > w->tol)
 		return 0;
 	span_max(w);
+	memset(w->cut, 0, w->m);
+	memset(w->kidx, 0, nseg_of(w) * sizeof *w->kidx);
+	for (size_t i = 0; i < w->n; i++)
+		w->kidx[w->fj[i]]++;
 	bad = stray_spans(w);
 	return bad + crossing_spans(w);
 }
@@ -1042,6 +1084,21 @@ removable(const struct work *w, size_t j)
 
 	return w->m > mins && !w->fixed[j] &&
 	    (w->closed || (j > 0 && j + 1 < w->m));
+}
+
+/* Remove the knots of the loops marked to cut (mark_loop), last first,
+ * while the curve keeps more knots than it needs; returns how many. */
+static size_t
+cut_loops(struct work *w)
+{
+	size_t cut = 0;
+
+	for (size_t r = w->m; r-- > 0;)
+		if (w->cut[r] && removable(w, r)) {
+			remove_knot(w, r);
+			cut++;
+		}
+	return cut;
 }
 
 static void
@@ -1954,8 +2011,8 @@ fair_wiggles(struct work *w)
 	f.kap = malloc(APPROX_FAIR_TS * sizeof *f.kap);
 	f.g = malloc(APPROX_FAIR_TS * APPROX_FAIR_KNOTS * sizeof *f.g);
 	if (on == NULL || f.pi == NULL || f.tsj == NULL || f.tsu == NULL ||
-	    f.nf == NULL || f.c0 == NULL || f.d == NULL || f.a == NULL || f.kap == NULL ||
-	    f.g == NULL) {
+	    f.nf == NULL || f.c0 == NULL || f.d == NULL || f.a == NULL ||
+	    f.kap == NULL || f.g == NULL) {
 		rc = -1;
 	} else {
 		for (;;) {
@@ -2158,6 +2215,13 @@ tidy(struct work *w, int *removed, double *worst, size_t *at, size_t *bad,
 		w->checks++;
 	if (*bad == (size_t)-1)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (*bad > 0 && cut_loops(w) > 0) {
+		if (fit_project(w, worst, at, err) != 0 ||
+		    settle(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+		if ((*bad = check_spans(w, *worst)) == (size_t)-1)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
 	return 0;
 }
 
