@@ -766,7 +766,7 @@ stray_spans(struct work *w)
 /* Spans ja and jb cross: the knots between them the shorter way round
  * (APPROX_LOOP_KNOTS at most, all free) marked to cut, the curve there
  * a loop no point asks for where the spans between hold fewer points
- * (w->kidx) than APPROX_SPLIT_MIN each. */
+ * in all (w->kidx) than APPROX_SPLIT_MIN times their count. */
 static void
 mark_loop(struct work *w, size_t ja, size_t jb)
 {
