@@ -258,6 +258,37 @@ loft__cspline_adjoint(const struct loft_fit_opts *o, const double *p,
 	}
 }
 
+/* The most a flat join's free end tangent may be, in chords: as far as
+ * fair.c lets any tangent grow (FAIR_MAXMAG), beyond which a curve
+ * swells out of its knots' reach. */
+#define CSPLINE_MAXMAG 3.0
+
+int
+loft__flat_join(const struct loft_fit_opts *o, const double *p, size_t n,
+    int dim, double *seg)
+{
+	const double *t = o->have_start ? o->start : o->end;
+	double u[LOFT_MAXDIM], g[LOFT_MAXDIM], r[LOFT_MAXDIM], c, cs;
+
+	if (o->closed || n != 2 || o->have_start == o->have_end ||
+	    !(o->have_start ? o->flat_start : o->flat_end))
+		return 1;
+	vsub(u, p + dim, p, dim);
+	vcopy(g, t, dim);
+	c = vunit(u, dim);
+	if (!(c > 0) || !(vunit(g, dim) > 0))
+		return 1;
+	cs = vdot(g, u, dim);
+	if (!(3 / (2 * cs) <= CSPLINE_MAXMAG))
+		return 1;
+	vscale(r, 2 * cs, u, dim);
+	vaxpy(r, -1, g, dim);
+	vcopy(seg, p, 2 * dim);
+	vscale(seg + (o->have_start ? 2 : 3) * dim, c, g, dim);
+	vscale(seg + (o->have_start ? 3 : 2) * dim, 3 * c / (2 * cs), r, dim);
+	return 0;
+}
+
 int
 loft__fit_cspline(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_error *err)
@@ -269,6 +300,10 @@ loft__fit_cspline(const struct loft_fit_opts *o, const double *p, size_t n,
 
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	if (loft__flat_join(o, p, n, dim, seg) == 0) {
+		free(mem);
+		return 0;
+	}
 	h = mem + 5 * n + n * dim;
 	for (size_t i = 0; i < nseg; i++)
 		h[i] = o->method == LOFT_CHORD ?

@@ -1906,6 +1906,10 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc;
 
+	if (loft__flat_join(o, p, n, dim, seg) == 0) {
+		info->converged = 1;        /* nothing to choose */
+		return 0;
+	}
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
 

@@ -378,6 +378,8 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 		po.nstraight = 0;
 		po.have_start = !o->closed && k == 0 && o->have_start;
 		po.have_end = !o->closed && k + 1 == npiece && o->have_end;
+		po.flat_start = po.have_start && o->flat_start;
+		po.flat_end = po.have_end && o->flat_end;
 		if (len == 2 && is_straight(o, a % n)) {
 			double *s = ps;
 
@@ -390,12 +392,12 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 			 * across a corner */
 			if ((o->closed || a > 0) && is_straight(o, (a + n - 1) %
 			    n) && !is_corner(o, a % n)) {
-				po.have_start = 1;
+				po.have_start = po.flat_start = 1;
 				span_direction(q, n, dim, a + n - 1, po.start);
 			}
 			if ((o->closed || b + 1 < n) && is_straight(o, b % n) &&
 			    !is_corner(o, b % n)) {
-				po.have_end = 1;
+				po.have_end = po.flat_end = 1;
 				span_direction(q, n, dim, b, po.end);
 			}
 			rc = fit_method(&po, pk, len, dim, ps, &pi, err);

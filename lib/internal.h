@@ -173,6 +173,24 @@ int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, double *seg, struct loft_error *err);
 
 /*
+ * cspline.c: a span alone between a straight run (its tangent given,
+ * o->flat_start or o->flat_end) and a free end (a corner's), n 2, met
+ * G2 at the run, as Spiro's `[' `]' points meet theirs.  The chord
+ * spline has there the given unit tangent g times the chord c, and at
+ * the free end g's mirror in the chord r = 2 (g.u) u - g times c, u the
+ * unit chord: G1.  Here the free end's is r times 3 c / (2 g.u), which
+ * turns P''(0) = 6 c u - 4 c g - 2 |P'(1)| r along g: curvature 0 at
+ * the run.  Its Bezier points are A, A + c g / 3, the meeting of the
+ * two end tangents' lines, and B: a convex polygon turning by twice the
+ * angle of g from the chord, so the curve never loops.  Only where g
+ * is within 60 degrees of the chord (that magnitude at most
+ * CSPLINE_MAXMAG chords); past it the join stays G1.  The segment into
+ * seg; 0, or 1 where it does not apply (then seg is untouched).
+ */
+int loft__flat_join(const struct loft_fit_opts *o, const double *p,
+    size_t n, int dim, double *seg);
+
+/*
  * cspline.c: the spline of continuous first derivatives with parameter
  * intervals h (one per segment, positive) whose second derivative at
  * knot i jumps along the tangent so that the system's diagonal is

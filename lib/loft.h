@@ -261,6 +261,9 @@ struct loft_fit_opts {
 	size_t nstraight;
 	int split;              /* LOFT_FAIR: a span may be several segments
 	                         * (see loft_fit) */
+	int flat_start, flat_end;       /* open curves: the given end tangent
+	                         * is a straight run's, which the curve
+	                         * meets with curvature 0 where it can */
 };
 
 /* With loft_fit_opts.split, LOFT_FAIR may write a closed plane record
@@ -315,8 +318,12 @@ int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
  * knot i to knot i + 1, the last of a closed curve back to knot 0) are
  * straight lines, and the curve on either side of one is fitted as an
  * open curve whose end tangent there is the line's direction: the
- * tangent is continuous where a straight run meets a curve (G1), the
- * curvature jumps from 0 to the curve's.  Corners go with them.
+ * tangent is continuous where a straight run meets a curve (G1).  A
+ * span alone between a straight run and a corner (a stem's bracket into
+ * a serif) meets the run with curvature 0 too (G2, as Spiro's `[' `]'
+ * points) where the run's direction is within 60 degrees of the span's
+ * chord, except under LOFT_MANNING; elsewhere the curvature jumps from
+ * 0 to the curve's.  Corners go with them.
  */
 
 /*

@@ -269,6 +269,22 @@ for c in "" -o; do
 	$E "$T/st.cubic" | awk '{ exit !($5 < 1e-9) }' && ok ||
 	    no "$what: tangent jumps: $($E "$T/st.cubic")"
 done
+# A span alone between a straight run and a corner (a stem's bracket
+# into a serif) meets the run G2, as Spiro's [ ] points do: tangent
+# along the line and curvature 0 there.  The curvature of the cubic at
+# u = 0 is |P'(0) x P''(0)| / |P'(0)|^3, P''(0) = 6 (B - A) - 4 P'(0) -
+# 2 P'(1); the G1 join loft made before had it 1.4 here.  The span
+# from corner 5 meets its run at 90 degrees to its chord, where no tame
+# cubic is G2, and stays G1: its end tangent along the run.
+printf 'points corners=3,4,5 straight=1\n0 0\n0 4\n1 5\n-2 5\n-2 0\n' |
+    $B/splinefit >"$T/br.cubic"
+awk 'NR == 3 { ax = 6 * ($3 - $1) - 4 * $5 - 2 * $7
+	ay = 6 * ($4 - $2) - 4 * $6 - 2 * $8; v = sqrt($5 * $5 + $6 * $6)
+	k = ($5 * ay - $6 * ax) / (v * v * v)
+	exit !($5 == 0 && $6 > 0 && k * k < 1e-20) }' "$T/br.cubic" && ok ||
+    no "the bracket does not meet its run G2: $(sed -n 3p "$T/br.cubic")"
+awk 'NR == 6 { exit !($7 == 0 && $8 > 0) }' "$T/br.cubic" && ok ||
+    no "the span at 90 degrees: not G1: $(sed -n 6p "$T/br.cubic")"
 # A straight span whose knot is a corner too gives the piece beyond the
 # corner no direction (a Z's diagonal between its corners stays the
 # straight line between them, as any span between neighbouring corners
