@@ -1861,6 +1861,82 @@ open_spiral(struct fair *f, struct best *b, double *h)
 	return judge_segs(f, b, NULL, h, f->seg, ns);
 }
 
+/* Whether the best curve found crosses itself (plane curves); -1 out
+ * of memory.  Its segments are left in f->seg. */
+static int
+best_crosses(struct fair *f, struct best *b, double *h)
+{
+	struct loft_error err;
+	const double *seg = f->seg;
+	size_t nseg = f->nseg;
+
+	if (b->found == 2) {
+		seg = b->sseg;
+		nseg = b->nsseg;
+	} else if (b->found == 0) {
+		if (chord_spline(f, b, h) != 0)
+			return 0;
+		seg = b->cseg;
+	} else {
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = exp(b->x[s]);
+		if (loft__cspline_h(f->o, f->p, f->n, f->dim, h, b->x +
+		    f->nseg, f->seg, f->work, &err) != 0)
+			return 0;
+	}
+	return loft_fit_crosses(seg, nseg, f->o->closed);
+}
+
+/*
+ * Where the best open curve (a piece of an outline between corners or
+ * straight runs) crosses itself, as it may where the chord spline does
+ * (a glyph's thin stem between sparse knots beside a dense serif: each
+ * long span's tangents lean to the short span beside it, and the two
+ * sides of the stem bulge into each other): the descent from the
+ * centripetal spline's intervals (the square roots of the chords, which
+ * lean them less), and then that spline itself, each kept if it does
+ * not cross itself, passes judge's other tests and, beside a corner (a
+ * free end), swells nowhere past what unswell allows, whatever its E L
+ * (between two straight runs a stem may swell from its chord where the
+ * chord spline's crossed it).
+ * Not on closed records: on make compare's 300 sets, where a curve
+ * crosses itself only where the chord spline does, the curves it kept
+ * had up to 2.72 times the energy of the fairest peer's, and on 4 sets
+ * a bend more than twice as sharp as Spiro's.  0, or -1 out of memory.
+ */
+static int
+uncross(struct fair *f, struct best *b, double *x, double *h, double *v)
+{
+	int cross = f->dim == 2 ? best_crosses(f, b, h) : 0, loops;
+	double score = b->score, e = b->e, least = b->least, en = 0;
+	struct loft_error err;
+
+	if (cross <= 0)
+		return cross;
+	loops = b->chord_loops;
+	b->chord_loops = 0;             /* no crossing passes */
+	for (int pass = 0; pass < 2 && b->score == score; pass++) {
+		start_intervals(f, START_CENTRIPETAL, x);
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = exp(x[s]);
+		if (pass == 0)
+			descend(f, x, h, v, &en);
+		for (size_t s = 0; s < f->nseg; s++)
+			h[s] = exp(x[s]);
+		if (!(en < HUGE_VAL) || loft__cspline_h(f->o, f->p, f->n,
+		    f->dim, h, x + f->nseg, f->seg, f->work, &err) != 0 ||
+		    (!(f->o->have_start && f->o->have_end) && swells(f, b)))
+			continue;
+		b->score = b->e = HUGE_VAL;
+		if (judge(f, b, x, h) != 0)
+			return -1;
+		if (b->score == HUGE_VAL)       /* not kept */
+			b->score = score, b->e = e, b->least = least;
+	}
+	b->chord_loops = loops;
+	return 0;
+}
+
 /*
  * From the chord spline in f->seg (its E in f->e0), the quick descent,
  * judged; then a closed record few or sharp enough searched thoroughly,
@@ -1886,6 +1962,9 @@ search(struct fair *f, struct best *b, double *x, double *h, double *v,
 		more = thorough(f, b, x, h, v);
 	if (more >= 0 && !o->closed && (unswell(f, b, v, h) < 0 ||
 	    (!o->quick && open_spiral(f, b, h) < 0)))
+		more = -1;
+	if (more >= 0 && !o->closed && !o->quick && uncross(f, b, x, h, v) <
+	    0)
 		more = -1;
 	if (more >= 0)
 		info->iterations += more;

@@ -285,6 +285,18 @@ awk 'NR == 3 { ax = 6 * ($3 - $1) - 4 * $5 - 2 * $7
     no "the bracket does not meet its run G2: $(sed -n 3p "$T/br.cubic")"
 awk 'NR == 6 { exit !($7 == 0 && $8 > 0) }' "$T/br.cubic" && ok ||
     no "the span at 90 degrees: not G1: $(sed -n 6p "$T/br.cubic")"
+# A stem 40 wide and 400 tall between knots 45 degrees off it at either
+# end, its foot straight: the chord spline leans each long side's
+# tangents to the short span beside it, and the two sides bulge across
+# each other.  The default must not cross itself (as a glyph's stem
+# between a sparse pair of knots did; splinefit before this check
+# crossed here), and the chord spline must, or the case tests nothing.
+printf 'points straight=1\n0 0\n80 0\n60 20\n40 40\n40 440\n30 455\n10 455
+0 440\n0 40\n-20 20\n' >"$T/stem.knots"
+f=$($B/splinefit "$T/stem.knots" | crossings)
+c=$($B/splinefit -m chord "$T/stem.knots" | crossings)
+[ "$f" -eq 0 ] && [ "$c" -gt 0 ] && ok ||
+    no "the stem: $f crossings (the chord spline $c)"
 # A straight span whose knot is a corner too gives the piece beyond the
 # corner no direction (a Z's diagonal between its corners stays the
 # straight line between them, as any span between neighbouring corners
