@@ -40,6 +40,22 @@ if $P -c 'import fontTools, scipy' 2>/dev/null &&
 	$P tests/bench/glyphs_cmp.py $W/glyphs.truth default $W/g-def.pts \
 	    "default, no straight=" $W/g-ns.pts "-m manning" $W/g-man.pts \
 	    "-m chord" $W/g-chord.pts
+	# held out: four other faces of the same packages, which no rule
+	# of splinefit was measured on while it was made: the same table
+	F=/usr/share/fonts
+	if $P tests/glyphs.py $W/held.knots $W/held.truth 400 \
+	    $F/truetype/freefont/FreeSerifItalic.ttf \
+	    $F/truetype/freefont/FreeSans.ttf \
+	    $F/opentype/linux-libertine/LinBiolinum_R.otf \
+	    $F/opentype/ebgaramond/EBGaramond12-Italic.otf 2>/dev/null &&
+	    [ -s $W/held.knots ]; then
+		bin/splinefit $W/held.knots 2>/dev/null | bin/sample -n 50 \
+		    >$W/h-def.pts
+		echo
+		echo "held-out glyph contours (FreeSerif Italic, FreeSans," \
+		    "Linux Biolinum, EB Garamond Italic)"
+		$P tests/bench/glyphs_cmp.py $W/held.truth default $W/h-def.pts
+	fi
 else
 	echo "compare: glyphs skipped: no /usr/bin/python3 with fontTools and" \
 	    "scipy, or no font ($(cat $W/glyphs.err 2>/dev/null))"
