@@ -1899,6 +1899,8 @@ best_crosses(struct fair *f, struct best *b, double *h)
  * free end), swells nowhere past what unswell allows, whatever its E L
  * (between two straight runs a stem may swell from its chord where the
  * chord spline's crossed it).
+ * With o->untangle (the pieces of a curve cross one another, each
+ * uncrossed) every open piece has them tried so.
  * Not on closed records: on make compare's 300 sets, where a curve
  * crosses itself only where the chord spline does, the curves it kept
  * had up to 2.72 times the energy of the fairest peer's, and on 4 sets
@@ -1907,7 +1909,8 @@ best_crosses(struct fair *f, struct best *b, double *h)
 static int
 uncross(struct fair *f, struct best *b, double *x, double *h, double *v)
 {
-	int cross = f->dim == 2 ? best_crosses(f, b, h) : 0, loops;
+	int cross = f->dim != 2 ? 0 : f->o->untangle ? 1 : best_crosses(f,
+	    b, h), loops;
 	double score = b->score, e = b->e, least = b->least, en = 0;
 	struct loft_error err;
 

@@ -416,6 +416,40 @@ fit_pieces(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
 	return rc;
 }
 
+/*
+ * fit_pieces, and where the default's pieces of a plane curve cross
+ * one another (none crosses itself: fair.c's uncross sees to that),
+ * fitted again with o->untangle, each piece the centripetal start's
+ * curve where that passes fair.c's checks; that curve is written where
+ * it does not cross itself.  (EB Garamond Italic's m and n: the sides
+ * of a stem, in pieces of their own between straight runs, bulged
+ * across each other.)  Not for splinefit -e's trial fits (o->quick).
+ */
+static int
+fit_untangled(const struct loft_fit_opts *o, const double *q, size_t n,
+    int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
+{
+	size_t nseg = o->closed ? n : n - 1;
+	struct loft_fit_opts uo = *o;
+	struct loft_fit_info ui = { 0 };
+	struct loft_error ue;
+	double *alt;
+	int rc = fit_pieces(o, q, n, dim, seg, info, err), x;
+
+	if (rc != 0 || o->method != LOFT_FAIR || o->quick || o->untangle ||
+	    dim != 2 || (x = loft_fit_crosses(seg, nseg, o->closed)) == 0)
+		return rc;
+	if (x < 0 || (alt = malloc(4 * dim * n * sizeof *alt)) == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	uo.untangle = 1;
+	x = fit_pieces(&uo, q, n, dim, alt, &ui, &ue) == 0 ?
+	    loft_fit_crosses(alt, nseg, o->closed) : 1;
+	if (x == 0)
+		memcpy(seg, alt, 4 * dim * nseg * sizeof *seg);
+	free(alt);
+	return x < 0 ? loft_fail(err, LOFT_ENOMEM, -1, "out of memory") : 0;
+}
+
 int
 loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -436,7 +470,7 @@ loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
 	e = unit_box(p, n, dim, q);
 	rc = loft__check_knots(o, q, n, dim, err);
 	if (rc == 0 && (o->ncorner > 0 || o->nstraight > 0))
-		rc = fit_pieces(o, q, n, dim, seg, info, err);
+		rc = fit_untangled(o, q, n, dim, seg, info, err);
 	else if (rc == 0)
 		rc = fit_method(o, q, n, dim, seg, info, err);
 	free(q);

@@ -264,6 +264,9 @@ struct loft_fit_opts {
 	int flat_start, flat_end;       /* open curves: the given end tangent
 	                         * is a straight run's, which the curve
 	                         * meets with curvature 0 where it can */
+	int untangle;           /* LOFT_FAIR, open: the centripetal start's
+	                         * curve where it passes the checks (loft_fit
+	                         * sets it where pieces cross each other) */
 };
 
 /* With loft_fit_opts.split, LOFT_FAIR may write a closed plane record
@@ -323,7 +326,10 @@ int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
  * a serif) meets the run with curvature 0 too (G2, as Spiro's `[' `]'
  * points) where the run's direction is within 60 degrees of the span's
  * chord, except under LOFT_MANNING; elsewhere the curvature jumps from
- * 0 to the curve's.  Corners go with them.
+ * 0 to the curve's.  Corners go with them.  Under LOFT_FAIR (not
+ * o->quick) in the plane, where the pieces cross one another, each is
+ * fitted again with o->untangle, and that curve is written where it
+ * does not cross itself.
  */
 
 /*

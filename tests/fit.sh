@@ -297,6 +297,16 @@ f=$($B/splinefit "$T/stem.knots" | crossings)
 c=$($B/splinefit -m chord "$T/stem.knots" | crossings)
 [ "$f" -eq 0 ] && [ "$c" -gt 0 ] && ok ||
     no "the stem: $f crossings (the chord spline $c)"
+# The same, 60 wide, its top straight too: each side is a piece of its
+# own between two straight runs, and neither crosses itself, but the
+# chord spline's sides cross each other (as did the default's before
+# loft_fit refitted such pieces together).
+printf 'points straight=1,6\n0 0\n100 0\n80 20\n60 40\n60 440\n50 455
+10 455\n0 440\n0 40\n-20 20\n' >"$T/stem2.knots"
+f=$($B/splinefit "$T/stem2.knots" | crossings)
+c=$($B/splinefit -m chord "$T/stem2.knots" | crossings)
+[ "$f" -eq 0 ] && [ "$c" -gt 0 ] && ok ||
+    no "the stem in two pieces: $f crossings (the chord spline $c)"
 # A straight span whose knot is a corner too gives the piece beyond the
 # corner no direction (a Z's diagonal between its corners stays the
 # straight line between them, as any span between neighbouring corners
