@@ -279,7 +279,7 @@ loft__flat_join(const struct loft_fit_opts *o, const double *p, size_t n,
 	if (!(c > 0) || !(vunit(g, dim) > 0))
 		return 1;
 	cs = vdot(g, u, dim);
-	if (!(3 / (2 * cs) <= CSPLINE_MAXMAG))
+	if (!(2 * cs * CSPLINE_MAXMAG >= 3))    /* also g away from u */
 		return 1;
 	vscale(r, 2 * cs, u, dim);
 	vaxpy(r, -1, g, dim);

@@ -285,6 +285,14 @@ awk 'NR == 3 { ax = 6 * ($3 - $1) - 4 * $5 - 2 * $7
     no "the bracket does not meet its run G2: $(sed -n 3p "$T/br.cubic")"
 awk 'NR == 6 { exit !($7 == 0 && $8 > 0) }' "$T/br.cubic" && ok ||
     no "the span at 90 degrees: not G1: $(sed -n 6p "$T/br.cubic")"
+# Nor where the run points away from the span's chord (135 degrees):
+# the corner's tangent is the run's mirrored in the chord, (-1, 0),
+# as the chord spline has it, never turned back.
+printf 'points corners=3,4,5 straight=1\n0 0\n0 4\n1 3\n-2 5\n-2 0\n' |
+    $B/splinefit >"$T/br2.cubic"
+awk 'NR == 3 { exit !($5 == 0 && $6 > 0 && $7 < 0 && $8 * $8 < 1e-20) }' \
+    "$T/br2.cubic" && ok ||
+    no "the span back from its run: $(sed -n 3p "$T/br2.cubic")"
 # A stem 40 wide and 400 tall between knots 45 degrees off it at either
 # end, its foot straight: the chord spline leans each long side's
 # tangents to the short span beside it, and the two sides bulge across
