@@ -258,11 +258,6 @@ loft__cspline_adjoint(const struct loft_fit_opts *o, const double *p,
 	}
 }
 
-/* The most a flat join's free end tangent may be, in chords: as far as
- * fair.c lets any tangent grow (FAIR_MAXMAG), beyond which a curve
- * swells out of its knots' reach. */
-#define CSPLINE_MAXMAG 3.0
-
 int
 loft__flat_join(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg)
@@ -279,7 +274,7 @@ loft__flat_join(const struct loft_fit_opts *o, const double *p, size_t n,
 	if (!(c > 0) || !(vunit(g, dim) > 0))
 		return 1;
 	cs = vdot(g, u, dim);
-	if (!(2 * cs * CSPLINE_MAXMAG >= 3))    /* also g away from u */
+	if (!(2 * cs * LOFT__MAXMAG >= 3))    /* also g away from u */
 		return 1;
 	vscale(r, 2 * cs, u, dim);
 	vaxpy(r, -1, g, dim);
@@ -300,10 +295,6 @@ loft__fit_cspline(const struct loft_fit_opts *o, const double *p, size_t n,
 
 	if (mem == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	if (loft__flat_join(o, p, n, dim, seg) == 0) {
-		free(mem);
-		return 0;
-	}
 	h = mem + 5 * n + n * dim;
 	for (size_t i = 0; i < nseg; i++)
 		h[i] = o->method == LOFT_CHORD ?

@@ -60,11 +60,6 @@
  * steps after gain less than the eye can tell, and cost as much. */
 #define FAIR_SETTLED 1e-4
 
-/* No tangent vector longer than this many times its segment's chord: a
- * curve's energy falls as it grows (a circle's is 2 pi / R), so a
- * descent left free would swell loops out of the knots' reach. */
-#define FAIR_MAXMAG 3.0
-
 /* Nowhere slower than this fraction of the chord (at the quadrature
  * points), or than the chord spline where it is slower: a cubic that
  * nearly stops bends sharply there, in a spike the quadrature can miss. */
@@ -205,14 +200,14 @@ segment_energy(const double *s, int dim, int pieces, double *g, double *k2max,
 	    energy_body(s, dim, pieces, g, k2max, slow, len);
 }
 
-/* Whether every tangent vector of the segments is within FAIR_MAXMAG
+/* Whether every tangent vector of the segments is within LOFT__MAXMAG
  * chords. */
 static int
 tame(const double *seg, size_t nseg, int dim)
 {
 	for (size_t s = 0; s < nseg; s++) {
 		const double *q = seg + s * 4 * dim;
-		double w = FAIR_MAXMAG * vdist(q + dim, q, dim);
+		double w = LOFT__MAXMAG * vdist(q + dim, q, dim);
 
 		if (!(vnorm(q + 2 * dim, dim) <= w && vnorm(q + 3 * dim, dim) <= w))
 			return 0;
@@ -1071,7 +1066,7 @@ newton_step(struct angles *a, double big)
 }
 
 /* The samples of the scan for g2_magnitudes' roots, over tangent
- * magnitudes from 0 to FAIR_MAXMAG chords: fine enough to part the
+ * magnitudes from 0 to LOFT__MAXMAG chords: fine enough to part the
  * roots of the quartic a cubic's two ends make. */
 #define SPIRAL_SCAN 256
 
@@ -1100,7 +1095,7 @@ static int
 g2_magnitudes(double c, double psi0, double psi1, double k0, double k1,
     double len, double *a, double *b)
 {
-	double s01 = sin(psi1 - psi0), top = FAIR_MAXMAG * c, best = HUGE_VAL;
+	double s01 = sin(psi1 - psi0), top = LOFT__MAXMAG * c, best = HUGE_VAL;
 	double a0 = 0, b0, g0;
 
 	if (!(fabs(s01) > 1e-6))
@@ -1911,7 +1906,7 @@ uncross(struct fair *f, struct best *b, double *x, double *h, double *v)
 {
 	int cross = f->dim != 2 ? 0 : f->o->untangle ? 1 : best_crosses(f,
 	    b, h), loops;
-	double score = b->score, e = b->e, least = b->least, en = 0;
+	double score = b->score, e = b->e, least = b->least;
 	struct loft_error err;
 
 	if (cross <= 0)
@@ -1919,9 +1914,9 @@ uncross(struct fair *f, struct best *b, double *x, double *h, double *v)
 	loops = b->chord_loops;
 	b->chord_loops = 0;             /* no crossing passes */
 	for (int pass = 0; pass < 2 && b->score == score; pass++) {
+		double en = 0;          /* pass 1: the start as it is */
+
 		start_intervals(f, START_CENTRIPETAL, x);
-		for (size_t s = 0; s < f->nseg; s++)
-			h[s] = exp(x[s]);
 		if (pass == 0)
 			descend(f, x, h, v, &en);
 		for (size_t s = 0; s < f->nseg; s++)
@@ -1988,10 +1983,6 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 	double *mem, *x, *h, *v, e, len, flen, kmax, slow, fine, chords = 0;
 	int rc;
 
-	if (loft__flat_join(o, p, n, dim, seg) == 0) {
-		info->converged = 1;        /* nothing to choose */
-		return 0;
-	}
 	if (n > FAIR_MAXKNOTS) {        /* the chord spline, in its memory */
 		struct loft_fit_opts co = *o;
 

@@ -266,13 +266,19 @@ unit_box(const double *p, size_t n, int dim, double *q)
 	return e;
 }
 
-/* One curve without corners, by o->method, of knots already scaled. */
+/* One curve without corners, by o->method, of knots already scaled: a
+ * lone span beside a straight run met G2 (loft__flat_join) by every
+ * method but Manning's, the chord spline there being that curve too. */
 static int
 fit_method(const struct loft_fit_opts *o, const double *q, size_t n, int dim,
     double *seg, struct loft_fit_info *info, struct loft_error *err)
 {
 	if (o->method == LOFT_MANNING)
 		return loft__fit_manning(o, q, n, dim, seg, info, err);
+	if (loft__flat_join(o, q, n, dim, seg) == 0) {
+		info->converged = 1;
+		return 0;
+	}
 	if (o->method == LOFT_FAIR)
 		return loft__fit_fair(o, q, n, dim, seg, info, err);
 	info->converged = 1;

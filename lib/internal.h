@@ -172,6 +172,12 @@ int loft__fit_manning(const struct loft_fit_opts *o, const double *p,
 int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
     size_t n, int dim, double *seg, struct loft_error *err);
 
+/* No tangent vector of a fit longer than this many times its chord: a
+ * curve's energy falls as it grows (a circle's is 2 pi / R), so a fair
+ * descent left free would swell loops out of the knots' reach, and a
+ * flat join past it would swell as far. */
+#define LOFT__MAXMAG 3.0
+
 /*
  * cspline.c: a span alone between a straight run (its tangent given,
  * o->flat_start or o->flat_end) and a free end (a corner's), n 2, met
@@ -184,7 +190,7 @@ int loft__fit_cspline(const struct loft_fit_opts *o, const double *p,
  * two end tangents' lines, and B: a convex polygon turning by twice the
  * angle of g from the chord, so the curve never loops.  Only where g
  * is within 60 degrees of the chord (that magnitude at most
- * CSPLINE_MAXMAG chords); past it the join stays G1.  The segment into
+ * LOFT__MAXMAG chords); past it the join stays G1.  The segment into
  * seg; 0, or 1 where it does not apply (then seg is untouched).
  */
 int loft__flat_join(const struct loft_fit_opts *o, const double *p,
