@@ -16,11 +16,15 @@
  * it into two lines that fits them best, or three lines (two corners)
  * where that fits them better by more than the noise explains; a turn
  * that a quadratic curve fits as well is a smooth bend after all.
- * Other turns within the scale of a corner so settled are its echoes.  A
- * single corner's knot goes where the lines either side meet, which on
- * sparse points is seldom a point.  Dense points (hundreds within the
- * scale) are first averaged in runs: a line through the averages leans
- * the same way, and the search then costs as on sparser points.
+ * Other turns within the scale of a corner so settled are its echoes.
+ * Each corner must turn by the sharp angle between the lines settled
+ * either side of it.  A corner's knot goes where the lines either side
+ * of it meet, which on sparse points is seldom a point; so do the knots
+ * of two corners close together, where the line through the points
+ * between them fits better than the chord between two points.  Dense
+ * points (hundreds within the scale) are first averaged in runs: a line
+ * through the averages leans the same way, and the search then costs
+ * as on sparser points.
  */
 #include <stdlib.h>
 
@@ -40,6 +44,11 @@
  * smooth bend, twice as much: a turn is a corner only where the turn
  * over twice the scale is at most this many times it. */
 #define CORNER_CONCENTRATED 1.2
+
+/* But a turn over twice the scale of this much (radians, 115 degrees)
+ * and more, where half the scale turns about as much as the scale, is
+ * two corners closer than twice the scale: see bend. */
+#define CORNER_PAIR_TURN 2.0
 
 /* A turn is a corner only where it is this many times its standard
  * error, from the scatter of the points about the two lines: noise
@@ -75,9 +84,15 @@
  * than its nearer neighbour is: the true corner lies between the point
  * and its neighbours, and a sparse outline's points miss it by up to
  * half their spacing, which a corner at the point would cut.  (Two
- * corners close together stay at their points: the line between them
- * leans on too few.) */
+ * corners close together: see place_two.) */
 #define CORNER_MEET 0.01
+
+/* The turns found within the scale of a corner settled are its echoes,
+ * and are passed over, but for the outermost this many points either
+ * side: the second corner of the end of a serif or a stroke, a scale
+ * or less from the first, may settle there (and then must turn by
+ * CORNER_TURN as any corner must). */
+#define CORNER_ECHO 2
 
 /* The noise is taken as no less than this part of the tolerance, so
  * that points without noise still weigh a second corner. */
@@ -340,6 +355,19 @@ quad_ss(const struct outline *o, long lo, long hi)
 	return ss;
 }
 
+/* Whether the lines through points lo..a and a..hi turn by CORNER_TURN
+ * at least: a split that fits the points best, and a quadratic curve
+ * worse, may still turn by little (a bend beside a straight run). */
+static int
+turns(const struct outline *o, long lo, long a, long hi)
+{
+	struct line u, v;
+
+	return fit_line(o, lo, a - lo + 1, &u) &&
+	    fit_line(o, a, hi - a + 1, &v) &&
+	    angle(u.d, v.d, o->dim) >= CORNER_TURN;
+}
+
 /* A split of the points: one corner (a == b) or two (a and b), and
  * how well it fits them. */
 struct split {
@@ -399,7 +427,7 @@ settle(const struct outline *o, long i, long w, long m, double sigma,
 	}
 	*a = one.a;
 	*b = one.b;
-	return 1;
+	return turns(o, lo, one.a, hi);
 }
 
 /* Where lines u and v come nearest each other (the middle of their
@@ -442,6 +470,80 @@ place(const struct outline *o, long j, long m, double *x)
 		vcopy(x, p, o->dim);
 }
 
+/* Whether x lies near the gap between points j and j + 1 of o: the sum
+ * of its distances from them at most twice the gap. */
+static int
+near_gap(const struct outline *o, long j, const double *x)
+{
+	return vdist(x, pt(o, j), o->dim) + vdist(x, pt(o, j + 1), o->dim) <=
+	    2 * vdist(pt(o, j), pt(o, j + 1), o->dim);
+}
+
+/* The place of the knot of a corner between points *a and *a + 1 into
+ * x: where the lines through the m points before and after the gap
+ * meet, if near the gap (near_gap); *a becomes the point after it (the
+ * points from a knot's on are fitted by the span it starts, and that
+ * point lies on its line).  0 where the lines do not meet there (then
+ * nothing changes).  Two corners at neighbouring points are seldom two:
+ * the chord between them cuts one corner that lies between them. */
+static int
+place_gap(const struct outline *o, long *a, long m, double *x)
+{
+	struct line u, v;
+
+	if (!fit_line(o, *a - m + 1, m, &u) || !fit_line(o, *a + 1, m, &v) ||
+	    !meet(&u, &v, o->dim, x) || !near_gap(o, *a, x))
+		return 0;
+	++*a;
+	return 1;
+}
+
+/* The places of the knots of two corners close together, first near
+ * point *a and second near *b, into x and y: the meets of three lines,
+ * through the points before the first, those between, and those after
+ * the second (m of them either side), where the points split among them
+ * best (by CORNER_SPLIT times the noise's variance better than with
+ * the corners at the points), each split at most one point from where
+ * the search put it; *a and *b become the points after the meets (as in
+ * place_gap).  0 where no split does, with both meets near their gaps
+ * (then nothing changes). */
+static int
+place_two(const struct outline *o, long *a, long *b, long m, double sigma,
+    double *x, double *y)
+{
+	long lo = *a - m, hi = *b + m, ba = *a, bb = *b;
+	double best = corner_ss(o, lo, *a, *b, hi) -
+	    CORNER_SPLIT * sigma * sigma;
+	int found = 0;
+
+	for (long i = *a - 1; i <= *a + 1; i++)         /* last before */
+		for (long j = *b - 1; j <= *b + 1; j++) {  /* first after */
+			struct line u, v, w;
+			double ss, p[LOFT_MAXDIM], q[LOFT_MAXDIM];
+
+			if (j - i < 3 || !fit_line(o, lo, i - lo + 1, &u) ||
+			    !fit_line(o, i + 1, j - i - 1, &v) ||
+			    !fit_line(o, j, hi - j + 1, &w))
+				continue;
+			ss = u.ss + v.ss + w.ss;
+			if (!(ss < best) || !meet(&u, &v, o->dim, p) ||
+			    !meet(&v, &w, o->dim, q) || !near_gap(o, i, p) ||
+			    !near_gap(o, j - 1, q))
+				continue;
+			best = ss;
+			found = 1;
+			vcopy(x, p, o->dim);
+			vcopy(y, q, o->dim);
+			ba = i + 1;
+			bb = j;
+		}
+	if (!found)
+		return 0;
+	*a = ba;
+	*b = bb;
+	return 1;
+}
+
 /* A corner found: its point and its knot's place. */
 struct found {
 	size_t i;
@@ -481,9 +583,12 @@ settle_all(const struct outline *o, const size_t *cand, size_t ncand,
 			continue;
 		if ((k = settle(o, i, m, m, sigma, &c[0], &c[1])) == 0)
 			continue;       /* a bend: its points stay free */
-		if (k == 1) {
+		if (k == 2 && c[1] == c[0] + 1 &&
+		    place_gap(o, &c[0], m, at[0])) {
+			k = 1;
+		} else if (k == 1) {
 			place(o, c[0], m, at[0]);
-		} else {
+		} else if (!place_two(o, &c[0], &c[1], m, sigma, at[0], at[1])) {
 			vcopy(at[0], pt(o, c[0]), o->dim);
 			vcopy(at[1], pt(o, c[1]), o->dim);
 		}
@@ -497,7 +602,7 @@ settle_all(const struct outline *o, const size_t *cand, size_t ncand,
 			++*nc;
 		}
 		for (int q = 0; q < k; q++)
-			for (long d = -m; d <= m; d++)
+			for (long d = CORNER_ECHO - m; d <= m - CORNER_ECHO; d++)
 				if (pt(o, c[q] + d) != NULL)
 					taken[wrap(o, c[q] + d)] = 1;
 	}
@@ -531,6 +636,21 @@ sharpest_first(size_t *cand, size_t nc, const double *turn, struct turn *t)
 		cand[x] = t[x].i;
 }
 
+/* Whether the turn t at point i of o over the scale len is a smooth
+ * bend's: twice the length, twice the turn, where a corner's turn is
+ * about the same.  Unless the turn over twice the scale is as sharp as
+ * CORNER_PAIR_TURN and half the scale turns as much as the whole: then
+ * two corners lie within twice the scale (the end of a slab, a serif),
+ * and the longer lines turn at both. */
+static int
+bend(const struct outline *o, long i, double len, double t)
+{
+	double t2 = turn_at(o, i, 2 * len, 0);
+
+	return t2 > CORNER_CONCENTRATED * t && !(t2 >= CORNER_PAIR_TURN &&
+	    CORNER_CONCENTRATED * turn_at(o, i, len / 2, 1) >= t);
+}
+
 /* The turns of o at the scale len into turn (0 where none is a
  * corner's), and the points either side within half of it into half;
  * the indices of the local sharpest into cand, sharpest first (t:
@@ -543,9 +663,9 @@ candidates(const struct outline *o, double len, double *turn, long *half,
 	long n = (long)o->n;
 
 	for (long i = 0; i < n; i++)
-		if ((turn[i] = turn_at(o, i, len, 1)) > 0 &&
-		    turn_at(o, i, 2 * len, 0) > CORNER_CONCENTRATED * turn[i])
-			turn[i] = 0;    /* a bend: twice the length, twice the turn */
+		if ((turn[i] = turn_at(o, i, len, 1)) > 0 && bend(o, i, len,
+		    turn[i]))
+			turn[i] = 0;
 	for (long i = 0; i < n; i++) {
 		long a = reach(o, i, -1, len / 2), b = reach(o, i, 1, len / 2);
 		int best = turn[i] >= CORNER_TURN && a > 0 && b > 0;

@@ -445,6 +445,18 @@ rect_corners() {
 		(3 in hit)) }' "$1"
 }
 
+# rect_case NAME W H SPACING FIRST R: for seeds 1 to 3, splinefit -e 0.2
+# of rect_pts W H SPACING FIRST (into $T/NAME.pts and NAME.cubic) has
+# four corner knots, each within R of a corner of the rectangle
+rect_case() {
+	for seed in 1 2 3; do
+		rect_pts "$2" "$3" "$4" "$5" "$seed" >"$T/$1.pts"
+		"$B/splinefit" -e 0.2 "$T/$1.pts" >"$T/$1.cubic" 2>&1 &&
+		    rect_corners "$T/$1.cubic" "$2" "$3" "$6" && ok ||
+		    no "$1 $seed: want 4 corner knots within $6 of the rectangle's: $(head -1 "$T/$1.cubic")"
+	done
+}
+
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
 # (as a serif's end is).  Each end turns twice: the four corners are kept,
@@ -474,12 +486,7 @@ done
 # The knot of each corner found goes where the lines either side meet:
 # within 0.3 of the square's corner (a knot at a point would be 0.6 off
 # at least, and cut the corner)
-for seed in 1 2 3; do
-	rect_pts 100 100 2.5 0.6 "$seed" >"$T/between.pts"
-	"$B/splinefit" -e 0.2 "$T/between.pts" >"$T/between.cubic" 2>&1 &&
-	    rect_corners "$T/between.cubic" 100 100 0.3 && ok ||
-	    no "between $seed: want 4 corner knots at the square's: $(cat "$T/between.cubic")"
-done
+rect_case between 100 100 2.5 0.6 0.3
 # the same corners in any units, huge or tiny
 for s in 1e300 1e-300; do
 	awk -v s="$s" '{ printf "%.17g %.17g\n", $1 * s, $2 * s }' \
@@ -489,6 +496,25 @@ for s in 1e300 1e-300; do
 	head -1 "$T/between.cubic" | cmp -s - "$T/scaled.head" && ok ||
 	    no "between scaled by $s: $(cat "$T/scaled.head"), want $(head -1 "$T/between.cubic")"
 done
+
+# ---- a slab whose ends are shorter than twice the scale (issue 23): a
+# rectangle 100 x 20, a point every 2 along it (the first 1 along), noise
+# 0.05, -e 0.2: the scale is 12 (six spacings), and the lines over twice
+# it either side of each corner reach round the end to the next corner.
+# They turn twice as much as over the scale, as a smooth bend's do, and
+# no corner was found at all.  Each corner lies between two points, a
+# point 1 from it either side; its knot goes where the sides meet, and
+# takes the place of the point after it (a knot in the place of the one
+# before left that point behind the corner, the fit went astray, and its
+# corners came back at the points, 1 off).  So: the four corners, each
+# within 0.3 of the rectangle's.
+rect_case short 100 20 2 1 0.3
+# ---- the two corners of an end shorter than the scale, off the points:
+# a rectangle 100 x 12, a point every 2.5 (the first 1.25 along), so that
+# each end holds four points, none nearer a corner than 1.25.  The knots
+# of each end's two corners go where its line, through its own points,
+# meets the sides; at the points they were 1.25 off at least
+rect_case ends 100 12 2.5 1.25 0.6
 
 # ---- a corner beside a sparse run: the span over it has too few points
 # to split at its middle.  A rectangle 100 x 60, a point a mm along its
