@@ -28,7 +28,8 @@ With --check, only contours K (from 0) are fitted, by splinefit -e
 curve crosses itself (1) or not (0), its Hausdorff distance to the
 true outline in sigmas (its curve sampled densely enough, a quarter
 sigma apart, for that distance to be the curve's, not its samples'),
-and the spans splinefit -v says are astray (0 where it says none)."""
+the spans splinefit -v says are astray (0 where it says none), and
+the corners of the curve (its corners= joints)."""
 import math
 import os
 import random
@@ -260,11 +261,13 @@ def check(which, truth, opt):
         if fit.returncode != 0:
             print(k, "fails:", fit.stderr.strip())
             continue
-        rows = records(fit.stdout)[0][1]
+        head, rows = records(fit.stdout)[0]
         astray = re.search(r"(\d+) spans? astray", fit.stderr)
+        corners = re.search(r"corners=([0-9,]+)", head)
         print(k, int(crosses(hermite(rows))),
               "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma),
-              astray.group(1) if astray else 0)
+              astray.group(1) if astray else 0,
+              len(corners.group(1).split(",")) if corners else 0)
 
 
 def main():
