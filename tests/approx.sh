@@ -504,10 +504,10 @@ done
 # They turn twice as much as over the scale, as a smooth bend's do, and
 # no corner was found at all.  Each corner lies between two points, a
 # point 1 from it either side; its knot goes where the sides meet, and
-# takes the place of the point after it (a knot in the place of the one
-# before left that point behind the corner, the fit went astray, and its
-# corners came back at the points, 1 off).  So: the four corners, each
-# within 0.3 of the rectangle's.
+# takes the place of the point after it (a knot in the place of the
+# nearer point, where that was the one before, left it behind the
+# corner: the fit went astray, and was written without corners).  So:
+# the four corners, each within 0.3 of the rectangle's.
 rect_case short 100 20 2 1 0.3
 # ---- the two corners of an end shorter than the scale, off the points:
 # a rectangle 100 x 12, a point every 2.5 (the first 1.25 along), so that
