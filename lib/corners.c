@@ -453,6 +453,19 @@ meet(const struct line *u, const struct line *v, int dim, double *x)
 	return 1;
 }
 
+/* Where the lines through the m points up to point last and the m from
+ * point first meet, into x; 0 where a line is missing or they are too
+ * near parallel. */
+static int
+sides_meet(const struct outline *o, long last, long first, long m,
+    double *x)
+{
+	struct line u, v;
+
+	return fit_line(o, last - m + 1, m, &u) && fit_line(o, first, m, &v) &&
+	    meet(&u, &v, o->dim, x);
+}
+
 /* The place of the knot of a single corner at point j into x: where
  * the lines through the m points either side meet (not through j,
  * which may lie on either side of the true corner), if that is nearer
@@ -460,15 +473,14 @@ meet(const struct line *u, const struct line *v, int dim, double *x)
 static void
 place(const struct outline *o, long j, long m, double *x)
 {
-	struct line u, v;
 	const double *p = pt(o, j);
 	double room = HUGE_VAL;
 
 	for (long d = -1; d <= 1; d += 2)
 		if (pt(o, j + d) != NULL)
 			room = fmin(room, vdist(p, pt(o, j + d), o->dim));
-	if (!fit_line(o, j - m, m, &u) || !fit_line(o, j + 1, m, &v) ||
-	    !meet(&u, &v, o->dim, x) || !(vdist(x, p, o->dim) <= room))
+	if (!sides_meet(o, j - 1, j + 1, m, x) ||
+	    !(vdist(x, p, o->dim) <= room))
 		vcopy(x, p, o->dim);
 }
 
@@ -491,10 +503,7 @@ near_gap(const struct outline *o, long j, const double *x)
 static int
 place_gap(const struct outline *o, long *a, long m, double *x)
 {
-	struct line u, v;
-
-	if (!fit_line(o, *a - m + 1, m, &u) || !fit_line(o, *a + 1, m, &v) ||
-	    !meet(&u, &v, o->dim, x) || !near_gap(o, *a, x))
+	if (!sides_meet(o, *a, *a + 1, m, x) || !near_gap(o, *a, x))
 		return 0;
 	++*a;
 	return 1;
