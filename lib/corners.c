@@ -113,7 +113,6 @@
  * of 665), and 4 fewer false ones are left (72). */
 #define CORNER_HINGE 6
 #define CORNER_PIN 2.0
-#define CORNER_POWER 30         /* power iterations: a 2 x 2 converges */
 
 /* The turns found within the scale of a corner settled are its echoes,
  * and are passed over, but for the outermost this many points either
@@ -121,6 +120,9 @@
  * or less from the first, may settle there (and then must turn by
  * CORNER_TURN as any corner must). */
 #define CORNER_ECHO 2
+
+/* Power iterations for a principal axis (a 2 x 2 converges in a few). */
+#define CORNER_POWER 32
 
 /* The noise is taken as no less than this part of the tolerance, so
  * that points without noise still weigh a second corner. */
@@ -159,41 +161,48 @@ struct line {
 	double c[LOFT_MAXDIM], d[LOFT_MAXDIM], ss, ext;
 };
 
+/* The principal axis of points a..a+k-1 of o about c (the largest
+ * eigenvector of their scatter about it) into u, by power iteration
+ * from u (a unit vector). */
+static void
+principal_axis(const struct outline *o, long a, long k, const double *c,
+    double *u)
+{
+	double m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } }, v[LOFT_MAXDIM];
+	int dim = o->dim;
+
+	for (long t = 0; t < k; t++) {
+		vsub(v, pt(o, a + t), c, dim);
+		for (int i = 0; i < dim; i++)
+			vaxpy(m[i], v[i], v, dim);
+	}
+	for (int it = 0; it < CORNER_POWER; it++) {
+		for (int i = 0; i < dim; i++)
+			v[i] = vdot(m[i], u, dim);
+		if (!(vunit(v, dim) > 0))
+			break;
+		vcopy(u, v, dim);
+	}
+}
+
 /* The least-squares line through points a..a+k-1 of o into *l, its
  * direction in the order of the points.  0 where the points are
  * missing or give no direction. */
 static int
 fit_line(const struct outline *o, long a, long k, struct line *l)
 {
-	double m[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } }, v[LOFT_MAXDIM];
-	double c[LOFT_MAXDIM] = { 0 }, u[LOFT_MAXDIM], lo = HUGE_VAL;
-	double hi = -HUGE_VAL;
+	double v[LOFT_MAXDIM], c[LOFT_MAXDIM] = { 0 }, u[LOFT_MAXDIM];
+	double lo = HUGE_VAL, hi = -HUGE_VAL;
 	int dim = o->dim;
 
 	if (k < 2 || pt(o, a) == NULL || pt(o, a + k - 1) == NULL)
 		return 0;
 	for (long t = 0; t < k; t++)
 		vaxpy(c, 1.0 / k, pt(o, a + t), dim);
-	for (long t = 0; t < k; t++) {
-		vsub(v, pt(o, a + t), c, dim);
-		for (int i = 0; i < dim; i++)
-			for (int j = 0; j < dim; j++)
-				m[i][j] += v[i] * v[j];
-	}
-	/* the principal axis by power iteration from the chord */
 	vsub(u, pt(o, a + k - 1), pt(o, a), dim);
 	if (!(vunit(u, dim) > 0))
 		return 0;
-	for (int it = 0; it < 32; it++) {
-		for (int i = 0; i < dim; i++) {
-			v[i] = 0;
-			for (int j = 0; j < dim; j++)
-				v[i] += m[i][j] * u[j];
-		}
-		if (!(vunit(v, dim) > 0))
-			break;
-		vcopy(u, v, dim);
-	}
+	principal_axis(o, a, k, c, u);
 	vsub(v, pt(o, a + k - 1), pt(o, a), dim);
 	if (vdot(u, v, dim) < 0)
 		vscale(u, -1, u, dim);
@@ -496,16 +505,14 @@ sides_meet(const struct outline *o, long last, long first, long m,
 }
 
 /* The squared distances of points a..b of o (none where b < a) from
- * the line through x that fits them best: the sum of their squared
- * distances from x less the largest eigenvalue of their scatter about
- * x (by power iteration, from the chord a-b).  Points missing (past
- * the ends of an open outline) are left out. */
+ * the line through x that fits them best (along their principal axis
+ * about x).  Points missing (past the ends of an open outline) are left
+ * out. */
 static double
 pinned_side(const struct outline *o, long a, long b, const double *x)
 {
 	int dim = o->dim;
-	double s[LOFT_MAXDIM][LOFT_MAXDIM] = { { 0 } }, r[LOFT_MAXDIM];
-	double v[LOFT_MAXDIM], tr = 0, lam = 0;
+	double r[LOFT_MAXDIM], u[LOFT_MAXDIM], ss = 0;
 
 	for (; a <= b && pt(o, a) == NULL; a++)
 		;
@@ -513,22 +520,20 @@ pinned_side(const struct outline *o, long a, long b, const double *x)
 		;
 	if (b < a)
 		return 0;
+	vsub(u, pt(o, b), pt(o, a), dim);
+	if (!(vunit(u, dim) > 0))
+		vsub(u, pt(o, b), x, dim);
+	if (!(vunit(u, dim) > 0))
+		return 0;       /* the points all at x */
+	principal_axis(o, a, b - a + 1, x, u);
 	for (long t = a; t <= b; t++) {
+		double d;
+
 		vsub(r, pt(o, t), x, dim);
-		tr += vdot(r, r, dim);
-		for (int i = 0; i < dim; i++)
-			vaxpy(s[i], r[i], r, dim);
+		d = vdot(r, u, dim);
+		ss += fmax(vdot(r, r, dim) - d * d, 0);
 	}
-	vsub(v, pt(o, b), pt(o, a), dim);
-	if (!(vunit(v, dim) > 0))
-		vsub(v, pt(o, b), x, dim);
-	for (int it = 0; it < CORNER_POWER && vunit(v, dim) > 0; it++) {
-		for (int i = 0; i < dim; i++)
-			r[i] = vdot(s[i], v, dim);
-		lam = vdot(r, v, dim);
-		vcopy(v, r, dim);
-	}
-	return fmax(tr - lam, 0);
+	return ss;
 }
 
 /* How well a corner pinned at x fits points lo..hi of o, split into
