@@ -357,70 +357,121 @@ static const char pairs[] =
     "34353637383940414243444546474849505152535455565758596061626364656667"
     "68697071727374757677787980818283848586878889909192939495969798999";
 
+/* The number of decimal digits of d > 0.  With b its bits, t = b log10 2
+ * rounded down (1233 / 4096 is a hair under log10 2; t <= 19): d has t
+ * digits, or t + 1 where it reaches 10^t. */
+static int
+digit_count(uint64_t d)
+{
+	int t = (64 - count_leading_zeros(d)) * 1233 >> 12;
+
+	return t + (d >= pow10_64[t]);
+}
+
+/* v < 10^4 as exactly four digits at p, and v < 10^8 as eight: halves
+ * taken apart independently, not one digit pair after another. */
+static void
+put4(char *p, uint32_t v)
+{
+	memcpy(p, pairs + 2 * (v / 100), 2);
+	memcpy(p + 2, pairs + 2 * (v % 100), 2);
+}
+
+static void
+put8(char *p, uint32_t v)
+{
+	put4(p, v / 10000);
+	put4(p + 4, v % 10000);
+}
+
+/* d's digits, written backwards so that the last ends just before end:
+ * eight at a time, then the leading ones. */
+static inline void
+put_digits(char *end, uint64_t d)
+{
+	uint32_t v;
+
+	for (; d >= 100000000; d /= 100000000)
+		put8(end -= 8, (uint32_t)(d % 100000000));
+	for (v = (uint32_t)d; v >= 100; v /= 100)
+		memcpy(end -= 2, pairs + 2 * (v % 100), 2);
+	if (v >= 10)
+		memcpy(end - 2, pairs + 2 * v, 2);
+	else
+		end[-1] = (char)('0' + v);
+}
+
+/* Drop d's trailing zeros into e: at most 17, so each step once.  The
+ * divisors are constants, which the compiler turns into products. */
+static void
+strip_zeros(uint64_t *d, int *e)
+{
+#define STRIP(p, k) if (*d % (p) == 0) *d /= (p), *e += (k)
+	STRIP(10000000000000000U, 16);
+	STRIP(100000000, 8);
+	STRIP(10000, 4);
+	STRIP(100, 2);
+	STRIP(10, 1);
+#undef STRIP
+}
+
+/* The exponent x as printf writes it: e, a sign, two digits or three. */
+static char *
+put_exponent(char *o, int x)
+{
+	*o++ = 'e';
+	*o++ = x < 0 ? '-' : '+';
+	x = x < 0 ? -x : x;
+	if (x >= 100)
+		*o++ = (char)('0' + x / 100), x %= 100;
+	*o++ = pairs[2 * x];
+	*o++ = pairs[2 * x + 1];
+	return o;
+}
+
+/*
+ * The digits are written once, straight into buf.  Where a point goes
+ * among them, they are written one place to the right, and the ones
+ * before the point moved back a place (one digit, in the commonest
+ * layouts) to leave a gap for it.
+ */
 int
 loft__decimal_text(char *buf, uint64_t d, int e, int prec)
 {
-	char dig[24], *p = dig + sizeof dig, *o = buf;
+	char *o = buf;
 	int n, x;
 
-	/* drop trailing zeros: at most 17, so each step once */
-	if (d % 10000000000000000 == 0)
-		d /= 10000000000000000, e += 16;
-	if (d % 100000000 == 0)
-		d /= 100000000, e += 8;
-	if (d % 10000 == 0)
-		d /= 10000, e += 4;
-	if (d % 100 == 0)
-		d /= 100, e += 2;
 	if (d % 10 == 0)
-		d /= 10, e += 1;
-	while (d >= 100) {
-		unsigned r = (unsigned)(d % 100);
-
-		d /= 100;
-		*--p = pairs[2 * r + 1];
-		*--p = pairs[2 * r];
-	}
-	if (d >= 10) {
-		*--p = pairs[2 * d + 1];
-		*--p = pairs[2 * d];
-	} else {
-		*--p = (char)('0' + d);
-	}
-	n = (int)(dig + sizeof dig - p);
+		strip_zeros(&d, &e);
+	n = digit_count(d);
 	x = e + n - 1;          /* the decimal exponent: d.ddd 10^x */
 	if (x < -4 || x >= prec) {
-		*o++ = p[0];
+		put_digits(o + 1 + n, d);
+		o[0] = o[1];
 		if (n > 1) {
-			*o++ = '.';
-			memcpy(o, p + 1, (size_t)n - 1);
-			o += n - 1;
+			o[1] = '.';
+			o += n + 1;
+		} else {
+			o++;
 		}
-		*o++ = 'e';
-		*o++ = x < 0 ? '-' : '+';
-		x = x < 0 ? -x : x;
-		if (x >= 100)
-			*o++ = (char)('0' + x / 100), x %= 100;
-		*o++ = pairs[2 * x];
-		*o++ = pairs[2 * x + 1];
+		o = put_exponent(o, x);
 	} else if (x < 0) {
 		*o++ = '0';
 		*o++ = '.';
 		for (int i = -1; i > x; i--)
 			*o++ = '0';
-		memcpy(o, p, (size_t)n);
+		put_digits(o + n, d);
 		o += n;
 	} else if (n <= x + 1) {
-		memcpy(o, p, (size_t)n);
-		o += n;
-		for (int i = n; i <= x; i++)
+		put_digits(o + n, d);
+		for (o += n; n <= x; n++)
 			*o++ = '0';
 	} else {
-		memcpy(o, p, (size_t)x + 1);
-		o += x + 1;
-		*o++ = '.';
-		memcpy(o, p + x + 1, (size_t)(n - x - 1));
-		o += n - x - 1;
+		put_digits(o + 1 + n, d);
+		for (int i = 0; i <= x; i++)
+			o[i] = o[i + 1];
+		o[x + 1] = '.';
+		o += n + 1;
 	}
 	*o = '\0';
 	return (int)(o - buf);
