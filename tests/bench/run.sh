@@ -193,3 +193,8 @@ $W/timeit -r $OUT hydro/patchcut-wl
 echo "bench: loftplot -l of 10^4 labelled segments at random over 10^3 of" \
     "them (linear: about 10)"
 $W/timeit -r $OUT labels-1e4/labels-1e3
+echo "bench: on their own: splinefit of the 10^6-knot outline (under 2 s)," \
+    "patchloft of 100 sections (under 1 s), patchcut of 10^4 patches by 50" \
+    "planes (under 2 s), sample -n 100 of a 64 x 64 Bezier surface," \
+    "loftplot -l of 20,000 records on a grid"
+$W/timeit -r $OUT outline-fit patchloft patchcut surface-63 loftplot-labels

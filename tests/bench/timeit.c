@@ -5,11 +5,13 @@
  *                           took and the user + system seconds its
  *                           processes used; its own standard output goes
  *                           to /dev/null.  Exit status: the command's.
- *   timeit -r FILE A/B ...  reads FILE, lines "rep case wall cpu", and
- *                           prints each case's median wall and cpu
- *                           seconds, then for each pair A/B the median
- *                           over the reps of A's time over B's, the two
- *                           measured in the same rep.
+ *   timeit -r FILE A/B|C ...
+ *                           reads FILE, lines "rep case wall cpu", and
+ *                           prints the median wall and cpu seconds of
+ *                           each case named (A, B or C), then for each
+ *                           pair A/B the median over the reps of A's
+ *                           time over B's, the two measured in the same
+ *                           rep.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,6 +63,46 @@ find(int rep, const char *name)
 	return NULL;
 }
 
+/* Whether name is one of the arguments "a/b" (either side) or "a". */
+static int
+in_pairs(const char *name, int npairs, char **pairs)
+{
+	size_t n = strlen(name);
+
+	for (int k = 0; k < npairs; k++) {
+		const char *b = strchr(pairs[k], '/');
+
+		if (b == NULL ? strcmp(pairs[k], name) == 0 :
+		    strcmp(b + 1, name) == 0 || ((size_t)(b - pairs[k]) == n &&
+		    strncmp(pairs[k], name, n) == 0))
+			return 1;
+	}
+	return 0;
+}
+
+/* Each case the pairs name, once: its median wall and cpu seconds.
+ * w, c: scratch for MAXROWS numbers each. */
+static void
+print_cases(int npairs, char **pairs, double *w, double *c)
+{
+	printf("%-14s %9s %9s %5s\n", "case", "wall s", "cpu s", "runs");
+	for (int i = 0; i < nrows; i++) {
+		int n = 0, seen = 0;
+
+		for (int j = 0; j < i; j++)
+			seen |= strcmp(rows[j].name, rows[i].name) == 0;
+		if (seen || !in_pairs(rows[i].name, npairs, pairs))
+			continue;
+		for (int j = i; j < nrows; j++)
+			if (strcmp(rows[j].name, rows[i].name) == 0) {
+				w[n] = rows[j].wall;
+				c[n++] = rows[j].cpu;
+			}
+		printf("%-14s %9.3f %9.3f %5d\n", rows[i].name, median(w, n),
+		    median(c, n), n);
+	}
+}
+
 static int
 report(const char *file, int npairs, char **pairs)
 {
@@ -76,24 +118,13 @@ report(const char *file, int npairs, char **pairs)
 	    &rows[nrows].cpu) == 4)
 		nrows++;
 	fclose(fp);
-	printf("%-14s %9s %9s %5s\n", "case", "wall s", "cpu s", "runs");
-	for (int i = 0; i < nrows; i++) {
-		int n = 0, seen = 0;
-
-		for (int j = 0; j < i; j++)
-			seen |= strcmp(rows[j].name, rows[i].name) == 0;
-		if (seen)
-			continue;
-		for (int j = i; j < nrows; j++)
-			if (strcmp(rows[j].name, rows[i].name) == 0) {
-				w[n] = rows[j].wall;
-				c[n++] = rows[j].cpu;
-			}
-		printf("%-14s %9.3f %9.3f %5d\n", rows[i].name, median(w, n),
-		    median(c, n), n);
-	}
-	printf("\n%-30s %9s %9s\n", "ratio (median of each rep's)", "wall",
-	    "cpu");
+	print_cases(npairs, pairs, w, c);
+	for (int k = 0; k < npairs; k++)
+		if (strchr(pairs[k], '/') != NULL) {
+			printf("\n%-30s %9s %9s\n",
+			    "ratio (median of each rep's)", "wall", "cpu");
+			break;
+		}
 	for (int k = 0; k < npairs; k++) {
 		char a[32], *b;
 		int n = 0;
@@ -131,7 +162,7 @@ main(int argc, char *argv[])
 		return report(argv[2], argc - 3, argv + 3);
 	if (argc != 2) {
 		fputs("usage: timeit 'command line' | timeit -r file "
-		    "[a/b ...]\n", stderr);
+		    "[a/b | c ...]\n", stderr);
 		return 2;
 	}
 	fflush(stdout);
