@@ -21,7 +21,10 @@ each), and the segments, at the median and 90th percentile; for
 splinefit also the true corners kept (a corner= joint of the fit within
 2 TOL of a true corner that turns by CORNER or more) and its false
 corners (a corner= joint farther than 2 TOL from every true corner the
-outline has).
+outline has): how many lie within 4 TOL of a true corner,
+how many where the true outline turns by CORNER or more within TOL
+either side (a bend that turns as a corner does at the scale of the
+tolerance), and the rest.
 
 With --check, only contours K (from 0) are fitted, by splinefit -e
 (and the OPTIONs), and a line is printed for each: K, whether the
@@ -185,9 +188,30 @@ def true_corners(head, t):
     return out
 
 
-def corners_of(head, rows, tol, truth):
-    """(kept, wanted, false) of the fit's corner= joints against the
-    true corners (point, turn)."""
+def turn_within(t, p, reach):
+    """How far the outline t (a closed polyline) turns, in radians,
+    between the points reach along it either side of its point nearest
+    p."""
+    n = len(t)
+    i = int(np.argmin(np.hypot(*(t - p).T)))
+    step = np.hypot(*np.diff(np.r_[t, t[:1]], axis=0).T)
+    a = b = i
+    back = ahead = 0.0
+    while back < reach and (i - a) < n // 2:
+        a -= 1
+        back += step[a % n]
+    while ahead < reach and (b - i) < n // 2:
+        ahead += step[b % n]
+        b += 1
+    u, v = t[(a + 1) % n] - t[a % n], t[b % n] - t[(b - 1) % n]
+    return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u @ v))
+
+
+def corners_of(head, rows, tol, truth, t):
+    """(kept, wanted, false, near_true, tight) of the fit's corner=
+    joints against the true corners (point, turn) of the outline t:
+    the false ones within 4 tol of a true corner, and those where the
+    outline turns by CORNER within tol either side."""
     m = re.search(r"corners=([0-9,]+)", head)
     at = np.array([rows[int(x) - 1][0:2] for x in m.group(1).split(",")]
                   if m else np.zeros((0, 2)))
@@ -195,10 +219,13 @@ def corners_of(head, rows, tol, truth):
             for p, _ in truth]
     kept = sum(n for n, (_, a) in zip(near, truth) if a >= CORNER)
     want = sum(a >= CORNER for _, a in truth)
-    false = sum(not len(truth) or
-                min(np.hypot(*(p - q)) for q, _ in truth) > 2 * tol
-                for p in at)
-    return kept, want, false
+    off = [min([np.hypot(*(p - q)) for q, _ in truth] or [math.inf])
+           for p in at]
+    false = sum(d > 2 * tol for d in off)
+    near_true = sum(2 * tol < d <= 4 * tol for d in off)
+    tight = sum(turn_within(t, p, tol) >= CORNER for p, d in zip(at, off)
+                if d > 4 * tol)
+    return kept, want, false, near_true, tight
 
 
 def pct(v, q):
@@ -284,7 +311,7 @@ def main():
     rng = random.Random(23)
     res = {"loft": [0, 0, [], []], "loft -C": [0, 0, [], []],
            "potrace": [0, 0, [], []]}
-    kept = want = false = 0
+    kept = want = false = near_true = tight = 0
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         for name, opt in (("loft", []), ("loft -C", ["-C"])):
@@ -299,9 +326,10 @@ def main():
             r[2].append(hausdorff(fine(rows, sigma), dense) / sigma)
             r[3].append(len(rows))
             if not opt:
-                a, b, f = corners_of(head, rows, 4 * sigma,
-                                     true_corners(heads[k], t))
+                a, b, f, nt, ti = corners_of(head, rows, 4 * sigma,
+                                             true_corners(heads[k], t), t)
                 kept, want, false = kept + a, want + b, false + f
+                near_true, tight = near_true + nt, tight + ti
         if have_potrace:
             r = res["potrace"]
             c, ns = potrace(pts, sigma, work)
@@ -317,8 +345,11 @@ def main():
     if have_potrace:
         report("potrace", *res["potrace"])
     print("  loft's corners: %d of %d true corners of %d degrees or more "
-          "kept, %d false" % (kept, want, round(math.degrees(CORNER)),
-                              false))
+          "kept, %d false (%d of them within 4 TOL of a true corner, %d "
+          "where the outline turns %d degrees or more within TOL either "
+          "side, %d on gentler bends)" %
+          (kept, want, round(math.degrees(CORNER)), false, near_true,
+           tight, round(math.degrees(CORNER)), false - near_true - tight))
 
 
 if __name__ == "__main__":
