@@ -238,27 +238,14 @@ check_args(const struct loft_approx_opts *o, size_t n, int dim,
 	return 0;
 }
 
-/* The checks of the points' spread, after check_args. */
+/* The direction of the line all n points lie on (to within APPROX_LINE
+ * of their spread) into d, and 1; 0 where they lie on none. */
 static int
-check_input(const struct loft_approx_opts *o, const double *p, size_t n,
-    int dim, struct loft_error *err)
+on_a_line(const double *p, size_t n, int dim, double *d)
 {
-	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM], far = 0, off = 0;
+	double far = 0, off = 0;
 	size_t b = 0;
 
-	vcopy(lo, p, dim);
-	vcopy(hi, p, dim);
-	for (size_t i = 1; i < n; i++)
-		for (int c = 0; c < dim; c++) {
-			lo[c] = fmin(lo[c], p[i * dim + c]);
-			hi[c] = fmax(hi[c], p[i * dim + c]);
-		}
-	vsub(d, hi, lo, dim);
-	if (o->tol >= vnorm(d, dim) / 2)
-		return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g is larger "
-		    "than the outline: every point is within it of the middle "
-		    "of their box (half its diagonal is %g)", o->tol,
-		    vnorm(d, dim) / 2);
 	for (size_t i = 1; i < n; i++)
 		if (vdist(p + i * dim, p, dim) > far) {
 			far = vdist(p + i * dim, p, dim);
@@ -274,10 +261,110 @@ check_input(const struct loft_approx_opts *o, const double *p, size_t n,
 		vaxpy(r, -vdot(r, d, dim), d, dim);
 		off = fmax(off, vnorm(r, dim));
 	}
-	if (!(off > APPROX_LINE * far))
+	return !(off > APPROX_LINE * far);
+}
+
+/* Whether points on the line along d turn back along it somewhere. */
+static int
+turns_back(const double *p, size_t n, int dim, const double *d)
+{
+	double was = 0, r[LOFT_MAXDIM];
+
+	for (size_t i = 1; i < n; i++) {
+		double go;
+
+		vsub(r, p + i * dim, p + (i - 1) * dim, dim);
+		go = vdot(r, d, dim);
+		if ((go < 0 && was > 0) || (go > 0 && was < 0))
+			return 1;       /* (a product of tiny steps is 0) */
+		was = go != 0 ? go : was;
+	}
+	return 0;
+}
+
+/* The checks of the points' spread, after check_args: a closed outline
+ * (or an open one with end tangents given) must not lie on a line. */
+static int
+check_input(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, struct loft_error *err)
+{
+	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM];
+
+	vcopy(lo, p, dim);
+	vcopy(hi, p, dim);
+	for (size_t i = 1; i < n; i++)
+		for (int c = 0; c < dim; c++) {
+			lo[c] = fmin(lo[c], p[i * dim + c]);
+			hi[c] = fmax(hi[c], p[i * dim + c]);
+		}
+	vsub(d, hi, lo, dim);
+	if (o->tol >= vnorm(d, dim) / 2)
+		return loft_fail(err, LOFT_EINPUT, -1, "tolerance %g is larger "
+		    "than the outline: every point is within it of the middle "
+		    "of their box (half its diagonal is %g)", o->tol,
+		    vnorm(d, dim) / 2);
+	if (!on_a_line(p, n, dim, d))
+		return 0;
+	if (o->closed || o->have_start || o->have_end)
 		return loft_fail(err, LOFT_EGEOM, -1, "the points all lie on a "
 		    "line: no outline to approximate");
+	if (turns_back(p, n, dim, d))
+		return loft_fail(err, LOFT_EGEOM, -1, "the points all lie on a "
+		    "line and turn back along it: no outline to approximate");
 	return 0;
+}
+
+/* Knot of collinear_runs at point i: the point, or where i is a corner
+ * with its place given, that place. */
+static const double *
+run_knot(const struct loft_approx_opts *o, const double *p, size_t i,
+    int dim)
+{
+	for (size_t c = 0; o->corner_at != NULL && c < o->ncorner; c++)
+		if (o->corner[c] == i)
+			return o->corner_at + c * dim;
+	return p + i * dim;
+}
+
+/* The straight segment from knot a to knot b of collinear_runs, the
+ * next of info->nseg in seg. */
+static void
+run_segment(const struct loft_approx_opts *o, const double *p, size_t a,
+    size_t b, int dim, double *seg, struct loft_approx_info *info)
+{
+	double *s = seg + info->nseg++ * 4 * dim;
+
+	vcopy(s, run_knot(o, p, a, dim), dim);
+	vcopy(s + dim, run_knot(o, p, b, dim), dim);
+	vsub(s + 2 * dim, s + dim, s, dim);
+	vcopy(s + 3 * dim, s + 2 * dim, dim);
+}
+
+/* Open points all on the line along d, running one way along it
+ * (check_input): straight segments between the first, each corner, and
+ * the last, into seg; *info as loft_approx's. */
+static void
+collinear_runs(const struct loft_approx_opts *o, const double *p, size_t n,
+    int dim, const double *d, double *seg, struct loft_approx_info *info)
+{
+	double r[LOFT_MAXDIM];
+	size_t last = 0;
+
+	for (size_t c = 0; c < o->ncorner; c++)
+		if (o->corner[c] > last && o->corner[c] < n - 1) {
+			run_segment(o, p, last, o->corner[c], dim, seg, info);
+			last = o->corner[c];
+		}
+	run_segment(o, p, last, n - 1, dim, seg, info);
+	info->nknots = info->nseg + 1;
+	for (size_t i = 0; i < n; i++) {
+		vsub(r, p + i * dim, p, dim);
+		vaxpy(r, -vdot(r, d, dim), d, dim);
+		if (vnorm(r, dim) >= info->dist) {
+			info->dist = vnorm(r, dim);
+			info->where = i;
+		}
+	}
 }
 
 /* Where a closed outline starts: its first corner, else its
@@ -2366,7 +2453,7 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	struct work w = { 0 };
 	struct loft_approx_info dummy;
 	size_t *corner = NULL;
-	double big = 0;
+	double big = 0, dir[LOFT_MAXDIM];
 	int rc, e;
 
 	if (info == NULL)
@@ -2375,6 +2462,10 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	if ((rc = check_args(o, n, dim, err)) != 0 ||
 	    (rc = check_input(o, p, n, dim, err)) != 0)
 		return rc;
+	if (on_a_line(p, n, dim, dir)) {        /* open, as check_input */
+		collinear_runs(o, p, n, dim, dir, seg, info);
+		return 0;
+	}
 	w.dim = dim;
 	w.closed = o->closed;
 	w.n = n;

@@ -482,11 +482,14 @@ struct loft_approx_info {
  * loft_cubic_eval, at most n of them: seg must hold 4 * dim * n
  * doubles.  info (may be NULL) gets the knots, segments, the largest
  * distance and its point, and how many spans fail the check both ways
- * (the fit that fails on fewest is written where none passes).
+ * (the fit that fails on fewest is written where none passes).  Open
+ * points all on a line, running one way along it, are the straight
+ * segments between the first, the corners, and the last.
  * Returns 0, or LOFT_EINPUT (dim, tol not positive and finite, tol at
  * least half the diagonal of the points' box), LOFT_EGEOM (fewer than
  * LOFT_APPROX_MIN_CLOSED or LOFT_APPROX_MIN_OPEN points, points all on
- * a line, a fit that fails),
+ * a line where they are closed, have end tangents given, or turn back
+ * along it, a fit that fails),
  * LOFT_ENOCONV (the tolerance not met in o->maxround rounds or with
  * every span too short to split: info->dist and info->where say what
  * was reached, err->row is that point; nothing in seg), LOFT_ENOMEM.

@@ -275,6 +275,26 @@ fails 1 "x.pts:2: 2 points: an open approximation needs at least 3" \
     "printf '# x\n0 0\n1 1\n' >$T/x.pts; $B/splinefit -o -e 0.1 $T/x.pts"
 fails 1 "line.pts:1: the points all lie on a line" \
     "printf '0 0\n1 1\n2 2\n3 3\n5 5\n' >$T/line.pts; $B/splinefit -e 0.1 $T/line.pts"
+# open points on a line (a ruler's edge, a CAD line's vertices) are
+# the straight segment from the first to the last, not an error; a
+# corner named among them is a knot; points that turn back along the
+# line have no outline
+run "printf '0 0\n1 1\n2 2\n3 3\n5 5\n' | $B/splinefit -o -e 0.1"
+status 0
+[ "$(sed -n 2p "$T/out")" = "0 0 5 5 5 5 5 5" ] &&
+    [ "$(grep -c '^[0-9-]' "$T/out")" = 1 ] && ok ||
+    no "open points on a line: want one straight segment: $(cat "$T/out")"
+run "printf 'points corners=3\n0 0 0\n1 2 3\n2 4 6\n4 8 12\n' |
+    $B/splinefit -o -e 0.1"
+status 0
+[ "$(sed -n 1p "$T/out")" = "cubic closed=0 corners=2" ] &&
+    [ "$(sed -n 3p "$T/out")" = "2 4 6 4 8 12 2 4 6 2 4 6" ] && ok ||
+    no "open points on a line with a corner: $(cat "$T/out")"
+fails 1 "line2.pts:1: the points all lie on a line and turn back along it" \
+    "printf '0 0\n1 1\n3 3\n2 2\n5 5\n' >$T/line2.pts; $B/splinefit -o -e 0.1 $T/line2.pts"
+# the same in units of 1e-200: the steps' product underflows to 0
+fails 1 "line3.pts:1: the points all lie on a line and turn back along it" \
+    "printf '0 0\n1e-200 1e-200\n3e-200 3e-200\n2e-200 2e-200\n5e-200 5e-200\n' >$T/line3.pts; $B/splinefit -o -e 1e-201 $T/line3.pts"
 fails 1 "e.pts:2: tolerance 200 is larger than the outline" \
     "$B/splinefit -e 200 $T/e.pts"
 # a tolerance no curve meets: below the noise, one round of splitting
