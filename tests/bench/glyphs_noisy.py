@@ -24,7 +24,8 @@ corners (a corner= joint farther than 2 TOL from every true corner the
 outline has): how many lie within 4 TOL of a true corner,
 how many where the true outline turns by CORNER or more within TOL
 either side (a bend that turns as a corner does at the scale of the
-tolerance), and the rest.
+tolerance), and the rest; and the same of potrace's corners (the joints
+of its path where the tangent turns by more than KINK).
 
 With --check, only contours K (from 0) are fitted, by splinefit -e
 (and the OPTIONs), and a line is printed for each: K, whether the
@@ -47,6 +48,7 @@ from scipy.spatial import cKDTree
 CORNER = math.radians(30)   # a true corner sharper than this must be kept
 SEG = 200                   # truth points a segment (tests/glyphs.py)
 PER = 30                    # samples a segment of each curve
+KINK = math.radians(5)      # a turn between potrace's segments: a corner
 
 
 def records(text):
@@ -173,7 +175,24 @@ def potrace(pts, sigma, work):
     c = np.concatenate([bezier(g) if len(g) == 4 else
                         np.linspace(g[0], g[1], PER, endpoint=False)
                         for g in best])
-    return lo + c / 100 * sigma, len(best)
+    return (lo + c / 100 * sigma, len(best),
+            lo + kinks(best) / 100 * sigma)
+
+
+def kinks(segs):
+    """The joints of a closed path (segments of control points) where
+    its tangent turns by more than KINK: potrace's corners (it joins
+    its curves with one tangent, to within the rounding of its
+    output)."""
+    def way(v):
+        return v / (np.hypot(*v) or 1)
+    out = []
+    for a, b in zip([segs[-1]] + segs[:-1], segs):
+        u = way(a[-1] - a[-2] if np.any(a[-1] != a[-2]) else a[-1] - a[0])
+        v = way(b[1] - b[0] if np.any(b[1] != b[0]) else b[-1] - b[0])
+        if math.acos(max(-1.0, min(1.0, u @ v))) > KINK:
+            out.append(b[0])
+    return np.array(out).reshape(-1, 2)
 
 
 def true_corners(head, t):
@@ -208,13 +227,18 @@ def turn_within(t, p, reach):
 
 
 def corners_of(head, rows, tol, truth, t):
-    """(kept, wanted, false, near_true, tight) of the fit's corner=
-    joints against the true corners (point, turn) of the outline t:
-    the false ones within 4 tol of a true corner, and those where the
-    outline turns by CORNER within tol either side."""
+    """corners_at for the fit's corner= joints."""
     m = re.search(r"corners=([0-9,]+)", head)
-    at = np.array([rows[int(x) - 1][0:2] for x in m.group(1).split(",")]
-                  if m else np.zeros((0, 2)))
+    return corners_at(np.array([rows[int(x) - 1][0:2]
+                                for x in m.group(1).split(",")]
+                               if m else np.zeros((0, 2))), tol, truth, t)
+
+
+def corners_at(at, tol, truth, t):
+    """(kept, wanted, false, near_true, tight) of the corners at (points)
+    against the true corners (point, turn) of the outline t: the false
+    ones within 4 tol of a true corner, and those where the outline
+    turns by CORNER within tol either side."""
     near = [len(at) and np.hypot(*(at - p).T).min() <= 2 * tol
             for p, _ in truth]
     kept = sum(n for n, (_, a) in zip(near, truth) if a >= CORNER)
@@ -226,6 +250,21 @@ def corners_of(head, rows, tol, truth, t):
     tight = sum(turn_within(t, p, tol) >= CORNER for p, d in zip(at, off)
                 if d > 4 * tol)
     return kept, want, false, near_true, tight
+
+
+def tally(sums, counts):
+    for i, x in enumerate(counts):
+        sums[i] += x
+
+
+def report_corners(name, c):
+    kept, want, false, near_true, tight = c
+    print("  %s corners: %d of %d true corners of %d degrees or more "
+          "kept, %d false (%d of them within 4 TOL of a true corner, %d "
+          "where the outline turns %d degrees or more within TOL either "
+          "side, %d on gentler bends)" %
+          (name, kept, want, round(math.degrees(CORNER)), false, near_true,
+           tight, round(math.degrees(CORNER)), false - near_true - tight))
 
 
 def pct(v, q):
@@ -311,7 +350,7 @@ def main():
     rng = random.Random(23)
     res = {"loft": [0, 0, [], []], "loft -C": [0, 0, [], []],
            "potrace": [0, 0, [], []]}
-    kept = want = false = near_true = tight = 0
+    found = {"loft": [0] * 5, "potrace": [0] * 5}
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         for name, opt in (("loft", []), ("loft -C", ["-C"])):
@@ -326,16 +365,16 @@ def main():
             r[2].append(hausdorff(fine(rows, sigma), dense) / sigma)
             r[3].append(len(rows))
             if not opt:
-                a, b, f, nt, ti = corners_of(head, rows, 4 * sigma,
-                                             true_corners(heads[k], t), t)
-                kept, want, false = kept + a, want + b, false + f
-                near_true, tight = near_true + nt, tight + ti
+                tally(found["loft"], corners_of(
+                    head, rows, 4 * sigma, true_corners(heads[k], t), t))
         if have_potrace:
             r = res["potrace"]
-            c, ns = potrace(pts, sigma, work)
+            c, ns, at = potrace(pts, sigma, work)
             r[1] += crosses(c)
             r[2].append(hausdorff(c, dense) / sigma)
             r[3].append(ns)
+            tally(found["potrace"], corners_at(
+                at, 4 * sigma, true_corners(heads[k], t), t))
     print("splinefit -e 4 sigma on %d noisy glyph contours (400 points, "
           "sigma 0.1-0.5%% of the size, no corners given)%s" %
           (len(truth), "" if have_potrace else
@@ -344,12 +383,9 @@ def main():
     report("loft -C", *res["loft -C"])
     if have_potrace:
         report("potrace", *res["potrace"])
-    print("  loft's corners: %d of %d true corners of %d degrees or more "
-          "kept, %d false (%d of them within 4 TOL of a true corner, %d "
-          "where the outline turns %d degrees or more within TOL either "
-          "side, %d on gentler bends)" %
-          (kept, want, round(math.degrees(CORNER)), false, near_true,
-           tight, round(math.degrees(CORNER)), false - near_true - tight))
+    report_corners("loft's", found["loft"])
+    if have_potrace:
+        report_corners("potrace's", found["potrace"])
 
 
 if __name__ == "__main__":
