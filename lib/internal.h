@@ -114,6 +114,21 @@ vdist(const double *a, const double *b, int dim)
 	return vnorm(d, dim);
 }
 
+/* The square of the distance from q to the segment a b. */
+static inline double
+vsegdist2(const double *a, const double *b, const double *q, int dim)
+{
+	double d[LOFT_MAXDIM], e[LOFT_MAXDIM], dd, t;
+
+	vsub(d, b, a, dim);
+	vsub(e, q, a, dim);
+	dd = vdot(d, d, dim);
+	t = dd > 0 ? vdot(e, d, dim) / dd : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	vaxpy(e, -t, d, dim);
+	return vdot(e, e, dim);
+}
+
 /*
  * Scale a to unit length; returns its former length (0: left alone).
  * A length whose reciprocal would overflow or be subnormal is scaled by

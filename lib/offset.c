@@ -274,28 +274,12 @@ box_dist2(const double *box, const double *q)
 	return dx * dx + dy * dy;
 }
 
-/* The squared distance from q to the segment a b. */
-static double
-seg_dist2(const double *a, const double *b, const double *q)
-{
-	double d[2], e[2], dd, t;
-
-	vsub(d, b, a, 2);
-	vsub(e, q, a, 2);
-	dd = vdot(d, d, 2);
-	t = dd > 0 ? vdot(e, d, 2) / dd : 0;
-	t = t < 0 ? 0 : t > 1 ? 1 : t;
-	e[0] -= t * d[0];
-	e[1] -= t * d[1];
-	return e[0] * e[0] + e[1] * e[1];
-}
-
 /* Whether b lies within eps of its chord: its inner control points do. */
 static int
 bz_flat(const double *b, double eps)
 {
-	return seg_dist2(b, b + 6, b + 2) <= eps * eps &&
-	    seg_dist2(b, b + 6, b + 4) <= eps * eps;
+	return vsegdist2(b, b + 6, b + 2, 2) <= eps * eps &&
+	    vsegdist2(b, b + 6, b + 4, 2) <= eps * eps;
 }
 
 /* Twice the area b sweeps about the origin, (x y' - y x') integrated:
@@ -650,7 +634,7 @@ near_bz(const double *b, const double *q, double r2, double flat, int depth)
 	if (box_dist2(box, q) >= r2)
 		return 0;
 	if (depth >= 40 || bz_flat(b, flat))
-		return seg_dist2(b, b + 6, q) < r2;
+		return vsegdist2(b, b + 6, q, 2) < r2;
 	loft_bezier_split(b, 3, 2, 0.5, l, r);
 	return near_bz(l, q, r2, flat, depth + 1) ||
 	    near_bz(r, q, r2, flat, depth + 1);
