@@ -620,6 +620,17 @@ if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
 	awk '{ n++; if ($2 != "0" || !($3 <= 4)) bad++ }
 	    END { exit !(n == 2 && !bad) }' "$T/gpin" && ok ||
 	    no "corners placed (contour, crosses, sigmas, astray, corners): $(cat "$T/gpin")"
+	# contour 33, FreeSerif's x, noise 0.1% of its size: at the foot of
+	# a stroke three points turn 90 degrees round a bend, and the two
+	# corners found at neighbouring points became one where the lines
+	# either side met, farther from the chord between the points than
+	# a corner between them can lie (at most half the chord times
+	# tan(turn / 2)).  The curve strayed 8.8 sigmas from the true
+	# outline there; with the knot at the nearer point, within 7
+	"$PY" tests/bench/glyphs_noisy.py --check 33 "$T/g.truth" >"$T/gx" 2>&1
+	awk '{ n++; if ($2 != "0" || !($3 <= 7)) bad++ }
+	    END { exit !(n == 1 && !bad) }' "$T/gx" && ok ||
+	    no "a bend's meet (contour, crosses, sigmas, astray, corners): $(cat "$T/gx")"
 else
 	echo "skip: splinefit -e on noisy glyphs (no python3 with scipy and fontTools, or no fonts)"
 fi
