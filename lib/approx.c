@@ -283,10 +283,12 @@ turns_back(const double *p, size_t n, int dim, const double *d)
 }
 
 /* The checks of the points' spread, after check_args: a closed outline
- * (or an open one with end tangents given) must not lie on a line. */
+ * (or an open one with end tangents given) must not lie on a line.
+ * Where open points pass on a line, its direction into line and 1 into
+ * *on; else 0. */
 static int
 check_input(const struct loft_approx_opts *o, const double *p, size_t n,
-    int dim, struct loft_error *err)
+    int dim, double *line, int *on, struct loft_error *err)
 {
 	double lo[LOFT_MAXDIM], hi[LOFT_MAXDIM], d[LOFT_MAXDIM];
 
@@ -303,12 +305,12 @@ check_input(const struct loft_approx_opts *o, const double *p, size_t n,
 		    "than the outline: every point is within it of the middle "
 		    "of their box (half its diagonal is %g)", o->tol,
 		    vnorm(d, dim) / 2);
-	if (!on_a_line(p, n, dim, d))
+	if (!(*on = on_a_line(p, n, dim, line)))
 		return 0;
 	if (o->closed || o->have_start || o->have_end)
 		return loft_fail(err, LOFT_EGEOM, -1, "the points all lie on a "
 		    "line: no outline to approximate");
-	if (turns_back(p, n, dim, d))
+	if (turns_back(p, n, dim, line))
 		return loft_fail(err, LOFT_EGEOM, -1, "the points all lie on a "
 		    "line and turn back along it: no outline to approximate");
 	return 0;
@@ -2454,15 +2456,15 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	struct loft_approx_info dummy;
 	size_t *corner = NULL;
 	double big = 0, dir[LOFT_MAXDIM];
-	int rc, e;
+	int rc, e, line = 0;
 
 	if (info == NULL)
 		info = &dummy;
 	memset(info, 0, sizeof *info);
 	if ((rc = check_args(o, n, dim, err)) != 0 ||
-	    (rc = check_input(o, p, n, dim, err)) != 0)
+	    (rc = check_input(o, p, n, dim, dir, &line, err)) != 0)
 		return rc;
-	if (on_a_line(p, n, dim, dir)) {        /* open, as check_input */
+	if (line) {     /* open and running one way, as check_input says */
 		collinear_runs(o, p, n, dim, dir, seg, info);
 		return 0;
 	}

@@ -353,6 +353,7 @@ def main():
     found = {"loft": [0] * 5, "potrace": [0] * 5}
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
+        tc = true_corners(heads[k], t)
         for name, opt in (("loft", []), ("loft -C", ["-C"])):
             fit = splinefit(opt, pts, sigma)
             r = res[name]
@@ -365,16 +366,15 @@ def main():
             r[2].append(hausdorff(fine(rows, sigma), dense) / sigma)
             r[3].append(len(rows))
             if not opt:
-                tally(found["loft"], corners_of(
-                    head, rows, 4 * sigma, true_corners(heads[k], t), t))
+                tally(found["loft"],
+                      corners_of(head, rows, 4 * sigma, tc, t))
         if have_potrace:
             r = res["potrace"]
             c, ns, at = potrace(pts, sigma, work)
             r[1] += crosses(c)
             r[2].append(hausdorff(c, dense) / sigma)
             r[3].append(ns)
-            tally(found["potrace"], corners_at(
-                at, 4 * sigma, true_corners(heads[k], t), t))
+            tally(found["potrace"], corners_at(at, 4 * sigma, tc, t))
     print("splinefit -e 4 sigma on %d noisy glyph contours (400 points, "
           "sigma 0.1-0.5%% of the size, no corners given)%s" %
           (len(truth), "" if have_potrace else
