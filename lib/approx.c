@@ -112,9 +112,10 @@
 #define APPROX_LINE 1e-9
 
 /* Fits kept: the fair fit through the knots is most of -e's cost, and
- * the fairing's steps refit knots they have put back as they were (a
- * step the merit refused undone, the Jacobian's last move undone), or
- * fit twice in a row; so the latest APPROX_KEPT distinct fits are kept
+ * the fairing's steps refit knots they have moved back (a step the
+ * merit refused undone, the Jacobian's last move undone: the move
+ * subtracted again, which often gives the same bits), or fit the same
+ * knots twice in a row; so the latest APPROX_KEPT distinct fits are kept
  * with the knots and corners they were fitted from, and a fit asked of
  * the same (bit for bit) is copied, not done again.  On the 200 noisy
  * glyph contours of make compare-approx (-e and -e -C) that cuts the
