@@ -178,3 +178,20 @@ loft_unit_tangent(const double *d1, int dim, double *t)
 		t[q] = a[q];
 	return 0;
 }
+
+double
+loft_joint_turn(const double *seg, size_t nseg, int dim, int closed, size_t j)
+{
+	double u[LOFT_MAXDIM], v[LOFT_MAXDIM], s[LOFT_MAXDIM];
+	size_t i = j > 0 ? j - 1 : nseg - 1;
+
+	if (j >= nseg || (j == 0 && !closed) ||
+	    loft_unit_tangent(seg + i * 4 * dim + 3 * dim, dim, u) != 0 ||
+	    loft_unit_tangent(seg + j * 4 * dim + 2 * dim, dim, v) != 0)
+		return 0;
+	/* half the angle from the chord and the sum of the unit vectors:
+	 * accurate at every angle, where acos of the dot is not near 0 */
+	for (int q = 0; q < dim; q++)
+		s[q] = u[q] + v[q];
+	return 2 * atan2(vdist(u, v, dim), vnorm(s, dim));
+}

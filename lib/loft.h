@@ -573,6 +573,16 @@ int loft_curvature(const double *d1, const double *d2, int dim, double *k);
  */
 int loft_unit_tangent(const double *d1, int dim, double *t);
 
+/*
+ * The angle (radians, 0 to pi) by which a cubic record's tangent turns
+ * at the joint where segment j of its nseg starts (rows P_A P_B P'_A
+ * P'_B of dim numbers, as loft_fit writes them): between P'_B of the
+ * segment before (the last, where closed and j is 0) and P'_A of j.
+ * 0 at the start of an open curve and where either tangent is zero.
+ */
+double loft_joint_turn(const double *seg, size_t nseg, int dim, int closed,
+    size_t j);
+
 /* ------------------------------------------------------------------ */
 /* Offsets of plane curves (offset.c)                                  */
 

@@ -631,6 +631,19 @@ if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
 	awk '{ n++; if ($2 != "0" || !($3 <= 7)) bad++ }
 	    END { exit !(n == 1 && !bad) }' "$T/gx" && ok ||
 	    no "a bend's meet (contour, crosses, sigmas, astray, corners): $(cat "$T/gx")"
+	# contours 46 and 51, FreeSerif's H and M, noise 0.25% and 0.1% of
+	# their size: corners found where a serif's top bends into its
+	# bracket, the lines either side turning by 30 degrees, but the fit
+	# through the points all but smooth there (its tangent turned by
+	# 4.6 and 5.8 degrees).  A
+	# corner found where the fit turns by less than 10 degrees is now
+	# dropped and the points fitted again: every corner left turns by
+	# 10 degrees at least (measured here from the curve written), and
+	# no curve crosses itself
+	"$PY" tests/bench/glyphs_noisy.py --check 46,51 "$T/g.truth" >"$T/gflat" 2>&1
+	awk '{ n++; if ($2 != "0" || !($6 == "-" || $6 >= 10)) bad++ }
+	    END { exit !(n == 2 && !bad) }' "$T/gflat" && ok ||
+	    no "flat corners (contour, crosses, sigmas, astray, corners, least turn): $(cat "$T/gflat")"
 else
 	echo "skip: splinefit -e on noisy glyphs (no python3 with scipy and fontTools, or no fonts)"
 fi

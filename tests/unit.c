@@ -277,6 +277,52 @@ test_curvature_cross(void)
 }
 
 /*
+ * loft_joint_turn: three segments, each with both tangents along one
+ * direction (angle 0, theta, pi) but of unlike lengths (the turn is of
+ * the directions): at joint 1 the tangent turns by theta, at joint 2 by
+ * pi - theta, and round the end of the closed curve by pi.  Angles
+ * from 1e-9 (where acos of the dot product gives 0) to near pi; in
+ * space, the same with y split evenly between y and z.
+ */
+static void
+test_joint_turn(void)
+{
+	static const double th[] = { 1e-9, 1e-4, 0.1745, 1, 2, 3.1 };
+
+	for (size_t t = 0; t < sizeof th / sizeof th[0]; t++) {
+		double seg[3][8] = { { 0 } }, sp[3][12] = { { 0 } };
+		double a[3] = { 0, th[t], M_PI };
+
+		for (int j = 0; j < 3; j++) {
+			double c = cos(a[j]), s = sin(a[j]);
+
+			seg[j][4] = (j + 2) * c;        /* P'_A */
+			seg[j][5] = (j + 2) * s;
+			seg[j][6] = (5 - j) * c;        /* P'_B */
+			seg[j][7] = (5 - j) * s;
+			sp[j][6] = seg[j][4];
+			sp[j][7] = sp[j][8] = seg[j][5] / sqrt(2);
+			sp[j][9] = seg[j][6];
+			sp[j][10] = sp[j][11] = seg[j][7] / sqrt(2);
+		}
+		NEAR(loft_joint_turn(seg[0], 3, 2, 1, 1), th[t],
+		    1e-12 * th[t], "turn at joint 1");
+		NEAR(loft_joint_turn(seg[0], 3, 2, 1, 2), M_PI - th[t],
+		    1e-12, "turn at joint 2");
+		NEAR(loft_joint_turn(seg[0], 3, 2, 1, 0), M_PI, 1e-12,
+		    "turn round the end");
+		NEAR(loft_joint_turn(sp[0], 3, 3, 1, 1), th[t],
+		    1e-12 * th[t], "turn in space");
+		CHECK(loft_joint_turn(seg[0], 3, 2, 0, 0) == 0,
+		    "an open curve's start");
+		CHECK(loft_joint_turn(seg[0], 3, 2, 1, 3) == 0, "no joint 3");
+		seg[0][6] = seg[0][7] = 0;
+		CHECK(loft_joint_turn(seg[0], 3, 2, 1, 1) == 0,
+		    "a zero tangent");
+	}
+}
+
+/*
  * Eq. 8: chord from A = (-W/2, 0) to B = (W/2, 0), tangents at angle theta
  * to it.  The circular arc through A and B with those tangents has radius
  * R = W / (2 sin theta) and its midpoint Q at height R (1 - cos theta) =
@@ -598,6 +644,7 @@ main(void)
 	test_reader_bad();
 	test_cubic_ends();
 	test_curvature_cross();
+	test_joint_turn();
 	test_eq8_midpoint();
 	test_eq9_asymmetric();
 	test_end_tangent();

@@ -298,6 +298,13 @@ def noisy(k, t, rng):
     return pts, sigma, dense
 
 
+def joint_turn(rows, j):
+    """The angle a closed cubic record's tangent turns by where its
+    segment j starts (radians)."""
+    u, v = rows[j - 1][6:8], rows[j][4:6]
+    return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u @ v))
+
+
 def fine(rows, sigma):
     """Samples of a cubic record a quarter sigma apart at most: with
     PER a segment, the truth's distance to a long segment would be its
@@ -330,10 +337,13 @@ def check(which, truth, opt):
         head, rows = records(fit.stdout)[0]
         astray = re.search(r"(\d+) spans? astray", fit.stderr)
         corners = re.search(r"corners=([0-9,]+)", head)
+        joints = [int(x) - 1 for x in corners.group(1).split(",")] \
+            if corners else []
         print(k, int(crosses(hermite(rows))),
               "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma),
-              astray.group(1) if astray else 0,
-              len(corners.group(1).split(",")) if corners else 0)
+              astray.group(1) if astray else 0, len(joints),
+              "%.1f" % min(math.degrees(joint_turn(rows, j)) for j in joints)
+              if joints else "-")
 
 
 def main():
