@@ -89,12 +89,37 @@
 
 /* A single corner's knot goes where the lines through the points
  * either side of it meet, unless they are this near parallel (the
- * square of the sine of their angle), or meet farther from its point
- * than its nearer neighbour is: the true corner lies between the point
- * and its neighbours, and a sparse outline's points miss it by up to
- * half their spacing, which a corner at the point would cut.  (Two
- * corners close together: see place_two.) */
+ * square of the sine of their angle), or meet off the path a corner
+ * can lie on: the true corner lies on the outline between the point
+ * and a neighbour, and a sparse outline's points miss it by up to half
+ * their spacing, which a corner at the point would cut.  (Two corners
+ * close together: see place_two.) */
 #define CORNER_MEET 0.01
+
+/* The path from a corner's point through its knot to a neighbour is
+ * the outline between them, about as long as the points' spacing: so
+ * the knot goes where the lines meet only where that path is no
+ * longer than the spacing beyond the neighbours (the longer of the
+ * gaps from each to the point after it), by more than CORNER_PATH
+ * times the noise (the ends of the gap and of the path are each off
+ * by the noise) and CORNER_PATH_PART of that spacing (lines through a
+ * few points either side meet off the corner by a part of it: on a
+ * square of side 100 with a point every 2.5, noise 0.05, the path
+ * through the meet was up to 5 times the noise longer than the gap).
+ * A meet farther off is out beyond the outline: where the
+ * outer lines of a chamfer one spacing long, read as one corner,
+ * cross, or where noise tilts the sides of a sharp tip.  It replaces
+ * a bound of the knot's distance from the point by the distance to
+ * the point's nearer neighbour, which let such meets through (the
+ * curves of FreeSerif's u and W strayed 5.5 and 5.4 sigmas from the
+ * true outline there, now 4.6 and 4.0).  On the noisy glyphs of make
+ * compare-approx the median
+ * Hausdorff distance of a curve from the true outline falls from 3.04
+ * to 2.95 sigmas and the 90th percentile from 4.87 to 4.62, and 639
+ * true corners of 665 are kept (638); on the next 100 the worst falls
+ * from 10.1 to 7.9 sigmas and 436 true corners of 480 are kept (434). */
+#define CORNER_PATH 3.0
+#define CORNER_PATH_PART 0.2
 
 /* Two corners found at neighbouring points are one between them, where
  * the lines either side meet; but a corner between two points lies no
@@ -563,24 +588,42 @@ hinge_ss(const struct outline *o, long lo, long j, long hi, const double *x)
 	    pinned_side(o, lo, j - 1, x) + pinned_side(o, j, hi, x));
 }
 
+/* Whether x lies where the knot of a corner at point j of o can (see
+ * CORNER_PATH): the path from the point through x to a neighbour no
+ * longer than the spacing s beyond them, by CORNER_PATH times sigma
+ * and CORNER_PATH_PART of s. */
+static int
+on_path(const struct outline *o, long j, const double *x, double sigma)
+{
+	double s = 0;
+
+	for (long d = -1; d <= 1; d += 2)
+		if (pt(o, j + d) != NULL && pt(o, j + 2 * d) != NULL)
+			s = fmax(s, vdist(pt(o, j + d), pt(o, j + 2 * d),
+			    o->dim));
+	for (long d = -1; d <= 1; d += 2)
+		if (pt(o, j + d) != NULL && vdist(pt(o, j), x, o->dim) +
+		    vdist(x, pt(o, j + d), o->dim) <= (1 + CORNER_PATH_PART) *
+		    s + CORNER_PATH * sigma)
+			return 1;
+	return 0;
+}
+
 /* The place of the knot of a single corner at point *j into x: where
  * the lines through the m points either side meet (not through *j,
- * which may lie on either side of the true corner), if that is nearer
- * the point than its nearer neighbour is, else the point itself; or *j
- * or a neighbour, where a corner pinned there fits better (see
- * CORNER_HINGE), *j then becoming that point.  sigma: the noise. */
+ * which may lie on either side of the true corner), if a corner can
+ * lie there (on_path), else the point itself; or *j or a neighbour,
+ * where a corner pinned there fits better (see CORNER_HINGE), *j then
+ * becoming that point.  sigma: the noise. */
 static void
 place(const struct outline *o, long *j, long m, double sigma, double *x)
 {
 	const double *p = pt(o, *j);
 	long h = CORNER_HINGE, at = *j;
-	double room = HUGE_VAL, best;
+	double best;
 
-	for (long d = -1; d <= 1; d += 2)
-		if (pt(o, at + d) != NULL)
-			room = fmin(room, vdist(p, pt(o, at + d), o->dim));
 	if (!sides_meet(o, at - 1, at + 1, m, x, NULL) ||
-	    !(vdist(x, p, o->dim) <= room))
+	    !on_path(o, at, x, sigma))
 		vcopy(x, p, o->dim);
 	best = hinge_ss(o, at - h, at, at + h, x) - CORNER_PIN * sigma * sigma;
 	for (long d = -1; d <= 1; d++) {

@@ -274,8 +274,8 @@ def pct(v, q):
 
 def report(name, fails, loops, dist, nseg):
     print("  %-9s failures %d, self-crossing curves %d; Hausdorff distance "
-          "to the true outline in sigmas: median %.1f, 90%% %.1f, worst "
-          "%.1f; segments: median %d, 90%% %d" %
+          "to the true outline in sigmas: median %.2f, 90%% %.2f, worst "
+          "%.2f; segments: median %d, 90%% %d" %
           (name, fails, loops, pct(dist, 0.5), pct(dist, 0.9),
            max(dist) if dist else float("nan"), pct(nseg, 0.5),
            pct(nseg, 0.9)))
