@@ -413,14 +413,17 @@ approx_flat(struct opts *o, const struct loft_record *rec,
 	size_t k = 0, *corner = malloc((*nc + 1) * sizeof *corner);
 	double *at = malloc((*nc + 1) * dim * sizeof *at), *seg = NULL;
 
-	for (size_t c = 0; corner != NULL && at != NULL && c < *nc; c++)
-		if (loft_joint_turn(o->seg, info->nseg, dim, ao->closed,
-		    joint_at(o, info->nseg, o->cornerat + c * dim, dim)) >=
-		    APPROX_FLAT_TURN) {
-			corner[k] = o->corner[c];
-			memcpy(at + k++ * dim, o->cornerat + c * dim,
-			    dim * sizeof *at);
-		}
+	for (size_t c = 0; corner != NULL && at != NULL && c < *nc; c++) {
+		size_t j = joint_at(o, info->nseg, o->cornerat + c * dim, dim);
+
+		/* (one not a joint, or at an open curve's start, is kept) */
+		if (j < info->nseg && (j > 0 || ao->closed) &&
+		    loft_joint_turn(o->seg, info->nseg, dim, ao->closed, j) <
+		    APPROX_FLAT_TURN)
+			continue;
+		corner[k] = o->corner[c];
+		memcpy(at + k++ * dim, o->cornerat + c * dim, dim * sizeof *at);
+	}
 	fo.corner = corner;
 	fo.corner_at = at;
 	fo.ncorner = k;

@@ -106,18 +106,18 @@
  * few points either side meet off the corner by a part of it: on a
  * square of side 100 with a point every 2.5, noise 0.05, the path
  * through the meet was up to 5 times the noise longer than the gap).
- * A meet farther off is out beyond the outline: where the
- * outer lines of a chamfer one spacing long, read as one corner,
- * cross, or where noise tilts the sides of a sharp tip.  It replaces
- * a bound of the knot's distance from the point by the distance to
- * the point's nearer neighbour, which let such meets through (the
- * curves of FreeSerif's u and W strayed 5.5 and 5.4 sigmas from the
- * true outline there, now 4.6 and 4.0).  On the noisy glyphs of make
- * compare-approx the median
- * Hausdorff distance of a curve from the true outline falls from 3.04
- * to 2.95 sigmas and the 90th percentile from 4.87 to 4.62, and 639
- * true corners of 665 are kept (638); on the next 100 the worst falls
- * from 10.1 to 7.9 sigmas and 436 true corners of 480 are kept (434). */
+ * A meet farther off is out beyond the outline: where the outer lines
+ * of a chamfer one spacing long, read as one corner, cross, or where
+ * noise tilts the sides of a sharp tip.  It replaces a bound of the
+ * knot's distance from the point by the distance to the point's
+ * nearer neighbour, which let such meets through (the curves of
+ * FreeSerif's u and W strayed 5.5 and 5.4 sigmas from the true outline
+ * there, now 4.6 and 4.0).  On the noisy glyphs of make compare-approx
+ * the median Hausdorff distance of a curve from the true outline falls
+ * from 3.04 to 2.95 sigmas and the 90th percentile from 4.87 to 4.62,
+ * and 639 true corners of 665 are kept (638); on the next 100 the
+ * worst falls from 10.1 to 7.9 sigmas and 436 true corners of 480 are
+ * kept (434). */
 #define CORNER_PATH 3.0
 #define CORNER_PATH_PART 0.2
 
