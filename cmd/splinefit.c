@@ -395,23 +395,59 @@ joint_at(const struct opts *o, size_t nseg, const double *x, int dim)
 }
 
 /*
+ * -e: the points fitted again with the k corners corner[] (points) at
+ * at[] (their knots) only, into o->seg and *info in place of the fit
+ * there, the corners into o->corner and o->cornerat and k into *nc,
+ * where no more than most of the new fit's spans are astray; else
+ * nothing changed.  Returns 0, or LOFT_ENOMEM.
+ */
+static int
+approx_refit(struct opts *o, const struct loft_record *rec,
+    const struct loft_approx_opts *ao, const size_t *corner,
+    const double *at, size_t k, size_t most,
+    struct loft_approx_info *info, size_t *nc, struct loft_error *err)
+{
+	struct loft_approx_opts ro = *ao;
+	struct loft_approx_info ri;
+	struct loft_error re;
+	int dim = rec->ncols, rc;
+	double *seg = malloc(4 * (size_t)dim * rec->nrows * sizeof *seg);
+
+	if (seg == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	ro.corner = k > 0 ? corner : NULL;
+	ro.corner_at = k > 0 ? at : NULL;
+	ro.ncorner = k;
+	rc = loft_approx(&ro, rec->num, rec->nrows, dim, seg, &ri, &re);
+	if (rc == 0 && ri.astray <= most) {
+		memcpy(o->seg, seg, 4 * (size_t)dim * ri.nseg * sizeof *seg);
+		*info = ri;
+		if (k > 0) {
+			memcpy(o->corner, corner, k * sizeof *corner);
+			memcpy(o->cornerat, at, k * dim * sizeof *at);
+		}
+		*nc = k;
+	}
+	free(seg);
+	if (rc == LOFT_ENOMEM)
+		return loft_fail(err, rc, -1, "out of memory");
+	return 0;
+}
+
+/*
  * -e, where the fit turns by less than APPROX_FLAT_TURN at some of the
- * nc corners splinefit found: the fit without them into o->seg and
- * *info in its stead, the corners left into o->corner and o->cornerat
- * and their count into *nc, where no more of its spans are astray;
- * else nothing changed.  Returns 0, or LOFT_ENOMEM.
+ * nc corners splinefit found: the fit without them in its stead
+ * (approx_refit), where no more of its spans are astray.  Returns 0,
+ * or LOFT_ENOMEM.
  */
 static int
 approx_flat(struct opts *o, const struct loft_record *rec,
     const struct loft_approx_opts *ao, struct loft_approx_info *info,
     size_t *nc, struct loft_error *err)
 {
-	struct loft_approx_opts fo = *ao;
-	struct loft_approx_info fi;
-	struct loft_error fe;
 	int dim = rec->ncols, rc = 0;
 	size_t k = 0, *corner = malloc((*nc + 1) * sizeof *corner);
-	double *at = malloc((*nc + 1) * dim * sizeof *at), *seg = NULL;
+	double *at = malloc((*nc + 1) * dim * sizeof *at);
 
 	for (size_t c = 0; corner != NULL && at != NULL && c < *nc; c++) {
 		size_t j = joint_at(o, info->nseg, o->cornerat + c * dim, dim);
@@ -424,63 +460,30 @@ approx_flat(struct opts *o, const struct loft_record *rec,
 		corner[k] = o->corner[c];
 		memcpy(at + k++ * dim, o->cornerat + c * dim, dim * sizeof *at);
 	}
-	fo.corner = corner;
-	fo.corner_at = at;
-	fo.ncorner = k;
-	if (corner == NULL || at == NULL || (k < *nc && (seg = malloc(4 *
-	    (size_t)dim * rec->nrows * sizeof *seg)) == NULL))
-		rc = LOFT_ENOMEM;
-	else if (k < *nc && (rc = loft_approx(&fo, rec->num, rec->nrows, dim,
-	    seg, &fi, &fe)) == 0 && fi.astray <= info->astray) {
-		memcpy(o->seg, seg, 4 * (size_t)dim * fi.nseg * sizeof *seg);
-		*info = fi;
-		memcpy(o->corner, corner, k * sizeof *corner);
-		memcpy(o->cornerat, at, k * dim * sizeof *at);
-		*nc = k;
-	}
+	if (corner == NULL || at == NULL)
+		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	else if (k < *nc)
+		rc = approx_refit(o, rec, ao, corner, at, k, info->astray,
+		    info, nc, err);
 	free(corner);
 	free(at);
-	free(seg);
-	if (rc == LOFT_ENOMEM)
-		return loft_fail(err, rc, -1, "out of memory");
-	return 0;
+	return rc;
 }
 
 /*
  * -e, where the corners splinefit found leave a fit that strays from the
  * points or crosses itself (info->astray spans fail the check both
- * ways): the fit without them into o->seg and *info in its stead, *nc
- * then 0, where that fit passes both checks (a false corner among
- * sparse noisy points can pin a knot the curve loops about); else
- * nothing changed.  Returns 0, or LOFT_ENOMEM.
+ * ways): the fit without them in its stead (approx_refit), *nc then 0,
+ * where that fit passes both checks (a false corner among sparse noisy
+ * points can pin a knot the curve loops about).  Returns 0, or
+ * LOFT_ENOMEM.
  */
 static int
 approx_smooth(struct opts *o, const struct loft_record *rec,
     const struct loft_approx_opts *ao, struct loft_approx_info *info,
     size_t *nc, struct loft_error *err)
 {
-	struct loft_approx_opts so = *ao;
-	struct loft_approx_info si;
-	struct loft_error se;
-	double *seg = malloc(4 * (size_t)rec->ncols * rec->nrows * sizeof *seg);
-	int rc;
-
-	if (seg == NULL)
-		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	so.corner = NULL;
-	so.corner_at = NULL;
-	so.ncorner = 0;
-	rc = loft_approx(&so, rec->num, rec->nrows, rec->ncols, seg, &si, &se);
-	if (rc == 0 && si.astray == 0) {
-		memcpy(o->seg, seg, 4 * (size_t)rec->ncols * si.nseg *
-		    sizeof *seg);
-		*info = si;
-		*nc = 0;
-	}
-	free(seg);
-	if (rc == LOFT_ENOMEM)
-		return loft_fail(err, rc, -1, "out of memory");
-	return 0;
+	return approx_refit(o, rec, ao, NULL, NULL, 0, 0, info, nc, err);
 }
 
 /* -e: the fair curve within o->approx of the points (loft_approx). */
