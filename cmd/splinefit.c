@@ -35,6 +35,7 @@ struct opts {
 	double *seg, *other;            /* scratch, grown as records need */
 	double *knots;                  /* the knots kept after merging */
 	double *cornerat;               /* -e: the corners' knots found */
+	unsigned char *astray;          /* -e: the segments astray */
 	size_t *keep, *into, *corner;   /* their rows, where each row went,
 	                                 * the corners */
 	size_t *straight, nstraight;    /* the straight spans, 0-based */
@@ -111,6 +112,8 @@ grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 		o->cornerat = v;
 	if (v && (v = realloc(o->straight, rows * sizeof *o->straight)) != NULL)
 		o->straight = v;
+	if (v && (v = realloc(o->astray, rows)) != NULL)
+		o->astray = v;
 	if (v == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	o->segcap = need;
@@ -412,15 +415,21 @@ approx_refit(struct opts *o, const struct loft_record *rec,
 	struct loft_error re;
 	int dim = rec->ncols, rc;
 	double *seg = malloc(4 * (size_t)dim * rec->nrows * sizeof *seg);
+	unsigned char *astray = malloc(rec->nrows + 1);
 
-	if (seg == NULL)
+	if (seg == NULL || astray == NULL) {
+		free(seg);
+		free(astray);
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	}
+	ro.astray = astray;
 	ro.corner = k > 0 ? corner : NULL;
 	ro.corner_at = k > 0 ? at : NULL;
 	ro.ncorner = k;
 	rc = loft_approx(&ro, rec->num, rec->nrows, dim, seg, &ri, &re);
 	if (rc == 0 && ri.astray <= most) {
 		memcpy(o->seg, seg, 4 * (size_t)dim * ri.nseg * sizeof *seg);
+		memcpy(o->astray, astray, rec->nrows);
 		*info = ri;
 		if (k > 0) {
 			memcpy(o->corner, corner, k * sizeof *corner);
@@ -429,20 +438,41 @@ approx_refit(struct opts *o, const struct loft_record *rec,
 		*nc = k;
 	}
 	free(seg);
+	free(astray);
 	if (rc == LOFT_ENOMEM)
 		return loft_fail(err, rc, -1, "out of memory");
 	return 0;
 }
 
+/* Whether the corner at joint j of the nseg segments in o->seg is flat:
+ * the fit turns by less than APPROX_FLAT_TURN there. */
+static int
+flat_at(const struct opts *o, size_t nseg, int dim, int closed, size_t j)
+{
+	return loft_joint_turn(o->seg, nseg, dim, closed, j) < APPROX_FLAT_TURN;
+}
+
+/* Whether the corner at joint j of the nseg segments in o->seg is at an
+ * end of a segment astray (o->astray). */
+static int
+astray_at(const struct opts *o, size_t nseg, int dim, int closed, size_t j)
+{
+	(void)dim;
+	return o->astray[j] || o->astray[j > 0 ? j - 1 : closed ? nseg - 1 :
+	    j];
+}
+
 /*
- * -e, where the fit turns by less than APPROX_FLAT_TURN at some of the
- * nc corners splinefit found: the fit without them in its stead
- * (approx_refit), where no more of its spans are astray.  Returns 0,
- * or LOFT_ENOMEM.
+ * -e: the fit with those of the nc corners splinefit found where drop()
+ * says so (at their joints) left out, in place of the fit there
+ * (approx_refit), where no more than most of its spans are astray.  A
+ * corner that is no joint, or at an open curve's start, is kept.
+ * Returns 0, or LOFT_ENOMEM.
  */
 static int
-approx_flat(struct opts *o, const struct loft_record *rec,
-    const struct loft_approx_opts *ao, struct loft_approx_info *info,
+approx_without(struct opts *o, const struct loft_record *rec,
+    const struct loft_approx_opts *ao, int (*drop)(const struct opts *,
+    size_t, int, int, size_t), size_t most, struct loft_approx_info *info,
     size_t *nc, struct loft_error *err)
 {
 	int dim = rec->ncols, rc = 0;
@@ -452,10 +482,8 @@ approx_flat(struct opts *o, const struct loft_record *rec,
 	for (size_t c = 0; corner != NULL && at != NULL && c < *nc; c++) {
 		size_t j = joint_at(o, info->nseg, o->cornerat + c * dim, dim);
 
-		/* (one not a joint, or at an open curve's start, is kept) */
 		if (j < info->nseg && (j > 0 || ao->closed) &&
-		    loft_joint_turn(o->seg, info->nseg, dim, ao->closed, j) <
-		    APPROX_FLAT_TURN)
+		    drop(o, info->nseg, dim, ao->closed, j))
 			continue;
 		corner[k] = o->corner[c];
 		memcpy(at + k++ * dim, o->cornerat + c * dim, dim * sizeof *at);
@@ -463,8 +491,8 @@ approx_flat(struct opts *o, const struct loft_record *rec,
 	if (corner == NULL || at == NULL)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	else if (k < *nc)
-		rc = approx_refit(o, rec, ao, corner, at, k, info->astray,
-		    info, nc, err);
+		rc = approx_refit(o, rec, ao, corner, at, k, most, info, nc,
+		    err);
 	free(corner);
 	free(at);
 	return rc;
@@ -473,16 +501,23 @@ approx_flat(struct opts *o, const struct loft_record *rec,
 /*
  * -e, where the corners splinefit found leave a fit that strays from the
  * points or crosses itself (info->astray spans fail the check both
- * ways): the fit without them in its stead (approx_refit), *nc then 0,
- * where that fit passes both checks (a false corner among sparse noisy
- * points can pin a knot the curve loops about).  Returns 0, or
- * LOFT_ENOMEM.
+ * ways): the fit without those at the ends of the segments astray in
+ * its stead, else the fit without any (approx_without), the first that
+ * passes both checks (a false corner among sparse noisy points can pin
+ * a knot the curve loops about; the others are most often true).
+ * Returns 0, or LOFT_ENOMEM.
  */
 static int
 approx_smooth(struct opts *o, const struct loft_record *rec,
     const struct loft_approx_opts *ao, struct loft_approx_info *info,
     size_t *nc, struct loft_error *err)
 {
+	size_t n0 = *nc;
+
+	if (approx_without(o, rec, ao, astray_at, 0, info, nc, err) != 0)
+		return LOFT_ENOMEM;
+	if (*nc < n0)
+		return 0;
 	return approx_refit(o, rec, ao, NULL, NULL, 0, 0, info, nc, err);
 }
 
@@ -510,12 +545,14 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	}
 	ao.corner = o->corner;
 	ao.ncorner = nc;
+	ao.astray = o->astray;
 	if (o->rounds > 0)
 		ao.maxround = o->rounds;
 	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
 	    err)) != 0)
 		return rc;
-	if (found && nc > 0 && approx_flat(o, rec, &ao, &info, &nc, err) != 0)
+	if (found && nc > 0 && approx_without(o, rec, &ao, flat_at,
+	    info.astray, &info, &nc, err) != 0)
 		return LOFT_ENOMEM;
 	if (found && nc > 0 && info.astray > 0 &&
 	    approx_smooth(o, rec, &ao, &info, &nc, err) != 0)
@@ -721,6 +758,7 @@ main(int argc, char *argv[])
 	free(o.into);
 	free(o.corner);
 	free(o.cornerat);
+	free(o.astray);
 	free(o.straight);
 	return status;
 }

@@ -2197,18 +2197,36 @@ fair_wiggles(struct work *w)
 	return rc;
 }
 
+/* The span the curve written starts with: the one the input's first
+ * point lies on (closed), else the first. */
+static size_t
+first_span(const struct work *w)
+{
+	return w->closed ? w->fj[(w->n - w->shift) % w->n] : 0;
+}
+
 /* The segments into seg from the start of the input: a closed curve's
  * rotated so the span of the input's first point comes first. */
 static void
 put_segments(const struct work *w, double *seg)
 {
-	size_t ns = nseg_of(w), row = 4 * w->dim, first = 0;
+	size_t ns = nseg_of(w), row = 4 * w->dim, first = first_span(w);
 
-	if (w->closed)
-		first = w->fj[(w->n - w->shift) % w->n];
 	for (size_t j = 0; j < ns; j++)
 		memcpy(seg + j * row, w->seg + ((j + first) % ns) * row,
 		    row * sizeof *seg);
+}
+
+/* The spans check_spans marked astray (where it found bad > 0 of them)
+ * as flags in the order of put_segments, into astray. */
+static void
+put_astray(const struct work *w, size_t bad, unsigned char *astray)
+{
+	size_t ns = nseg_of(w), first = first_span(w);
+
+	for (size_t j = 0; j < ns; j++)
+		astray[j] = bad > 0 &&
+		    w->spanmax[(j + first) % ns] == APPROX_FORCE;
 }
 
 void
@@ -2466,6 +2484,8 @@ approx_tries(struct work *w, const struct loft_approx_opts *o,
 			*info = *ip;
 			info->astray = bad;
 			put_segments(w, seg);
+			if (o->astray != NULL)
+				put_astray(w, bad, o->astray);
 		}
 	}
 	return rc;
@@ -2521,6 +2541,8 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	if (info == NULL)
 		info = &dummy;
 	memset(info, 0, sizeof *info);
+	if (o->astray != NULL)
+		memset(o->astray, 0, n);
 	if ((rc = check_args(o, n, dim, err)) != 0 ||
 	    (rc = check_input(o, p, n, dim, dir, &line, err)) != 0)
 		return rc;

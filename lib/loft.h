@@ -445,6 +445,10 @@ struct loft_approx_opts {
 	                                 * NULL: the points themselves */
 	size_t ncorner;
 	int maxround;           /* rounds of splitting at most, >= 1 */
+	unsigned char *astray;  /* NULL, or room for n flags (n points):
+	                         * astray[j] set where segment j of the
+	                         * curve fails the check both ways (see
+	                         * loft_approx_info's astray) */
 };
 
 /* Closed, no corners, no end tangents, LOFT_APPROX_ROUNDS; tol is the
@@ -482,7 +486,8 @@ struct loft_approx_info {
  * loft_cubic_eval, at most n of them: seg must hold 4 * dim * n
  * doubles.  info (may be NULL) gets the knots, segments, the largest
  * distance and its point, and how many spans fail the check both ways
- * (the fit that fails on fewest is written where none passes).  Open
+ * (the fit that fails on fewest is written where none passes), and,
+ * where o->astray is not NULL, which of its segments do.  Open
  * points all on a line, running one way along it, are the straight
  * segments between the first, the corners, and the last.
  * Returns 0, or LOFT_EINPUT (dim, tol not positive and finite, tol at

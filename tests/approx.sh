@@ -683,6 +683,17 @@ if [ "$glyphs" = 200 ]; then
 	    $1 == "C3" { n++; if ($2 == "1" && !($4 > 0)) bad++ }
 	    END { exit !(NR == 3 && n == 3 && !bad) }' "$T/hstray" && ok ||
 	    no "astray (contour, crosses, sigmas, spans): $(cat "$T/hstray")"
+	# contour 144 of the corpus, a Linux Libertine T: a corner found
+	# left the fit astray after every try, and the fit without all 10
+	# corners found was written, keeping none of the T's 8.  The fit
+	# without only the corners at the ends of the spans astray is tried
+	# first, and it passes: 6 of the 8 true corners kept at least (7
+	# here), no span astray, not crossing itself
+	"$PY" tests/bench/glyphs_noisy.py --check 144 "$T/g.truth" \
+	    --knots "$T/g.knots" >"$T/gT" 2>&1
+	awk '{ n++; if ($2 != "0" || $4 != "0" || !($7 >= 6) || $8 != 8) bad++ }
+	    END { exit !(n == 1 && !bad) }' "$T/gT" && ok ||
+	    no "corners at spans astray (contour, crosses, sigmas, spans, corners, least turn, kept, true): $(cat "$T/gT")"
 else
 	echo "skip: splinefit -e on noisy glyphs astray (no python3 with scipy and fontTools, or fewer than 200 contours)"
 fi

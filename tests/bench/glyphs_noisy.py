@@ -3,7 +3,7 @@
 beside potrace tracing the same points rasterised.
 
     glyphs_noisy.py TRUTH WORKDIR [KNOTS]
-    glyphs_noisy.py --check K,K... TRUTH [OPTION...]
+    glyphs_noisy.py --check K,K... TRUTH [--knots KNOTS] [OPTION...]
 
 TRUTH: the designer's outlines of tests/glyphs.py (200 points a
 segment); KNOTS: its knot records, whose corners= name the true
@@ -32,8 +32,10 @@ With --check, only contours K (from 0) are fitted, by splinefit -e
 curve crosses itself (1) or not (0), its Hausdorff distance to the
 true outline in sigmas (its curve sampled densely enough, a quarter
 sigma apart, for that distance to be the curve's, not its samples'),
-the spans splinefit -v says are astray (0 where it says none), and
-the corners of the curve (its corners= joints)."""
+the spans splinefit -v says are astray (0 where it says none), the
+corners of the curve (its corners= joints), and the least angle its
+tangent turns by at one, in degrees (- where it has none); with
+--knots, also the true corners kept and how many there are, as above."""
 import math
 import os
 import random
@@ -323,8 +325,10 @@ def splinefit(opt, pts, sigma):
                           capture_output=True, text=True)
 
 
-def check(which, truth, opt):
-    """The --check lines for contours which, fitted with opt."""
+def check(which, truth, opt, heads=None):
+    """The --check lines for contours which, fitted with opt; with the
+    knot records' heads (their corners), the true corners kept and
+    wanted too."""
     rng = random.Random(23)
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
@@ -343,14 +347,19 @@ def check(which, truth, opt):
               "%.2f" % (hausdorff(fine(rows, sigma), dense) / sigma),
               astray.group(1) if astray else 0, len(joints),
               "%.1f" % min(math.degrees(joint_turn(rows, j)) for j in joints)
-              if joints else "-")
+              if joints else "-",
+              *(corners_of(head, rows, 4 * sigma, true_corners(heads[k], t),
+                           t)[:2] if heads else ()))
 
 
 def main():
     if sys.argv[1] == "--check":
+        opt, heads = sys.argv[4:], None
+        if opt[:1] == ["--knots"]:
+            heads = [h for h, _ in records(open(opt[1]).read())]
+            opt = opt[2:]
         check([int(x) for x in sys.argv[2].split(",")],
-              [r for _, r in records(open(sys.argv[3]).read())],
-              sys.argv[4:])
+              [r for _, r in records(open(sys.argv[3]).read())], opt, heads)
         return
     truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
