@@ -466,14 +466,15 @@ astray_at(const struct opts *o, size_t nseg, int dim, int closed, size_t j)
  * -e: the fit with those of the nc corners splinefit found where drop()
  * says so (at their joints) left out, in place of the fit there
  * (approx_refit), where no more than most of its spans are astray.  A
- * corner that is no joint, or at an open curve's start, is kept.
- * Returns 0, or LOFT_ENOMEM.
+ * corner that is no joint, or at an open curve's start, is kept.  No
+ * fit is tried where fewer than fewest corners are left.  Returns 0,
+ * or LOFT_ENOMEM.
  */
 static int
 approx_without(struct opts *o, const struct loft_record *rec,
     const struct loft_approx_opts *ao, int (*drop)(const struct opts *,
-    size_t, int, int, size_t), size_t most, struct loft_approx_info *info,
-    size_t *nc, struct loft_error *err)
+    size_t, int, int, size_t), size_t fewest, size_t most,
+    struct loft_approx_info *info, size_t *nc, struct loft_error *err)
 {
 	int dim = rec->ncols, rc = 0;
 	size_t k = 0, *corner = malloc((*nc + 1) * sizeof *corner);
@@ -490,7 +491,7 @@ approx_without(struct opts *o, const struct loft_record *rec,
 	}
 	if (corner == NULL || at == NULL)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	else if (k < *nc)
+	else if (k < *nc && k >= fewest)
 		rc = approx_refit(o, rec, ao, corner, at, k, most, info, nc,
 		    err);
 	free(corner);
@@ -502,10 +503,10 @@ approx_without(struct opts *o, const struct loft_record *rec,
  * -e, where the corners splinefit found leave a fit that strays from the
  * points or crosses itself (info->astray spans fail the check both
  * ways): the fit without those at the ends of the segments astray in
- * its stead, else the fit without any (approx_without), the first that
- * passes both checks (a false corner among sparse noisy points can pin
- * a knot the curve loops about; the others are most often true).
- * Returns 0, or LOFT_ENOMEM.
+ * its stead, where some are left (approx_without), else the fit without
+ * any, the first that passes both checks (a false corner among sparse
+ * noisy points can pin a knot the curve loops about; the others are
+ * most often true).  Returns 0, or LOFT_ENOMEM.
  */
 static int
 approx_smooth(struct opts *o, const struct loft_record *rec,
@@ -514,7 +515,7 @@ approx_smooth(struct opts *o, const struct loft_record *rec,
 {
 	size_t n0 = *nc;
 
-	if (approx_without(o, rec, ao, astray_at, 0, info, nc, err) != 0)
+	if (approx_without(o, rec, ao, astray_at, 1, 0, info, nc, err) != 0)
 		return LOFT_ENOMEM;
 	if (*nc < n0)
 		return 0;
@@ -551,7 +552,7 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
 	    err)) != 0)
 		return rc;
-	if (found && nc > 0 && approx_without(o, rec, &ao, flat_at,
+	if (found && nc > 0 && approx_without(o, rec, &ao, flat_at, 0,
 	    info.astray, &info, &nc, err) != 0)
 		return LOFT_ENOMEM;
 	if (found && nc > 0 && info.astray > 0 &&
