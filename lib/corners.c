@@ -159,6 +159,25 @@
  * CORNER_TURN as any corner must). */
 #define CORNER_ECHO 2
 
+/* A corner settled alone that explains a turn this much (radians, 57
+ * degrees) less than its candidate's over the scale (the angle between
+ * the lines either side of it, against the candidate's turn) may hide
+ * a second within the scale: a tip a few points from a shallower
+ * corner, whose turns at the scale merge into one, sharpest between
+ * them, where the settling finds the one that fits the points best.
+ * So the candidates at CORNER_FINER of the scale within the scale of
+ * it are settled too, where they turn by this much at least; each is
+ * taken only where it adds one corner, within the scale of the first
+ * (where it adds two, noise on a bend made them).  On the noisy glyphs
+ * of make compare-approx this finds the 129-degree tip of FreeSerif's
+ * a, 26 units from a 42-degree corner (its curve's Hausdorff distance
+ * from the true outline falls from 4.9 to 2.8 sigmas) and one more
+ * true corner elsewhere: 641 of 665 kept (639), no false one added;
+ * the next 100 contours do not change.  At 0.4 or 0.67 of the scale,
+ * 640 are kept, again with no false one added. */
+#define CORNER_HIDDEN 1.0
+#define CORNER_FINER 0.5
+
 /* Power iterations for a principal axis (a 2 x 2 converges in a few). */
 #define CORNER_POWER 32
 
@@ -746,45 +765,152 @@ wrap(const struct outline *o, long j)
 	return (size_t)((j % (long)o->n + (long)o->n) % (long)o->n);
 }
 
-/* Settle each candidate, sharpest first, the corners and their
- * knots' places into f (their count into *nc); the points within the
- * scale of each corner settled are taken: turns there are its echoes. */
-static void
-settle_all(const struct outline *o, const size_t *cand, size_t ncand,
-    const long *half, double sigma, unsigned char *taken, struct found *f,
-    size_t *nc)
+/* The search's state: the points taken (turns there are echoes of a
+ * corner settled), those that may hide a corner (see CORNER_HIDDEN),
+ * and the corners found, nc of them. */
+struct sought {
+	unsigned char *taken, *hide;
+	struct found *f;
+	size_t nc;
+};
+
+/* The knots' places of the corner or two settled (k of them) at points
+ * c into at (see place, place_gap and place_two), c moving with them;
+ * returns how many corners are left (two at neighbouring points may
+ * become one). */
+static int
+place_all(const struct outline *o, int k, long *c, long m, double sigma,
+    double at[2][LOFT_MAXDIM])
 {
+	if (k == 2 && c[1] == c[0] + 1 && place_gap(o, &c[0], m, sigma,
+	    at[0]))
+		return 1;
+	if (k == 1)
+		place(o, &c[0], m, sigma, at[0]);
+	else if (!place_two(o, &c[0], &c[1], m, sigma, at[0], at[1])) {
+		vcopy(at[0], pt(o, c[0]), o->dim);
+		vcopy(at[1], pt(o, c[1]), o->dim);
+	}
+	return k;
+}
+
+/* How many of the k corners at points c are new (at a point not
+ * taken, and not the first's), the last of them into *q. */
+static int
+fresh(const struct outline *o, const long *c, int k,
+    const unsigned char *taken, int *q)
+{
+	int nnew = 0;
+
+	for (int x = 0; x < k; x++)
+		if (!taken[wrap(o, c[x])] && !(x == 1 &&
+		    wrap(o, c[1]) == wrap(o, c[0]))) {
+			nnew++;
+			*q = x;
+		}
+	return nnew;
+}
+
+/* Add the new ones of the k corners at points c, their knots at at, to
+ * s, and take the points within m of each, but the outermost
+ * CORNER_ECHO either side. */
+static void
+take(const struct outline *o, const long *c, double at[2][LOFT_MAXDIM],
+    int k, long m, struct sought *s)
+{
+	for (int q = 0; q < k; q++) {
+		size_t j = wrap(o, c[q]);
+
+		if (s->taken[j] || (q == 1 && j == wrap(o, c[0])))
+			continue;
+		s->f[s->nc].i = j;
+		vcopy(s->f[s->nc].at, at[q], o->dim);
+		s->nc++;
+	}
+	for (int q = 0; q < k; q++)
+		for (long d = CORNER_ECHO - m; d <= m - CORNER_ECHO; d++)
+			if (pt(o, c[q] + d) != NULL)
+				s->taken[wrap(o, c[q] + d)] = 1;
+}
+
+/* The turn a single corner at point c, settled from the candidate at
+ * point i with m points either side, explains: the angle between the
+ * lines through the points of its window before and after it (0 where
+ * a line is missing). */
+static double
+explained(const struct outline *o, long i, long m, long c)
+{
+	struct line u, v;
+
+	return fit_line(o, i - 2 * m, c - i + 2 * m + 1, &u) &&
+	    fit_line(o, c, i + 2 * m - c + 1, &v) ? angle(u.d, v.d, o->dim) :
+	    0;
+}
+
+/* Mark the points within len of point c of o, either side, as ones
+ * that may hide a corner. */
+static void
+may_hide(const struct outline *o, long c, double len, unsigned char *hide)
+{
+	for (long d = -reach(o, c, -1, len); d <= reach(o, c, 1, len); d++)
+		hide[wrap(o, c + d)] = 1;
+}
+
+/* Settle each candidate (their turns at the scale len in turn),
+ * sharpest first, the corners and their knots' places into s.  Where
+ * a corner settled alone explains CORNER_HIDDEN less than its
+ * candidate's turn, the points within len of it may hide another.
+ * Returns how many corners may. */
+static size_t
+settle_all(const struct outline *o, const size_t *cand, size_t ncand,
+    const long *half, const double *turn, double len, double sigma,
+    struct sought *s)
+{
+	size_t hiding = 0;
+
 	for (size_t x = 0; x < ncand; x++) {
 		long i = (long)cand[x], m = half[i] > 2 ? half[i] : 2, c[2];
 		double at[2][LOFT_MAXDIM];
-		int k;
+		int k, hides;
 
-		if (taken[i])
-			continue;
-		if ((k = settle(o, i, m, m, sigma, &c[0], &c[1])) == 0)
+		if (s->taken[i] ||
+		    (k = settle(o, i, m, m, sigma, &c[0], &c[1])) == 0)
 			continue;       /* a bend: its points stay free */
-		if (k == 2 && c[1] == c[0] + 1 &&
-		    place_gap(o, &c[0], m, sigma, at[0])) {
-			k = 1;
-		} else if (k == 1) {
-			place(o, &c[0], m, sigma, at[0]);
-		} else if (!place_two(o, &c[0], &c[1], m, sigma, at[0], at[1])) {
-			vcopy(at[0], pt(o, c[0]), o->dim);
-			vcopy(at[1], pt(o, c[1]), o->dim);
+		hides = k == 1 &&
+		    turn[i] - explained(o, i, m, c[0]) > CORNER_HIDDEN;
+		k = place_all(o, k, c, m, sigma, at);
+		if (hides && !s->taken[wrap(o, c[0])]) {
+			may_hide(o, c[0], len, s->hide);
+			hiding++;
 		}
-		for (int q = 0; q < k; q++) {
-			size_t j = wrap(o, c[q]);
+		take(o, c, at, k, m, s);
+	}
+	return hiding;
+}
 
-			if (taken[j] || (q == 1 && j == wrap(o, c[0])))
-				continue;
-			f[*nc].i = j;
-			vcopy(f[*nc].at, at[q], o->dim);
-			++*nc;
-		}
-		for (int q = 0; q < k; q++)
-			for (long d = CORNER_ECHO - m; d <= m - CORNER_ECHO; d++)
-				if (pt(o, c[q] + d) != NULL)
-					taken[wrap(o, c[q] + d)] = 1;
+/* Settle the candidates at CORNER_FINER of the scale len (their turns
+ * there in turn) that may hide a corner, and turn by CORNER_HIDDEN at
+ * least, into s: each only where it adds one corner, at a point that
+ * may hide one (see CORNER_HIDDEN). */
+static void
+settle_hidden(const struct outline *o, const size_t *cand, size_t ncand,
+    const double *turn, double len, double sigma, struct sought *s)
+{
+	for (size_t x = 0; x < ncand; x++) {
+		long i = (long)cand[x], m = reach(o, i, 1, CORNER_FINER * len);
+		long c[2];
+		double at[2][LOFT_MAXDIM];
+		int k, q = 0;
+
+		if (m < 2)
+			m = 2;
+		if (s->taken[i] || !s->hide[i] || turn[i] < CORNER_HIDDEN ||
+		    (k = settle(o, i, m, m, sigma, &c[0], &c[1])) == 0)
+			continue;
+		k = place_all(o, k, c, m, sigma, at);
+		if (fresh(o, c, k, s->taken, &q) == 1 &&
+		    s->hide[wrap(o, c[q])])
+			take(o, c, at, k, m, s);
 	}
 }
 
@@ -874,21 +1000,27 @@ find(const struct outline *o, double len, double tol, struct found *f,
 	double *turn = malloc(n * sizeof *turn), sigma;
 	long *half = malloc(n * sizeof *half);
 	size_t *cand = malloc(n * sizeof *cand);
-	unsigned char *taken = calloc(n, 1);
+	struct sought s = { calloc(n, 1), calloc(n, 1), f, 0 };
 	struct turn *t = malloc(n * sizeof *t);
 	int rc = -1;
 
-	if (turn != NULL && half != NULL && cand != NULL && taken != NULL &&
-	    t != NULL) {
+	if (turn != NULL && half != NULL && cand != NULL && s.taken != NULL &&
+	    s.hide != NULL && t != NULL) {
 		sigma = fmax(noise(o, turn), CORNER_NOISE_FLOOR * tol);
 		ncand = candidates(o, len, turn, half, cand, t);
-		settle_all(o, cand, ncand, half, sigma, taken, f, nc);
+		if (settle_all(o, cand, ncand, half, turn, len, sigma, &s) > 0) {
+			ncand = candidates(o, CORNER_FINER * len, turn, half,
+			    cand, t);
+			settle_hidden(o, cand, ncand, turn, len, sigma, &s);
+		}
+		*nc = s.nc;
 		rc = 0;
 	}
 	free(turn);
 	free(half);
 	free(cand);
-	free(taken);
+	free(s.taken);
+	free(s.hide);
 	free(t);
 	return rc;
 }
