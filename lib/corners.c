@@ -800,8 +800,18 @@ place_all(const struct outline *o, int k, long *c, long m, double sigma,
 	return k;
 }
 
-/* How many of the k corners at points c are new (at a point not
- * taken, and not the first's), the last of them into *q. */
+/* Whether corner q of those at points c is new: at a point not taken,
+ * and not the first's. */
+static int
+is_new(const struct outline *o, const long *c, int q,
+    const unsigned char *taken)
+{
+	return !taken[wrap(o, c[q])] &&
+	    !(q == 1 && wrap(o, c[1]) == wrap(o, c[0]));
+}
+
+/* How many of the k corners at points c are new (is_new), the last of
+ * them into *q. */
 static int
 fresh(const struct outline *o, const long *c, int k,
     const unsigned char *taken, int *q)
@@ -809,30 +819,26 @@ fresh(const struct outline *o, const long *c, int k,
 	int nnew = 0;
 
 	for (int x = 0; x < k; x++)
-		if (!taken[wrap(o, c[x])] && !(x == 1 &&
-		    wrap(o, c[1]) == wrap(o, c[0]))) {
+		if (is_new(o, c, x, taken)) {
 			nnew++;
 			*q = x;
 		}
 	return nnew;
 }
 
-/* Add the new ones of the k corners at points c, their knots at at, to
- * s, and take the points within m of each, but the outermost
+/* Add the new ones (is_new) of the k corners at points c, their knots
+ * at at, to s, and take the points within m of each, but the outermost
  * CORNER_ECHO either side. */
 static void
 take(const struct outline *o, const long *c, double at[2][LOFT_MAXDIM],
     int k, long m, struct sought *s)
 {
-	for (int q = 0; q < k; q++) {
-		size_t j = wrap(o, c[q]);
-
-		if (s->taken[j] || (q == 1 && j == wrap(o, c[0])))
-			continue;
-		s->f[s->nc].i = j;
-		vcopy(s->f[s->nc].at, at[q], o->dim);
-		s->nc++;
-	}
+	for (int q = 0; q < k; q++)
+		if (is_new(o, c, q, s->taken)) {
+			s->f[s->nc].i = wrap(o, c[q]);
+			vcopy(s->f[s->nc].at, at[q], o->dim);
+			s->nc++;
+		}
 	for (int q = 0; q < k; q++)
 		for (long d = CORNER_ECHO - m; d <= m - CORNER_ECHO; d++)
 			if (pt(o, c[q] + d) != NULL)
