@@ -683,16 +683,25 @@ if [ "$glyphs" = 200 ]; then
 	    $1 == "C3" { n++; if ($2 == "1" && !($4 > 0)) bad++ }
 	    END { exit !(NR == 3 && n == 3 && !bad) }' "$T/hstray" && ok ||
 	    no "astray (contour, crosses, sigmas, spans): $(cat "$T/hstray")"
-	# contour 144 of the corpus, a Linux Libertine T: a corner found
-	# left the fit astray after every try, and the fit without all 10
-	# corners found was written, keeping none of the T's 8.  The fit
-	# without only the corners at the ends of the spans astray is tried
-	# first, and it passes: 6 of the 8 true corners kept at least (7
-	# here), no span astray, not crossing itself
+	# contour 144 of the corpus, a Linux Libertine T: a false corner
+	# found left the fit astray after every try, and the fit without
+	# all 10 corners found was written, keeping none of the T's 8 true
+	# ones.  The fit without only the corners at the ends of the spans
+	# astray came to keep 7; with the finder as it is now the fit does
+	# not stray, and keeps all 8.  Held: 6 of the 8 at least, no
+	# span astray, not crossing itself.  FreeSerif's 4 (contour 74),
+	# with the noise drawn from seed 4, still goes astray with its 10
+	# corners found: the fit without those at the spans astray keeps 9
+	# (7 of its 11 true ones at least), where the fit without any, as
+	# before, kept none
 	"$PY" tests/bench/glyphs_noisy.py --check 144 "$T/g.truth" \
 	    --knots "$T/g.knots" >"$T/gT" 2>&1
-	awk '{ n++; if ($2 != "0" || $4 != "0" || !($7 >= 6) || $8 != 8) bad++ }
-	    END { exit !(n == 1 && !bad) }' "$T/gT" && ok ||
+	"$PY" tests/bench/glyphs_noisy.py --check 74 "$T/g.truth" \
+	    --knots "$T/g.knots" --seed 4 >>"$T/gT" 2>&1
+	awk '{ n++; if ($2 != "0" || $4 != "0") bad++ }
+	    $1 == 144 { t++; if (!($7 >= 6) || $8 != 8) bad++ }
+	    $1 == 74 { t++; if (!($7 >= 7) || $8 != 11) bad++ }
+	    END { exit !(n == 2 && t == 2 && !bad) }' "$T/gT" && ok ||
 	    no "corners at spans astray (contour, crosses, sigmas, spans, corners, least turn, kept, true): $(cat "$T/gT")"
 	# contour 0, FreeSerif's a: its 129-degree tip, 26 units from a
 	# 42-degree corner, hid within the scale of that corner, and the

@@ -3,7 +3,7 @@
 beside potrace tracing the same points rasterised.
 
     glyphs_noisy.py TRUTH WORKDIR [KNOTS]
-    glyphs_noisy.py --check K,K... TRUTH [--knots KNOTS] [OPTION...]
+    glyphs_noisy.py --check K,K... TRUTH [--knots KNOTS] [--seed S] [OPTION...]
 
 TRUTH: the designer's outlines of tests/glyphs.py (200 points a
 segment); KNOTS: its knot records, whose corners= name the true
@@ -35,7 +35,8 @@ sigma apart, for that distance to be the curve's, not its samples'),
 the spans splinefit -v says are astray (0 where it says none), the
 corners of the curve (its corners= joints), and the least angle its
 tangent turns by at one, in degrees (- where it has none); with
---knots, also the true corners kept and how many there are, as above."""
+--knots, also the true corners kept and how many there are, as above.
+--seed draws the noise from seed S instead of the corpus's own, 23."""
 import math
 import os
 import random
@@ -325,11 +326,11 @@ def splinefit(opt, pts, sigma):
                           capture_output=True, text=True)
 
 
-def check(which, truth, opt, heads=None):
+def check(which, truth, opt, heads=None, seed=23):
     """The --check lines for contours which, fitted with opt; with the
     knot records' heads (their corners), the true corners kept and
-    wanted too."""
-    rng = random.Random(23)
+    wanted too; the noise drawn from seed."""
+    rng = random.Random(seed)
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         if k not in which:
@@ -354,12 +355,16 @@ def check(which, truth, opt, heads=None):
 
 def main():
     if sys.argv[1] == "--check":
-        opt, heads = sys.argv[4:], None
-        if opt[:1] == ["--knots"]:
-            heads = [h for h, _ in records(open(opt[1]).read())]
+        opt, heads, seed = sys.argv[4:], None, 23
+        while opt[:1] in (["--knots"], ["--seed"]):
+            if opt[0] == "--knots":
+                heads = [h for h, _ in records(open(opt[1]).read())]
+            else:
+                seed = int(opt[1])
             opt = opt[2:]
         check([int(x) for x in sys.argv[2].split(",")],
-              [r for _, r in records(open(sys.argv[3]).read())], opt, heads)
+              [r for _, r in records(open(sys.argv[3]).read())], opt, heads,
+              seed)
         return
     truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
