@@ -591,6 +591,30 @@ approx_smooth(struct opts *o, const struct loft_record *rec,
 	return approx_refit(o, rec, ao, NULL, NULL, 0, 0, info, nc, err);
 }
 
+/* Where the fit written has spans astray, the points' noise (about
+ * the standard deviation) is named when the tolerance is below this
+ * many times it: 4 or 5 times suits. */
+#define APPROX_NOISE_HINT 3
+
+/* -e: a fit written with spans astray (info) says so, and names the
+ * points' noise where the tolerance is below APPROX_NOISE_HINT times
+ * it. */
+static void
+astray_note(struct loft_run *run, const struct loft_record *rec,
+    const struct loft_approx_info *info, double tol, int closed)
+{
+	double s = loft_points_noise(rec->num, rec->nrows, rec->ncols,
+	    closed);
+
+	fprintf(run->msg, "splinefit: %s:%ld: %zu span%s astray: the curve "
+	    "strays from the points or crosses itself there", rec->file,
+	    rec->line, info->astray, info->astray == 1 ? "" : "s");
+	if (tol < APPROX_NOISE_HINT * s)
+		fprintf(run->msg, "; the tolerance %g is less than %d times "
+		    "the points' noise (about %.3g)", tol, APPROX_NOISE_HINT, s);
+	fputc('\n', run->msg);
+}
+
 /* -e: the fair curve within o->approx of the points (loft_approx). */
 static int
 approx_record(struct loft_run *run, const struct loft_record *rec,
@@ -639,6 +663,8 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 		measures(run->msg, o->seg, info.nseg, dim, fit->closed);
 		fputc('\n', run->msg);
 	}
+	if (info.astray > 0)
+		astray_note(run, rec, &info, o->approx, fit->closed);
 	nc = approx_corners(o, rec, info.nseg, nc, found);
 	return put_curve(run, rec, info.nseg, fit->closed, o->corner, nc, err);
 }

@@ -1163,11 +1163,32 @@ find_dense(const struct outline *o, double tol, struct found *f, size_t *nc)
 	return rc;
 }
 
+/* The n points p (dimension dim) scaled by a power of two (exactly)
+ * into the unit box, so that no square of a distance overflows or
+ * underflows, in a new array, with the power in *e; NULL where they
+ * are all 0, not finite, or out of memory. */
+static double *
+scaled(const double *p, size_t n, int dim, int *e)
+{
+	double *q, big = 0;
+
+	for (size_t i = 0; i < n; i++)
+		big = fmax(big, vmaxabs(p + i * dim, dim));
+	if (!(big > 0) || !isfinite(big) ||
+	    (q = calloc(n, (size_t)dim * sizeof *q)) == NULL)
+		return NULL;
+	*e = ilogb(big);
+	for (size_t i = 0; i < n; i++)
+		for (int k = 0; k < dim; k++)
+			q[i * dim + k] = ldexp(p[i * dim + k], -*e);
+	return q;
+}
+
 size_t
 loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
     size_t *corner, double *at)
 {
-	double *q, big = 0;
+	double *q;
 	struct found *f;
 	struct outline o = { NULL, n, dim, closed };
 	size_t nc = 0;
@@ -1176,23 +1197,15 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 	if (n < 5 || dim < 1 || dim > LOFT_MAXDIM || !(tol > 0) ||
 	    !isfinite(tol))
 		return 0;
-	for (size_t i = 0; i < n; i++)
-		big = fmax(big, vmaxabs(p + i * dim, dim));
-	q = calloc(n, (size_t)dim * sizeof *q);
+	/* scaled, so that the corners do not depend on the units */
+	q = scaled(p, n, dim, &e);
 	f = malloc(n * sizeof *f);
-	if (q == NULL || f == NULL || !(big > 0) || !isfinite(big)) {
+	if (q == NULL || f == NULL) {
 		free(q);
 		free(f);
 		return 0;
 	}
 	o.p = q;
-	/* scaled by a power of two (exactly) into the unit box, so that no
-	 * square of a distance overflows or underflows: the corners do not
-	 * depend on the units */
-	e = ilogb(big);
-	for (size_t i = 0; i < n; i++)
-		for (int k = 0; k < dim; k++)
-			q[i * dim + k] = ldexp(p[i * dim + k], -e);
 	if (find_dense(&o, ldexp(tol, -e), f, &nc) == 0)
 		for (size_t c = 0; c < nc; c++) {
 			corner[c] = f[c].i;
@@ -1204,4 +1217,29 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 	free(q);
 	free(f);
 	return nc;
+}
+
+double
+loft_points_noise(const double *p, size_t n, int dim, int closed)
+{
+	struct outline o = { NULL, n, dim, closed };
+	double *q, *r, s = 0;
+	int e;
+
+	if (n < 3 || dim < 1 || dim > LOFT_MAXDIM)
+		return 0;
+	q = scaled(p, n, dim, &e);
+	r = malloc(n * sizeof *r);
+	if (q != NULL && r != NULL) {
+		o.p = q;
+		s = ldexp(noise(&o, r), e);
+	}
+	/* noise() reads the distance across a plane outline; in space it
+	 * has two directions across, and its median is sqrt(2 ln 2) times
+	 * the deviation in each, not 0.6745 times */
+	if (dim == 3)
+		s *= 0.6745 / sqrt(2 * log(2.0));
+	free(q);
+	free(r);
+	return s;
 }

@@ -425,6 +425,17 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
 size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
     double tol, size_t *corner, double *at);
 
+/*
+ * The noise of n points p (dimension dim, in order along an outline;
+ * closed: the last joins the first): the standard deviation of their
+ * scatter across it (in each direction across, in space), estimated
+ * from the median distance of each point from the chord of its two
+ * neighbours (corners.c).  A bend between
+ * points farther apart than its radius reads as noise too.  0 where
+ * there are fewer than 3 points, none off those chords, or no memory.
+ */
+double loft_points_noise(const double *p, size_t n, int dim, int closed);
+
 /* Fewest points a closed and an open approximation take. */
 #define LOFT_APPROX_MIN_CLOSED 4
 #define LOFT_APPROX_MIN_OPEN   3
