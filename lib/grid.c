@@ -186,6 +186,22 @@ loft_segments_cross(const double *s, const double *t)
 	    turn(t, t + 2, s) * turn(t, t + 2, s + 2) < 0;
 }
 
+int
+loft_fold_crosses(const double *a, const double *b, size_t n)
+{
+	for (size_t i = 0; i + 1 < n; i++)
+		for (size_t j = i == 0; j + 1 < n; j++) {
+			double s[4] = { a[2 * i], a[2 * i + 1], a[2 * i + 2],
+			    a[2 * i + 3] };
+			double t[4] = { b[2 * j], b[2 * j + 1], b[2 * j + 2],
+			    b[2 * j + 3] };
+
+			if (loft_segments_cross(s, t))
+				return 1;
+		}
+	return 0;
+}
+
 /* Liang and Barsky's clipping: the part of the segment inside each
  * slab of the box, intersected. */
 int

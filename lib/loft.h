@@ -1555,6 +1555,16 @@ int loft_grid_each_along(const struct loft_grid *g, const double *sg,
  * either side of the other's line (touching or in line is not). */
 int loft_segments_cross(const double *s, const double *t);
 
+/*
+ * Whether two plane polylines from one point, a and b (n points each,
+ * x y pairs, a[0] and b[0] that point), cross each other elsewhere: an
+ * edge of one crosses an edge of the other, the two first edges (which
+ * meet at that point) aside.  For a curve that turns back at a corner,
+ * the two pieces beside it sampled finer than the edges a test of the
+ * whole polyline skips there, as neighbours.
+ */
+int loft_fold_crosses(const double *a, const double *b, size_t n);
+
 /* Whether the segment sg meets the closed box lo..hi. */
 int loft_segment_meets_box(const double *sg, const double *lo,
     const double *hi);

@@ -481,6 +481,33 @@ polygon_segments(const double (*v)[2], const int *order, int n, double *seg)
 	}
 }
 
+/*
+ * loft_fold_crosses on the two sides of a needle tip at the origin:
+ * side a along y = x^2 / 100, side b along the line y = 0.05 x, which
+ * a crosses at x = 5 (the fourth edge of each, sampled every 1.5); c
+ * along y = 0.2 x stays above a as far as x = 20, and meets it only at
+ * the tip.
+ */
+static void
+test_fold(void)
+{
+	double a[2 * 8], b[2 * 8], c[2 * 8];
+
+	for (int i = 0; i < 8; i++) {
+		double x = 1.5 * i;
+
+		a[2 * i] = b[2 * i] = c[2 * i] = x;
+		a[2 * i + 1] = x * x / 100;
+		b[2 * i + 1] = 0.05 * x;
+		c[2 * i + 1] = 0.2 * x;
+	}
+	CHECK(loft_fold_crosses(a, b, 8) == 1, "fold: sides cross at x = 5");
+	CHECK(loft_fold_crosses(b, a, 8) == 1, "fold: either way round");
+	CHECK(loft_fold_crosses(a, c, 8) == 0, "fold: sides apart");
+	CHECK(loft_fold_crosses(a, a, 8) == 0, "fold: one side twice");
+	CHECK(loft_fold_crosses(a, b, 1) == 0, "fold: one point each");
+}
+
 static void
 test_crosses(void)
 {
@@ -507,6 +534,7 @@ test_crosses(void)
 	CHECK(loft_fit_crosses(seg, 4, 1) == 1, "bow tie");
 	polygon_segments(u, seq, 8, seg);
 	CHECK(loft_fit_crosses(seg, 8, 1) == 0, "U: no crossing");
+	test_fold();
 }
 
 /*
