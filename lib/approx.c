@@ -1010,15 +1010,16 @@ fold_spans(struct crossing *c)
 	size_t ns = nseg_of(w), np = c->ne + !w->closed;
 	double a[2 * APPROX_FOLD_N], b[2 * APPROX_FOLD_N];
 	double h = 1.0 / (APPROX_STRAY_SAMPLES * APPROX_FOLD_SAMPLES);
+	double in[2], out[2];
 	const double *p = c->pt;
 
 	for (size_t j = !w->closed; j < ns; j++) {
 		size_t k = j * APPROX_STRAY_SAMPLES, i = (k + np - 1) % np;
 		size_t pj = (j + ns - 1) % ns;
 
-		if ((p[2 * k] - p[2 * i]) * (p[2 * k + 2] - p[2 * k]) +
-		    (p[2 * k + 1] - p[2 * i + 1]) * (p[2 * k + 3] -
-		    p[2 * k + 1]) >= 0)
+		vsub(in, p + 2 * k, p + 2 * i, 2);
+		vsub(out, p + 2 * k + 2, p + 2 * k, 2);
+		if (vdot(in, out, 2) >= 0)
 			continue;
 		for (int t = 0; t < APPROX_FOLD_N; t++) {
 			span_eval(w, pj, 1 - t * h, a + 2 * t, NULL, NULL);

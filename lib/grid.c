@@ -189,16 +189,11 @@ loft_segments_cross(const double *s, const double *t)
 int
 loft_fold_crosses(const double *a, const double *b, size_t n)
 {
+	/* edge i of a polyline is its 4 numbers from point i on */
 	for (size_t i = 0; i + 1 < n; i++)
-		for (size_t j = i == 0; j + 1 < n; j++) {
-			double s[4] = { a[2 * i], a[2 * i + 1], a[2 * i + 2],
-			    a[2 * i + 3] };
-			double t[4] = { b[2 * j], b[2 * j + 1], b[2 * j + 2],
-			    b[2 * j + 3] };
-
-			if (loft_segments_cross(s, t))
+		for (size_t j = i == 0; j + 1 < n; j++)
+			if (loft_segments_cross(a + 2 * i, b + 2 * j))
 				return 1;
-		}
 	return 0;
 }
 
