@@ -988,18 +988,20 @@ edge_crosses(void *ctx, size_t f)
 	return 0;
 }
 
-/* Where the curve turns back at a joint (the edges of its polyline
- * either side point against each other), the APPROX_FOLD_EDGES edges
- * either side are sampled APPROX_FOLD_SAMPLES times finer and tested
- * against each other: the two sides of a needle tip run close and
- * nearly along each other there, and can cross where the edges do not,
- * or within the two edges at the tip, which the grid's test skips as
- * neighbours.  (A stroke's end 1.1 tolerances wide, read as one corner,
- * turned by 179 degrees; the sides crossed at 0.04 and 0.11 of their
- * spans from the tip, and no two edges did.) */
+/* Where the curve turns back at a joint (its tangents, or the edges of
+ * its polyline, either side point against each other), the
+ * APPROX_FOLD_EDGES edges either side are sampled APPROX_FOLD_SAMPLES
+ * times finer, and LOFT_FOLD_FINE times more towards the joint, and
+ * tested against each other: the two sides of a needle tip run close
+ * and nearly along each other there, and can cross where the edges do
+ * not, or within the two edges at the tip, which the grid's test skips
+ * as neighbours.  (A stroke's end 1.1 tolerances wide, read as one
+ * corner, turned by 179 degrees; the sides crossed at 0.04 and 0.11 of
+ * their spans from the tip, and no two edges did.) */
 #define APPROX_FOLD_EDGES 4
 #define APPROX_FOLD_SAMPLES 16
-#define APPROX_FOLD_N (APPROX_FOLD_EDGES * APPROX_FOLD_SAMPLES + 1)
+#define APPROX_FOLD_STEPS (APPROX_FOLD_EDGES * APPROX_FOLD_SAMPLES)
+#define APPROX_FOLD_N (LOFT_FOLD_FINE + APPROX_FOLD_STEPS + 1)
 
 /* The folds at the joints of the plane curve: both spans beside each
  * marked as crossing. */
@@ -1009,8 +1011,8 @@ fold_spans(struct crossing *c)
 	struct work *w = c->w;
 	size_t ns = nseg_of(w), np = c->ne + !w->closed;
 	double a[2 * APPROX_FOLD_N], b[2 * APPROX_FOLD_N];
-	double h = 1.0 / (APPROX_STRAY_SAMPLES * APPROX_FOLD_SAMPLES);
-	double in[2], out[2];
+	double reach = (double)APPROX_FOLD_EDGES / APPROX_STRAY_SAMPLES;
+	double in[2], out[2], tin[2], tout[2], x[2], d2[2];
 	const double *p = c->pt;
 
 	for (size_t j = !w->closed; j < ns; j++) {
@@ -1019,11 +1021,15 @@ fold_spans(struct crossing *c)
 
 		vsub(in, p + 2 * k, p + 2 * i, 2);
 		vsub(out, p + 2 * k + 2, p + 2 * k, 2);
-		if (vdot(in, out, 2) >= 0)
+		span_eval(w, pj, 1, x, tin, d2);
+		span_eval(w, j, 0, x, tout, d2);
+		if (vdot(in, out, 2) >= 0 && vdot(tin, tout, 2) >= 0)
 			continue;
-		for (int t = 0; t < APPROX_FOLD_N; t++) {
-			span_eval(w, pj, 1 - t * h, a + 2 * t, NULL, NULL);
-			span_eval(w, j, t * h, b + 2 * t, NULL, NULL);
+		for (size_t t = 0; t < APPROX_FOLD_N; t++) {
+			double u = loft_fold_u(t, APPROX_FOLD_STEPS, reach);
+
+			span_eval(w, pj, 1 - u, a + 2 * t, NULL, NULL);
+			span_eval(w, j, u, b + 2 * t, NULL, NULL);
 		}
 		if (loft_fold_crosses(a, b, APPROX_FOLD_N))
 			mark_cross(c, pj, j);

@@ -197,6 +197,18 @@ loft_fold_crosses(const double *a, const double *b, size_t n)
 	return 0;
 }
 
+double
+loft_fold_u(size_t t, size_t m, double reach)
+{
+	double step = reach / (double)m;
+
+	if (t == 0)
+		return 0;
+	if (t <= LOFT_FOLD_FINE)
+		return ldexp(step, (int)t - 1 - LOFT_FOLD_FINE);
+	return (double)(t - LOFT_FOLD_FINE) * step;
+}
+
 /* Liang and Barsky's clipping: the part of the segment inside each
  * slab of the box, intersected. */
 int

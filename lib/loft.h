@@ -385,7 +385,9 @@ double loft_tangent_distance(const double *a, const double *b, size_t nseg,
  * Whether the plane curve of the nseg segments seg (rows of 8 numbers,
  * as loft_fit writes them; nseg > 0) crosses itself, closed or not: 1
  * where the polyline of 6 points a segment has two edges, not
- * neighbours, that cross; 0 where it has none; -1 when out of memory.
+ * neighbours, that cross, or where, at a joint the curve turns back
+ * at, its two sides sampled finer (loft_fold_u) do; 0 where none do;
+ * -1 when out of memory.
  */
 int loft_fit_crosses(const double *seg, size_t nseg, int closed);
 
@@ -1564,6 +1566,17 @@ int loft_segments_cross(const double *s, const double *t);
  * whole polyline skips there, as neighbours.
  */
 int loft_fold_crosses(const double *a, const double *b, size_t n);
+
+/*
+ * The parameter, from the joint, of sample t (0 <= t <= LOFT_FOLD_FINE +
+ * m) of a side of a fold for loft_fold_crosses: 0, then LOFT_FOLD_FINE
+ * samples halving towards the joint below the first of m even steps up
+ * to reach.  Two sides that cross at least reach / m / 2^LOFT_FOLD_FINE
+ * from the joint are found crossing (where they leave it reversed, the
+ * first edges hide a crossing however near).
+ */
+#define LOFT_FOLD_FINE 24
+double loft_fold_u(size_t t, size_t m, double reach);
 
 /* Whether the segment sg meets the closed box lo..hi. */
 int loft_segment_meets_box(const double *sg, const double *lo,

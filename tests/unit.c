@@ -508,6 +508,33 @@ test_fold(void)
 	CHECK(loft_fold_crosses(a, b, 1) == 0, "fold: one point each");
 }
 
+/*
+ * A straight segment into a corner at the origin, and a cubic leaving
+ * it nearly reversed (tangent 10, 0.05): its y is 0.05 u - 15 u^2 near
+ * u = 0, so it crosses the straight one at u = 1/300, x = 0.033, within
+ * the first edges either side of the joint; leaving at 10, -0.05 it
+ * stays below.  Open, and closed by a third segment back.
+ */
+static void
+test_fold_joint(void)
+{
+	double seg[3 * 8] = {
+		10, 0, 0, 0, -10, 0, -10, 0,
+		0, 0, 2, -5, 10, 0.05, 0, -10,
+		2, -5, 10, 0, 8, 5, 8, 5,
+	};
+
+	CHECK(loft_fit_crosses(seg, 2, 0) == 1, "fold at a corner: crosses");
+	CHECK(loft_fit_crosses(seg, 3, 1) == 1, "fold at a corner, closed");
+	CHECK(loft_fold_u(0, 4, 1) == 0 && loft_fold_u(LOFT_FOLD_FINE, 4, 1) ==
+	    0.125 && loft_fold_u(LOFT_FOLD_FINE + 4, 4, 1) == 1,
+	    "fold samples: the joint, half a step, the reach");
+	seg[13] = -0.05;
+	CHECK(loft_fit_crosses(seg, 2, 0) == 0, "fold at a corner: apart");
+	CHECK(loft_fit_crosses(seg, 3, 1) == 0, "fold at a corner: apart, "
+	    "closed");
+}
+
 static void
 test_crosses(void)
 {
@@ -535,6 +562,7 @@ test_crosses(void)
 	polygon_segments(u, seq, 8, seg);
 	CHECK(loft_fit_crosses(seg, 8, 1) == 0, "U: no crossing");
 	test_fold();
+	test_fold_joint();
 }
 
 /*
