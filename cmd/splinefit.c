@@ -615,6 +615,25 @@ astray_note(struct loft_run *run, const struct loft_record *rec,
 	fputc('\n', run->msg);
 }
 
+/* -e: the fit without corners, into o->seg and *info, where the fit
+ * with those splinefit found fails the tolerance: on sparse clean
+ * points a bend can read as corners, their knots out where the lines
+ * either side meet, off the points (20 points round a circle of radius
+ * 50 gave four, 10 off it).  Returns 0, or loft_approx's error. */
+static int
+approx_cornerless(struct opts *o, const struct loft_record *rec,
+    const struct loft_approx_opts *ao, struct loft_approx_info *info)
+{
+	struct loft_approx_opts no = *ao;
+	struct loft_error e;
+
+	no.corner = NULL;
+	no.corner_at = NULL;
+	no.ncorner = 0;
+	return loft_approx(&no, rec->num, rec->nrows, rec->ncols, o->seg, info,
+	    &e);
+}
+
 /* -e: the fair curve within o->approx of the points (loft_approx). */
 static int
 approx_record(struct loft_run *run, const struct loft_record *rec,
@@ -643,7 +662,12 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	if (o->rounds > 0)
 		ao.maxround = o->rounds;
 	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
-	    err)) != 0)
+	    err)) == LOFT_ENOCONV && found && nc > 0 &&
+	    approx_cornerless(o, rec, &ao, &info) == 0) {
+		rc = 0;
+		nc = 0;
+	}
+	if (rc != 0)
 		return rc;
 	if (found && nc > 0 && approx_without(o, rec, &ao, flat_at, 0,
 	    info.astray, &info, &nc, err) != 0)

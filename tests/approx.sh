@@ -412,6 +412,19 @@ shape square 200 5 3 >"$T/sqn.pts"
 		s = substr($0, RSTART + 21, RLENGTH - 22); ok = s >= 3.5 && s <= 6.5 }
 	END { exit !(n == 1 && ok) }' "$T/sqn.err" && ok ||
     no "tolerance below the noise: want a note of spans astray and a noise near 5: $(cat "$T/sqn.err")"
+# 20 clean points round a circle of radius 50, fitted within 0.01:
+# their bend reads as four corners, whose knots (where the lines either
+# side meet) lie 10 off the circle, so no fit within 0.01 goes through
+# them.  The fit without them is written, with nothing on standard
+# error, within 0.02 of the circle (sample -n 16: between the points
+# the curve may stray a little past the tolerance)
+shape circle 20 0 1 >"$T/c20.pts"
+"$B/splinefit" -e 0.01 "$T/c20.pts" >"$T/c20.cubic" 2>"$T/c20.err" &&
+    grep -q '^cubic' "$T/c20.cubic" && ! [ -s "$T/c20.err" ] &&
+    "$B/sample" -n 16 "$T/c20.cubic" | awk '/^[-0-9.]/ {
+	d = sqrt($1 * $1 + $2 * $2) - 50; if (d > 0.02 || d < -0.02) bad++ }
+	END { exit bad > 0 }' && ok ||
+    no "20 clean points round a circle: want the fit written, within 0.02 of the circle, and no note: $(cat "$T/c20.err")"
 # Dense points (issue 23): 10000 or 20000 round the square, some 80 or
 # 160 within the scale of each, are averaged in runs before the corners
 # are sought; the corners found among the runs are the square's, and a
