@@ -990,18 +990,22 @@ edge_crosses(void *ctx, size_t f)
 
 /* Where the curve turns back at a joint (its tangents, or the edges of
  * its polyline, either side point against each other), the
- * APPROX_FOLD_EDGES edges either side are sampled APPROX_FOLD_SAMPLES
- * times finer, and LOFT_FOLD_FINE times more towards the joint, and
- * tested against each other: the two sides of a needle tip run close
- * and nearly along each other there, and can cross where the edges do
- * not, or within the two edges at the tip, which the grid's test skips
- * as neighbours.  (A stroke's end 1.1 tolerances wide, read as one
- * corner, turned by 179 degrees; the sides crossed at 0.04 and 0.11 of
- * their spans from the tip, and no two edges did.) */
+ * APPROX_FOLD_EDGES edges either side are sampled finer, and finer
+ * still towards the joint (loft_sides_cross), and tested against each
+ * other: the two sides of a needle tip run close and nearly along each
+ * other there, and can cross where the edges do not, or within the two
+ * edges at the tip, which the grid's test skips as neighbours.  (A
+ * stroke's end 1.1 tolerances wide, read as one corner, turned by 179
+ * degrees; the sides crossed at 0.04 and 0.11 of their spans from the
+ * tip, and no two edges did.) */
 #define APPROX_FOLD_EDGES 4
-#define APPROX_FOLD_SAMPLES 16
-#define APPROX_FOLD_STEPS (APPROX_FOLD_EDGES * APPROX_FOLD_SAMPLES)
-#define APPROX_FOLD_N (LOFT_FOLD_FINE + APPROX_FOLD_STEPS + 1)
+
+/* loft_sides_cross's eval: the point of span s of the work ctx. */
+static void
+span_point(const void *ctx, size_t s, double u, double *p)
+{
+	span_eval(ctx, s, u, p, NULL, NULL);
+}
 
 /* The folds at the joints of the plane curve: both spans beside each
  * marked as crossing. */
@@ -1010,8 +1014,6 @@ fold_spans(struct crossing *c)
 {
 	struct work *w = c->w;
 	size_t ns = nseg_of(w), np = c->ne + !w->closed;
-	double a[2 * APPROX_FOLD_N], b[2 * APPROX_FOLD_N];
-	double reach = (double)APPROX_FOLD_EDGES / APPROX_STRAY_SAMPLES;
 	double in[2], out[2], tin[2], tout[2], x[2], d2[2];
 	const double *p = c->pt;
 
@@ -1023,15 +1025,9 @@ fold_spans(struct crossing *c)
 		vsub(out, p + 2 * k + 2, p + 2 * k, 2);
 		span_eval(w, pj, 1, x, tin, d2);
 		span_eval(w, j, 0, x, tout, d2);
-		if (vdot(in, out, 2) >= 0 && vdot(tin, tout, 2) >= 0)
-			continue;
-		for (size_t t = 0; t < APPROX_FOLD_N; t++) {
-			double u = loft_fold_u(t, APPROX_FOLD_STEPS, reach);
-
-			span_eval(w, pj, 1 - u, a + 2 * t, NULL, NULL);
-			span_eval(w, j, u, b + 2 * t, NULL, NULL);
-		}
-		if (loft_fold_crosses(a, b, APPROX_FOLD_N))
+		if ((vdot(in, out, 2) < 0 || vdot(tin, tout, 2) < 0) &&
+		    loft_sides_cross(span_point, w, pj, j,
+		    (double)APPROX_FOLD_EDGES / APPROX_STRAY_SAMPLES))
 			mark_cross(c, pj, j);
 	}
 }

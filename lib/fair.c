@@ -743,16 +743,21 @@ edge_meets(void *ctx, size_t id)
 
 /* Where the curve turns back at a joint (its tangents, or the
  * polyline's edges, either side point against each other), the
- * FAIR_FOLD_EDGES edges either side are sampled again, FAIR_FOLD_STEPS
- * steps and LOFT_FOLD_FINE more towards the joint, and tested against
+ * FAIR_FOLD_EDGES edges either side are sampled again, finer and
+ * finer still towards the joint (loft_sides_cross), and tested against
  * each other: the test of the whole polyline skips the two edges at the
  * joint as neighbours, and a side that leaves it nearly reversed can
  * cross the other within them.  (A corner after a straight span, its
  * next side leaving at 179.7 degrees, crossed the straight one 0.0025
  * of a segment from the joint.) */
 #define FAIR_FOLD_EDGES 4
-#define FAIR_FOLD_STEPS 64
-#define FAIR_FOLD_N (LOFT_FOLD_FINE + FAIR_FOLD_STEPS + 1)
+
+/* loft_sides_cross's eval: the point of segment s of the rows ctx. */
+static void
+segment_point(const void *ctx, size_t s, double u, double *p)
+{
+	loft_cubic_eval((const double *)ctx + 8 * s, 2, u, p, NULL, NULL);
+}
 
 /* Whether the nseg segments seg cross at a fold (above); pt: the np
  * points of their polyline. */
@@ -760,26 +765,17 @@ static int
 folds_cross(const double *seg, size_t nseg, int closed, const double *pt,
     size_t np)
 {
-	double a[2 * FAIR_FOLD_N], b[2 * FAIR_FOLD_N], in[2], out[2];
-	double reach = (double)FAIR_FOLD_EDGES / FAIR_POLY;
+	double in[2], out[2];
 
 	for (size_t j = !closed; j < nseg; j++) {
 		size_t pj = (j + nseg - 1) % nseg, k = j * FAIR_POLY;
 
 		vsub(in, pt + 2 * k, pt + 2 * ((k + np - 1) % np), 2);
 		vsub(out, pt + 2 * k + 2, pt + 2 * k, 2);
-		if (vdot(in, out, 2) >= 0 &&
-		    vdot(seg + 8 * pj + 6, seg + 8 * j + 4, 2) >= 0)
-			continue;
-		for (size_t t = 0; t < FAIR_FOLD_N; t++) {
-			double u = loft_fold_u(t, FAIR_FOLD_STEPS, reach);
-
-			loft_cubic_eval(seg + 8 * pj, 2, 1 - u, a + 2 * t, NULL,
-			    NULL);
-			loft_cubic_eval(seg + 8 * j, 2, u, b + 2 * t, NULL,
-			    NULL);
-		}
-		if (loft_fold_crosses(a, b, FAIR_FOLD_N))
+		if ((vdot(in, out, 2) < 0 ||
+		    vdot(seg + 8 * pj + 6, seg + 8 * j + 4, 2) < 0) &&
+		    loft_sides_cross(segment_point, seg, pj, j,
+		    (double)FAIR_FOLD_EDGES / FAIR_POLY))
 			return 1;
 	}
 	return 0;

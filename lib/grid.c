@@ -209,6 +209,22 @@ loft_fold_u(size_t t, size_t m, double reach)
 	return (double)(t - LOFT_FOLD_FINE) * step;
 }
 
+int
+loft_sides_cross(void (*eval)(const void *ctx, size_t s, double u,
+    double *p), const void *ctx, size_t pj, size_t j, double reach)
+{
+	enum { N = LOFT_FOLD_FINE + LOFT_FOLD_STEPS + 1 };
+	double a[2 * N], b[2 * N];
+
+	for (size_t t = 0; t < N; t++) {
+		double u = loft_fold_u(t, LOFT_FOLD_STEPS, reach);
+
+		eval(ctx, pj, 1 - u, a + 2 * t);
+		eval(ctx, j, u, b + 2 * t);
+	}
+	return loft_fold_crosses(a, b, N);
+}
+
 /* Liang and Barsky's clipping: the part of the segment inside each
  * slab of the box, intersected. */
 int

@@ -1578,6 +1578,18 @@ int loft_fold_crosses(const double *a, const double *b, size_t n);
 #define LOFT_FOLD_FINE 24
 double loft_fold_u(size_t t, size_t m, double reach);
 
+/*
+ * Whether the two sides of a joint where a plane curve turns back cross
+ * (loft_fold_crosses): segment pj, ending there, and segment j,
+ * starting there, each sampled LOFT_FOLD_STEPS even steps up to reach
+ * (in its parameter) from the joint and LOFT_FOLD_FINE more towards it
+ * (loft_fold_u); eval(ctx, s, u, p) puts the point of segment s at u in
+ * p.
+ */
+#define LOFT_FOLD_STEPS 64
+int loft_sides_cross(void (*eval)(const void *ctx, size_t s, double u,
+    double *p), const void *ctx, size_t pj, size_t j, double reach);
+
 /* Whether the segment sg meets the closed box lo..hi. */
 int loft_segment_meets_box(const double *sg, const double *lo,
     const double *hi);
