@@ -72,13 +72,18 @@ def records(text):
 
 def crosses(p):
     """Whether the closed polyline p has two edges, not neighbours, that
-    cross (edges compared in blocks of rows against all)."""
+    cross (edges compared in blocks of rows against all).  A point
+    within rounding of an edge's line is on it: the samples of a
+    straight segment are collinear, and rounding must not make two of
+    its edges cross."""
     n = len(p)
     a, b = p, np.roll(p, -1, axis=0)
+    eps = 1e-12 * np.ptp(p, axis=0).max() ** 2     # rounding, not a side
 
     def o(a, b, c):
-        return (b[..., 0] - a[..., 0]) * (c[..., 1] - a[..., 1]) - \
+        s = (b[..., 0] - a[..., 0]) * (c[..., 1] - a[..., 1]) - \
             (b[..., 1] - a[..., 1]) * (c[..., 0] - a[..., 0])
+        return np.where(abs(s) > eps, s, 0)
     idx = np.arange(n)
     for lo in range(0, n, 256):
         i = idx[lo:lo + 256, None]
