@@ -22,7 +22,9 @@
  * of it meet, which on sparse points is seldom a point, or at the point
  * beside where a corner pinned there fits better; so do the knots
  * of two corners close together, where the line through the points
- * between them fits better than the chord between two points.  Dense
+ * between them fits better than the chord between two points, and
+ * where one point lies between them each goes past its side's last
+ * point by what the points' spacing leaves of the path.  Dense
  * points (hundreds within the scale) are first averaged in runs: a line
  * through the averages leans the same way, and the search then costs
  * as on sparser points.
@@ -749,6 +751,68 @@ place_two(const struct outline *o, long *a, long *b, long m, double sigma,
 	return 1;
 }
 
+/* The mean gap between neighbours among points a..b of o (those
+ * there); 0 where no two are. */
+static double
+spacing(const struct outline *o, long a, long b)
+{
+	double s = 0;
+	long k = 0;
+
+	for (long t = a; t < b; t++)
+		if (pt(o, t) != NULL && pt(o, t + 1) != NULL) {
+			s += vdist(pt(o, t), pt(o, t + 1), o->dim);
+			k++;
+		}
+	return k > 0 ? s / k : 0;
+}
+
+/* The corner on line l past point p, towards point q beyond it, into
+ * x: the point of l on from p's foot f (dir 1 along l, -1 against it)
+ * where the path p, x, q is h long, as on points evenly spaced along
+ * the outline.  With x = f + t d, |x - f| + |q - x| = h gives
+ * t = (h^2 - |q - f|^2) / 2 (h - d.(q - f)); at f where h is no longer
+ * than |q - f|. */
+static void
+beyond(const struct line *l, int dir, const double *p, const double *q,
+    double h, int dim, double *x)
+{
+	double d[LOFT_MAXDIM], r[LOFT_MAXDIM], e, t;
+
+	vscale(d, dir, l->d, dim);
+	vsub(r, p, l->c, dim);
+	vcopy(x, l->c, dim);
+	vaxpy(x, vdot(r, l->d, dim), l->d, dim);        /* the foot f */
+	vsub(r, q, x, dim);
+	e = vdot(r, r, dim);
+	t = h * h > e ? (h * h - e) / (2 * (h - vdot(d, r, dim))) : 0;
+	vaxpy(x, t, d, dim);
+}
+
+/* The places of the knots of two corners with one point between them,
+ * at points *a and *b = *a + 2, into x and y, where place_two finds no
+ * line through the points between: on the line through the m points up
+ * to *a past it, and on that through those from *b before it, each
+ * where the path from that point through the corner to the point
+ * between is as long as the points' spacing (beyond).  A corner at a
+ * point cuts the true one, which lies past it.  *a and *b become the
+ * points after the knots.  0 where a line is missing. */
+static int
+place_cap(const struct outline *o, long *a, long *b, long m, double *x,
+    double *y)
+{
+	struct line u, w;
+	double h = (spacing(o, *a - m, *a) + spacing(o, *b, *b + m)) / 2;
+
+	if (!fit_line(o, *a - m, m + 1, &u) || !fit_line(o, *b, m + 1, &w) ||
+	    !(h > 0))
+		return 0;
+	beyond(&u, 1, pt(o, *a), pt(o, *a + 1), h, o->dim, x);
+	beyond(&w, -1, pt(o, *b), pt(o, *a + 1), h, o->dim, y);
+	++*a;
+	return 1;
+}
+
 /* A corner found: its point and its knot's place. */
 struct found {
 	size_t i;
@@ -793,7 +857,9 @@ place_all(const struct outline *o, int k, long *c, long m, double sigma,
 		return 1;
 	if (k == 1)
 		place(o, &c[0], m, sigma, at[0]);
-	else if (!place_two(o, &c[0], &c[1], m, sigma, at[0], at[1])) {
+	else if (!place_two(o, &c[0], &c[1], m, sigma, at[0], at[1]) &&
+	    (c[1] != c[0] + 2 || !place_cap(o, &c[0], &c[1], m, at[0],
+	    at[1]))) {
 		vcopy(at[0], pt(o, c[0]), o->dim);
 		vcopy(at[1], pt(o, c[1]), o->dim);
 	}

@@ -684,6 +684,17 @@ if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
 	awk '{ n++; if ($2 != "0" || !($3 <= 5)) bad++ }
 	    END { exit !(n == 2 && !bad) }' "$T/gtip" && ok ||
 	    no "meets past the outline (contour, crosses, sigmas, astray, corners): $(cat "$T/gtip")"
+	# contours 33 and 72, FreeSerif's x and 2: the end
+	# of a stroke holds one point, and the knots of its two corners were
+	# the points either side of it, cutting both corners; the curves
+	# strayed 6.25 and 4.62 sigmas from the true outline.  Each knot now
+	# goes past its point on the line through its side, where the path
+	# through it to the point between is the points' spacing: within
+	# 5.5 and 4 sigmas, not crossing itself
+	"$PY" tests/bench/glyphs_noisy.py --check 33,72 "$T/g.truth" >"$T/gcap" 2>&1
+	awk '{ n++; if ($2 != "0" || !($3 <= ($1 == 33 ? 5.5 : 4))) bad++ }
+	    END { exit !(n == 2 && !bad) }' "$T/gcap" && ok ||
+	    no "one point between two corners (contour, crosses, sigmas, astray, corners): $(cat "$T/gcap")"
 else
 	echo "skip: splinefit -e on noisy glyphs (no python3 with scipy and fontTools, or no fonts)"
 fi
@@ -740,7 +751,10 @@ if [ "$glyphs" = 200 ]; then
 	# m crossed itself even so (7.6 sigmas off, spans astray).  The fit
 	# without the corners nearest each span astray comes first now:
 	# none astray or crossing, within 6 sigmas, and 9 of 12, 6 of 8
-	# and 15 of 20 true corners kept at least
+	# and 15 of 20 true corners kept at least.  (Once the knots of two
+	# corners with one point between went past their points, the m
+	# folded at the end of a stroke whose corners were not found, from
+	# 48 first spans as from the first; it passes from 96.)
 	{ "$PY" tests/bench/glyphs_noisy.py --check 8,25 "$T/g.truth" \
 	    --knots "$T/g.knots" --seed 4 &&
 	    "$PY" tests/bench/glyphs_noisy.py --check 19 "$T/g.truth" \
