@@ -46,23 +46,22 @@ static const char usage_text[] =
     "[file ...]\n"
     "       offsets -k [-p digits] [file ...]\n";
 
-/* The waterlines as the header's z= list. */
-static int
-put_levels(struct loft_writer *w, const double *z, size_t n)
+/* The waterlines as the header's z= list, in a new string; NULL out of
+ * memory. */
+static char *
+levels_text(const double *z, size_t n)
 {
 	char *buf, num[LOFT_NUMBUF];
 	size_t len = 0;
 
 	if ((buf = malloc(n * (LOFT_NUMBUF + 1) + 1)) == NULL)
-		return -1;
+		return NULL;
 	buf[0] = '\0';
 	for (size_t i = 0; i < n; i++) {
 		loft_format_num(num, z[i], 0);
 		len += (size_t)sprintf(buf + len, "%s%s", i ? "," : "", num);
 	}
-	loft_put_attr(w, "z", buf);
-	free(buf);
-	return 0;
+	return buf;
 }
 
 /* -x, -z: the table of the surfaces' half-breadths. */
@@ -73,20 +72,23 @@ tabulate(struct loft_run *run, const struct loft_record *recs, size_t n)
 	struct loft_surface *s;
 	size_t ns;
 	double *row, size;
+	char *levels = NULL;
 
 	if (n == 0)
 		return 0;
 	if (loft_surfaces_from_records(run, recs, n, &s, &ns) != 0)
 		return 1;
 	size = hull_size(s, ns);
-	if ((row = malloc((o->nz + 1) * sizeof *row)) == NULL) {
+	if ((row = malloc((o->nz + 1) * sizeof *row)) == NULL ||
+	    (levels = levels_text(o->z, o->nz)) == NULL) {
 		fputs("offsets: out of memory\n", run->msg);
+		free(row);
 		free(s);
 		return 1;
 	}
 	loft_put_type(&run->w, "offsets");
-	if (put_levels(&run->w, o->z, o->nz) != 0)
-		run->w.bad = 1;
+	loft_put_attr(&run->w, "z", levels);
+	free(levels);
 	loft_end_line(&run->w);
 	for (size_t i = 0; i < o->nx; i++) {
 		row[0] = o->x[i];

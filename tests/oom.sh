@@ -2,9 +2,9 @@
 # oom.sh: every program on a typical input with its k-th allocation made
 # to fail, for k = 1, 2, ... until a run makes fewer than k (issue 12,
 # after SQLite's out-of-memory loops).  Each run that met its failure
-# must end in exit 1 with a message "PROG: ..." on standard error and
-# standard output holding only whole records of the run without the
-# failure (a filter: any of them; a design: all or none; loftplot: a whole
+# must end in exit 1 with a message "PROG: ..." naming memory on standard
+# error and standard output holding only whole records of the run
+# without the failure (a filter: any of them; a design: all or none; loftplot: a whole
 # SVG document, of the records it could read),
 # or, where the program or the C library could do without that memory
 # (a stdio buffer, say), exactly the output of that run and exit 0.
@@ -89,6 +89,8 @@ oom() {
 			why="exit $rc"
 		elif ! grep -q "^$prog: ." "$T/err"; then
 			why="exit 1 without a message"
+		elif ! grep -q -i "memory" "$T/err"; then
+			why="a message that does not name memory"
 		elif v=$(whole "$T/out" "$T/good" "$kind"); then
 			:
 		else
