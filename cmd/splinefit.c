@@ -616,22 +616,33 @@ astray_note(struct loft_run *run, const struct loft_record *rec,
 }
 
 /* -e: the fit without corners, into o->seg and *info, where the fit
- * with those splinefit found fails the tolerance: on sparse clean
- * points a bend can read as corners, their knots out where the lines
- * either side meet, off the points (20 points round a circle of radius
- * 50 gave four, 10 off it).  Returns 0, or loft_approx's error. */
+ * with those splinefit found fails the tolerance (*rc LOFT_ENOCONV,
+ * *err its error): on sparse clean points a bend can read as corners,
+ * their knots out where the lines either side meet, off the points (20
+ * points round a circle of radius 50 gave four, 10 off it).  *rc
+ * becomes 0 where it meets it, LOFT_ENOMEM (and *err says so) where
+ * memory ran out; the first error stands otherwise.  Returns whether
+ * the fit without corners is taken. */
 static int
 approx_cornerless(struct opts *o, const struct loft_record *rec,
-    const struct loft_approx_opts *ao, struct loft_approx_info *info)
+    const struct loft_approx_opts *ao, struct loft_approx_info *info,
+    int *rc, struct loft_error *err)
 {
 	struct loft_approx_opts no = *ao;
 	struct loft_error e;
+	int r;
 
 	no.corner = NULL;
 	no.corner_at = NULL;
 	no.ncorner = 0;
-	return loft_approx(&no, rec->num, rec->nrows, rec->ncols, o->seg, info,
+	r = loft_approx(&no, rec->num, rec->nrows, rec->ncols, o->seg, info,
 	    &e);
+	if (r == 0 || r == LOFT_ENOMEM) {
+		*rc = r;
+		if (r != 0)
+			*err = e;
+	}
+	return r == 0;
 }
 
 /* -e: the fair curve within o->approx of the points (loft_approx). */
@@ -654,6 +665,8 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 	if (found) {    /* none given: its own, at their places */
 		nc = loft_find_corners(rec->num, rec->nrows, dim, fit->closed,
 		    o->approx, o->corner, o->cornerat);
+		if (nc == (size_t)-1)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		ao.corner_at = o->cornerat;
 	}
 	ao.corner = o->corner;
@@ -663,10 +676,8 @@ approx_record(struct loft_run *run, const struct loft_record *rec,
 		ao.maxround = o->rounds;
 	if ((rc = loft_approx(&ao, rec->num, rec->nrows, dim, o->seg, &info,
 	    err)) == LOFT_ENOCONV && found && nc > 0 &&
-	    approx_cornerless(o, rec, &ao, &info) == 0) {
-		rc = 0;
+	    approx_cornerless(o, rec, &ao, &info, &rc, err))
 		nc = 0;
-	}
 	if (rc != 0)
 		return rc;
 	if (found && nc > 0 && approx_without(o, rec, &ao, flat_at, 0,

@@ -158,6 +158,9 @@ struct work {
 	double *sdist;
 	size_t sm0;
 	int checks;             /* rounds of splitting the checks asked */
+	int nomem;              /* memory ran out, in a try too: the run
+	                         * fails (approx_run), never takes another
+	                         * turn quietly */
 	size_t start;           /* spans to start with */
 	struct loft_fit_opts fit;
 	struct kept kept[APPROX_KEPT];
@@ -683,6 +686,7 @@ fit_curve(struct work *w, struct loft_error *err)
 	struct loft_error ferr;
 	size_t size = 4 * (size_t)w->dim * nseg_of(w) * sizeof *w->seg;
 	struct kept *c;
+	int rc;
 
 	for (int t = 0; t < APPROX_KEPT; t++)
 		if (kept_same(w, c = &w->kept[(w->newest + t) % APPROX_KEPT])) {
@@ -692,9 +696,11 @@ fit_curve(struct work *w, struct loft_error *err)
 		}
 	fo.corner = w->nc > 0 ? w->corner : NULL;
 	fo.ncorner = w->nc;
-	if (loft_fit(&fo, w->k, w->m, w->dim, w->seg, NULL, &ferr) != 0)
+	if ((rc = loft_fit(&fo, w->k, w->m, w->dim, w->seg, NULL, &ferr)) != 0) {
+		w->nomem |= rc == LOFT_ENOMEM;
 		return loft_fail(err, LOFT_EGEOM, -1, "the curve through %zu "
 		    "knots fails: %s", w->m, ferr.msg);
+	}
 	powers(w);
 	if (w->fit.nstraight == 0) {
 		w->newest = (w->newest + 1) % APPROX_KEPT;
@@ -1098,7 +1104,7 @@ crossing_spans(struct work *w)
 static size_t
 check_spans(struct work *w, double worst)
 {
-	size_t bad;
+	size_t bad, cross;
 
 	if (worst > w->tol)
 		return 0;
@@ -1108,7 +1114,11 @@ check_spans(struct work *w, double worst)
 	for (size_t i = 0; i < w->n; i++)
 		w->kidx[w->fj[i]]++;
 	bad = stray_spans(w);
-	return bad + crossing_spans(w);
+	if ((cross = crossing_spans(w)) == (size_t)-1) {
+		w->nomem = 1;
+		return cross;
+	}
+	return bad + cross;
 }
 
 /*
@@ -1771,12 +1781,13 @@ turn_between(const struct work *w, size_t j0, double u0, size_t j1, double u1)
 
 /*
  * The inflexions of a plane curve found exactly (where the quadratic
- * numerator of each span's curvature changes sign), returned, and its
- * weakest wiggle as for wiggle(): the run between two of them whose
- * turn is least, below APPROX_WIGGLE and above floor.
+ * numerator of each span's curvature changes sign), returned (0, and
+ * w->nomem set, out of memory), and its weakest wiggle as for wiggle():
+ * the run between two of them whose turn is least, below APPROX_WIGGLE
+ * and above floor.
  */
 static size_t
-wiggle_exact(const struct work *w, double floor, size_t *ja, size_t *jb,
+wiggle_exact(struct work *w, double floor, size_t *ja, size_t *jb,
     double *turn, int *wsign)
 {
 	size_t ns = nseg_of(w), nch = 0, cap = 4 * ns + 4;
@@ -1788,6 +1799,7 @@ wiggle_exact(const struct work *w, double floor, size_t *ja, size_t *jb,
 	if (cj == NULL || cu == NULL) {
 		free(cj);
 		free(cu);
+		w->nomem = 1;
 		return 0;
 	}
 	for (int pass = 0; pass < 1 + w->closed; pass++)
@@ -2499,14 +2511,16 @@ every_point(struct work *w, const size_t *corner, size_t ncorner,
 	    check_spans(w, *worst) == 0 && inflexions(w) <= infl;
 }
 
+/* The rounds of one fit: 0, or an error (or none where memory ran out
+ * in a try; approx_run says so). */
 static int
-approx_run(struct work *w, const struct loft_approx_opts *o,
+approx_rounds(struct work *w, const struct loft_approx_opts *o,
     const size_t *corner, struct loft_approx_info *info,
     struct loft_error *err)
 {
 	double worst;
 	size_t at, bad = 0, knots;
-	int round, removed = 0;
+	int round, removed = 0, rc;
 
 	if (smooth(w) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
@@ -2514,8 +2528,6 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 	if (fit_project(w, &worst, &at, err) != 0)
 		return LOFT_EGEOM;
 	for (round = 1;; round++) {
-		int rc;
-
 		if (settle(w, &worst, &at, err) != 0)
 			return LOFT_EGEOM;
 		if ((rc = tidy(w, &removed, &worst, &at, &bad, err)) != 0)
@@ -2538,8 +2550,8 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 			at = from;
 		}
 	}
-	if (worst <= w->tol && straight_runs(w, &worst, &at, err) != 0)
-		return LOFT_EGEOM;
+	if (worst <= w->tol && (rc = straight_runs(w, &worst, &at, err)) != 0)
+		return rc;
 	info->nknots = knots;
 	info->nseg = w->closed ? knots : knots - 1;
 	info->dist = worst;
@@ -2548,6 +2560,20 @@ approx_run(struct work *w, const struct loft_approx_opts *o,
 	if (worst > w->tol)
 		return short_fail(o, w, worst, at, knots, round, err);
 	return 0;
+}
+
+/* One fit from w->start spans (approx_rounds); LOFT_ENOMEM wherever
+ * memory ran out, a try's included: a try that could not be made would
+ * otherwise change the curve, or its error, quietly. */
+static int
+approx_run(struct work *w, const struct loft_approx_opts *o,
+    const size_t *corner, struct loft_approx_info *info,
+    struct loft_error *err)
+{
+	int rc = approx_rounds(w, o, corner, info, err);
+
+	return w->nomem ? loft_fail(err, LOFT_ENOMEM, -1, "out of memory") :
+	    rc;
 }
 
 /* A fit that ends astray or crossing itself (past APPROX_CHECK_ROUNDS),
@@ -2651,8 +2677,8 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	struct work w = { 0 };
 	struct loft_approx_info dummy;
 	size_t *corner = NULL;
-	double big = 0, dir[LOFT_MAXDIM];
-	int rc, e, line = 0;
+	double dir[LOFT_MAXDIM];
+	int rc, e = 0, line = 0;
 
 	if (info == NULL)
 		info = &dummy;
@@ -2670,10 +2696,10 @@ loft_approx(const struct loft_approx_opts *o, const double *p, size_t n,
 	w.closed = o->closed;
 	w.n = n;
 	/* the points scaled by a power of two (exactly) into the unit box,
-	 * so that no square of a distance overflows or underflows */
-	for (size_t i = 0; i < n; i++)
-		big = fmax(big, vmaxabs(p + i * dim, dim));
-	e = w.e = ilogb(big);
+	 * so that no square of a distance overflows or underflows (they are
+	 * finite, and not all one point: check_input) */
+	(void)unit_exponent(p, n, dim, &e);
+	w.e = e;
 	w.tol = ldexp(o->tol, -e);
 	loft_fit_defaults(&w.fit);
 	w.fit.method = LOFT_FAIR;

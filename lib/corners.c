@@ -1229,24 +1229,16 @@ find_dense(const struct outline *o, double tol, struct found *f, size_t *nc)
 	return rc;
 }
 
-/* The n points p (dimension dim) scaled by a power of two (exactly)
- * into the unit box, so that no square of a distance overflows or
- * underflows, in a new array, with the power in *e; NULL where they
- * are all 0, not finite, or out of memory. */
+/* The n points p (dimension dim) scaled by 2^-e (unit_exponent), in a
+ * new array; NULL out of memory. */
 static double *
-scaled(const double *p, size_t n, int dim, int *e)
+scaled(const double *p, size_t n, int dim, int e)
 {
-	double *q, big = 0;
+	double *q = calloc(n, (size_t)dim * sizeof *q);
 
-	for (size_t i = 0; i < n; i++)
-		big = fmax(big, vmaxabs(p + i * dim, dim));
-	if (!(big > 0) || !isfinite(big) ||
-	    (q = calloc(n, (size_t)dim * sizeof *q)) == NULL)
-		return NULL;
-	*e = ilogb(big);
-	for (size_t i = 0; i < n; i++)
+	for (size_t i = 0; q != NULL && i < n; i++)
 		for (int k = 0; k < dim; k++)
-			q[i * dim + k] = ldexp(p[i * dim + k], -*e);
+			q[i * dim + k] = ldexp(p[i * dim + k], -e);
 	return q;
 }
 
@@ -1261,15 +1253,15 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 	int e;
 
 	if (n < 5 || dim < 1 || dim > LOFT_MAXDIM || !(tol > 0) ||
-	    !isfinite(tol))
+	    !isfinite(tol) || unit_exponent(p, n, dim, &e) != 0)
 		return 0;
 	/* scaled, so that the corners do not depend on the units */
-	q = scaled(p, n, dim, &e);
+	q = scaled(p, n, dim, e);
 	f = malloc(n * sizeof *f);
 	if (q == NULL || f == NULL) {
 		free(q);
 		free(f);
-		return 0;
+		return (size_t)-1;
 	}
 	o.p = q;
 	if (find_dense(&o, ldexp(tol, -e), f, &nc) == 0)
@@ -1279,7 +1271,7 @@ loft_find_corners(const double *p, size_t n, int dim, int closed, double tol,
 				at[c * dim + k] = ldexp(f[c].at[k], e);
 		}
 	else
-		nc = 0;
+		nc = (size_t)-1;
 	free(q);
 	free(f);
 	return nc;
@@ -1292,9 +1284,10 @@ loft_points_noise(const double *p, size_t n, int dim, int closed)
 	double *q, *r, s = 0;
 	int e;
 
-	if (n < 3 || dim < 1 || dim > LOFT_MAXDIM)
+	if (n < 3 || dim < 1 || dim > LOFT_MAXDIM ||
+	    unit_exponent(p, n, dim, &e) != 0)
 		return 0;
-	q = scaled(p, n, dim, &e);
+	q = scaled(p, n, dim, e);
 	r = malloc(n * sizeof *r);
 	if (q != NULL && r != NULL) {
 		o.p = q;

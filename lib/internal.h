@@ -53,6 +53,24 @@ vmaxabs(const double *a, int dim)
 	return m;
 }
 
+/* The power of two that scales the n points p (dimension dim), exactly,
+ * into the box [-2, 2) with the largest coordinate's magnitude in
+ * [1, 2), so that no square of a distance between them overflows or
+ * underflows: into *e.  Returns 0, or -1 (*e untouched) where the points
+ * are all 0 or one is not finite. */
+static inline int
+unit_exponent(const double *p, size_t n, int dim, int *e)
+{
+	double big = 0;
+
+	for (size_t i = 0; i < n; i++)
+		big = fmax(big, vmaxabs(p + i * dim, dim));
+	if (!(big > 0) || !isfinite(big))
+		return -1;
+	*e = ilogb(big);
+	return 0;
+}
+
 /* |a|: the plain root of the sum of squares, or rescaled where it fails */
 static inline double
 vnorm(const double *a, int dim)

@@ -419,7 +419,7 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * either side meet, if nearer its point than its neighbours, else the
  * point.  A turn is kept only where the lines fit the points near it
  * better than a quadratic curve does (else it is a smooth bend).
- * Returns their count (0 also when out of memory).  A circle or a
+ * Returns their count, or (size_t)-1 out of memory.  A circle or a
  * gentle bend seldom gives one.  Points denser than the scale needs
  * are first averaged in runs, so the time grows with n, not with the
  * points' density.
