@@ -254,13 +254,10 @@ loft__fit_manning(const struct loft_fit_opts *o, const double *p, size_t n,
 static int
 unit_box(const double *p, size_t n, int dim, double *q)
 {
-	double big = 0;
 	int e = 0;
 
-	for (size_t i = 0; i < n * dim; i++)
-		big = fmax(big, fabs(p[i]));
-	if (big > 0)
-		frexp(big, &e);
+	if (unit_exponent(p, n, dim, &e) == 0)
+		e++;            /* into [0.5, 1), as frexp's */
 	for (size_t i = 0; i < n * dim; i++)
 		q[i] = ldexp(p[i], -e);
 	return e;
