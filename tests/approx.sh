@@ -589,6 +589,19 @@ done
 # corner: the fit went astray, and was written without corners).  So:
 # the four corners, each within 0.3 of the rectangle's.
 rect_case short 100 20 2 1 0.3
+# ---- narrow slabs (issue 23): rectangles 97 long and 3, 4 or 5 across,
+# a point every 2.5 (the first 0.7 along), noise 0.05, -e 0.2.  The ends
+# are narrower than the scale (15, six spacings), so every point within
+# 15 of an end turns by nearly 180 degrees over it, and the sharpest of
+# them lay up to 17 from the end, where its points (a bend there) were
+# settled; 0 to 3 of the 4 corners were found.  Now the end is settled
+# from its tip: the four corners, each within 0.3 of the rectangle's.
+# An end 3 across holds one point, and each knot goes on its side's line
+# a spacing's path from it (see splinefit(1)): within a third of a
+# spacing, 0.8.
+rect_case narrow4 97 4 2.5 0.7 0.3
+rect_case narrow5 97 5 2.5 0.7 0.3
+rect_case narrow3 97 3 2.5 0.7 0.8
 # ---- the two corners of an end shorter than the scale, off the points:
 # a rectangle 100 x 12, a point every 2.5 (the first 1.25 along), so that
 # each end holds four points, none nearer a corner than 1.25.  The knots
