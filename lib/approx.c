@@ -696,7 +696,8 @@ fit_curve(struct work *w, struct loft_error *err)
 		}
 	fo.corner = w->nc > 0 ? w->corner : NULL;
 	fo.ncorner = w->nc;
-	if ((rc = loft_fit(&fo, w->k, w->m, w->dim, w->seg, NULL, &ferr)) != 0) {
+	rc = loft_fit(&fo, w->k, w->m, w->dim, w->seg, NULL, &ferr);
+	if (rc != 0) {
 		w->nomem |= rc == LOFT_ENOMEM;
 		return loft_fail(err, LOFT_EGEOM, -1, "the curve through %zu "
 		    "knots fails: %s", w->m, ferr.msg);
@@ -1033,7 +1034,8 @@ fold_spans(struct crossing *c)
 {
 	struct work *w = c->w;
 	size_t ns = nseg_of(w), np = c->ne + !w->closed;
-	double in[2], out[2], tin[2], tout[2], x[2], d2[2];
+	double in[2], out[2], tin[2] = { 0, 0 }, tout[2] = { 0, 0 };
+	double x[2] = { 0, 0 }, d2[2] = { 0, 0 };
 	const double *p = c->pt;
 
 	for (size_t j = !w->closed; j < ns; j++) {
@@ -1440,7 +1442,7 @@ static int
 sample_turn(const struct work *w, size_t t, double *x)
 {
 	size_t ns = nseg_of(w);
-	double p[2], d1[2], d2[2], v, k;
+	double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 }, v, k;
 	double u = ((t % APPROX_KSAMPLES) + 0.5) / APPROX_KSAMPLES;
 
 	span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
@@ -1674,7 +1676,7 @@ struct fairing {
 static double
 kappa_len(const struct work *w, size_t j, double u, double len)
 {
-	double p[2], d1[2], d2[2], v;
+	double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 }, v;
 
 	span_eval(w, j, u, p, d1, d2);
 	v = hypot(d1[0], d1[1]);
@@ -1688,7 +1690,7 @@ curve_len(const struct work *w)
 	double len = 0;
 
 	for (size_t t = 0; t < nseg_of(w) * APPROX_KSAMPLES; t++) {
-		double p[2], d1[2], d2[2];
+		double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 };
 
 		span_eval(w, t / APPROX_KSAMPLES, ((t % APPROX_KSAMPLES) + 0.5) /
 		    APPROX_KSAMPLES, p, d1, d2);
@@ -1752,7 +1754,8 @@ cross_least(const double *q, int sign)
 static double
 turn_between(const struct work *w, size_t j0, double u0, size_t j1, double u1)
 {
-	double p[2], a[2], b[2], d2[2], turn = 0;
+	double p[2] = { 0, 0 }, a[2] = { 0, 0 }, b[2] = { 0, 0 };
+	double d2[2] = { 0, 0 }, turn = 0;
 	size_t j = j0, ns = nseg_of(w);
 	double u = u0;
 
@@ -1899,7 +1902,7 @@ fair_normals(const struct work *w, struct fairing *f)
 {
 	for (size_t v = 0; v < f->nv; v++) {
 		size_t j = f->kv[v];
-		double p[2], d1[2], d2[2], s;
+		double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 }, s;
 
 		if (j < nseg_of(w))
 			span_eval(w, j, 0, p, d1, d2);
@@ -1919,7 +1922,7 @@ fair_eval(const struct work *w, struct fairing *f, long col, double h)
 {
 	for (size_t k = 0; k < f->np; k++) {
 		size_t i = f->pi[k];
-		double p[2];
+		double p[2] = { 0, 0 };
 
 		span_eval(w, w->fj[i], w->fu[i], p, NULL, NULL);
 		if (col < 0) {
@@ -1955,7 +1958,7 @@ fair_feet(struct work *w, struct fairing *f)
 {
 	for (size_t k = 0; k < f->np; k++) {
 		size_t i = f->pi[k];
-		double p[2], d1[2], d2[2], s;
+		double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 }, s;
 
 		project(w, w->q + i * 2, &w->fj[i], &w->fu[i]);
 		span_eval(w, w->fj[i], w->fu[i], p, d1, d2);
@@ -2155,7 +2158,8 @@ curve_energy(const struct work *w, double len)
 	double e = 0;
 
 	for (size_t t = 0; t < nseg_of(w) * APPROX_KSAMPLES; t++) {
-		double p[2], d1[2], d2[2], u = ((t % APPROX_KSAMPLES) + 0.5) /
+		double p[2] = { 0, 0 }, d1[2] = { 0, 0 }, d2[2] = { 0, 0 };
+		double u = ((t % APPROX_KSAMPLES) + 0.5) /
 		    APPROX_KSAMPLES, k;
 
 		span_eval(w, t / APPROX_KSAMPLES, u, p, d1, d2);
