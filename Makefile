@@ -132,7 +132,7 @@ bin/wasm/loft.wasm: $(WASMSRC) lib/wasm/loftwasm.c lib/wasm/build.sh \
     lib/loftprog.h lib/loftcad.h lib/internal.h lib/wasm/page.h
 	@mkdir -p bin/wasm
 	rm -f $@
-	@sh lib/wasm/build.sh $(WASM_CC) $@ $(WASMSRC); rc=$$?; \
+	@rc=0; sh lib/wasm/build.sh $(WASM_CC) $@ $(WASMSRC) || rc=$$?; \
 	    if [ $$rc -eq 3 ]; then : >$@; else exit $$rc; fi
 
 bin/wasm/page.c: bin/wasm/embed lib/wasm/page.html bin/wasm/loft.wasm
@@ -290,10 +290,10 @@ SAN_DIR = bin/san
 check-san:
 	rm -rf $(SAN_DIR) && mkdir -p $(SAN_DIR)/log
 	cp -R Makefile lib cmd tests man $(SAN_DIR)/
-	@top=$$(pwd); (cd $(SAN_DIR) && $(MAKE) clean >/dev/null && \
+	@top=$$(pwd); rc=0; (cd $(SAN_DIR) && $(MAKE) clean >/dev/null && \
 	    ASAN_OPTIONS=log_path=$$top/$(SAN_DIR)/log/asan:detect_leaks=1 \
 	    UBSAN_OPTIONS=log_path=$$top/$(SAN_DIR)/log/ubsan:print_stacktrace=1 \
-	    $(MAKE) CC="$(CC)" CFLAGS="$(SAN_CFLAGS)" check); rc=$$?; \
+	    $(MAKE) CC="$(CC)" CFLAGS="$(SAN_CFLAGS)" check) || rc=$$?; \
 	if ls $(SAN_DIR)/log | grep -q .; then head -60 $(SAN_DIR)/log/*; \
 	    echo "check-san: sanitizer reports in $(SAN_DIR)/log"; exit 1; fi; \
 	[ $$rc -eq 0 ] && echo "check-san: no sanitizer reports"; exit $$rc
@@ -317,7 +317,7 @@ check-valgrind: all $(TESTS)
 	        "$$(pwd)/bin/$$p" >$(VG_DIR)/$$p && chmod +x $(VG_DIR)/$$p \
 	        || exit 1; \
 	done; \
-	LOFT_BIN=$(VG_DIR) LOFT_BIG_KNOTS=20000 sh tests/run.sh; rc=$$?; \
+	rc=0; LOFT_BIN=$(VG_DIR) LOFT_BIG_KNOTS=20000 sh tests/run.sh || rc=$$?; \
 	bad=$$(find $(VG_DIR)/log -type f -size +0 | wc -l); \
 	if [ "$$bad" -gt 0 ]; then cat $$(find $(VG_DIR)/log -type f -size +0); \
 	    echo "check-valgrind: $$bad runs with memcheck errors"; exit 1; fi; \
@@ -348,13 +348,13 @@ fuzz:
 	done; \
 	for f in $(FUZZERS); do \
 	    mkdir -p bin/fuzz/corpus/$$f && \
-	    echo "fuzz: $$f for $(FUZZ_SECONDS) s" && \
+	    echo "fuzz: $$f for $(FUZZ_SECONDS) s" && rc=0 && \
 	    bin/fuzz/$$f -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
 	        -dict=tests/fuzz/loft.dict -artifact_prefix=bin/fuzz/$$f- \
 	        -print_final_stats=1 \
-	        bin/fuzz/corpus/$$f tests/fuzz/corpus/$$f 2>bin/fuzz/$$f.log; \
-	    rc=$$?; grep -E '^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss)' \
-	        bin/fuzz/$$f.log; \
+	        bin/fuzz/corpus/$$f tests/fuzz/corpus/$$f 2>bin/fuzz/$$f.log \
+	        || rc=$$?; grep -E '^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::peak_rss)' \
+	        bin/fuzz/$$f.log || :; \
 	    if [ $$rc -ne 0 ]; then tail -40 bin/fuzz/$$f.log; \
 	        echo "fuzz: $$f failed: see bin/fuzz/$$f.log"; exit 1; fi; \
 	done

@@ -77,5 +77,24 @@ left=$(find "$P" -type f ! -path "$P/bin/other")
     no "uninstall removed a file it did not install"
 rm -rf "$P"
 
+# without a WebAssembly toolchain (a compiler that is not there), the
+# page is built without its module, with one line that says so, and
+# make goes on: the Makefile is .POSIX, so make runs recipes with sh -e
+# (in a copy of the tree, so this tree's module stays)
+W=$T/nowasm
+rm -rf "$W" && mkdir -p "$W" && cp -R Makefile lib cmd "$W/"
+if (cd "$W" && MAKEFLAGS= MFLAGS= make -s WASM_CC=./no-such-cc \
+    bin/wasm/page.o) >"$T/out" 2>"$T/err"; then
+	ok
+else
+	no "make without a wasm toolchain: $(tail -2 "$T/err")"
+fi
+[ -f "$W/bin/wasm/page.o" ] && [ ! -s "$W/bin/wasm/loft.wasm" ] && ok ||
+    no "without a wasm toolchain: no page.o, or a module"
+[ "$(grep -c 'no WebAssembly toolchain' "$T/out" "$T/err" |
+    awk -F: '{ n += $2 } END { print n }')" -eq 1 ] && ok ||
+    no "without a wasm toolchain: not one line that says so"
+rm -rf "$W"
+
 echo "install: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
