@@ -38,7 +38,8 @@
 # copy of the tree has no README.)
 #
 # A command that calls gnuplot, graph, parallel, chromium or python where
-# that tool is not installed is skipped with the rest of its example, and
+# that tool is not installed, or loftplot -i where the page was built
+# without its WebAssembly module, is skipped with the rest of its example, and
 # one line per missing tool names the examples skipped.  GNUTERM=dumb
 # keeps gnuplot from opening a window.
 #
@@ -183,8 +184,13 @@ good() { if [ $quiet = 1 ]; then qpass=$((qpass + 1)); else ok; fi; }
 bad() { if [ $quiet = 1 ]; then qfail=$((qfail + 1)); else no "$@"; fi; }
 
 # missing CMDFILE: the first tool of TOOLS the command calls and this
-# machine lacks, if any
+# machine lacks, if any; or wasm-module, where it runs loftplot -i and
+# the page was built without its module (no wasm32 toolchain)
 missing() {
+	if grep -q 'loftplot -i' "$1" && [ ! -s "$ROOT/bin/wasm/loft.wasm" ]; then
+		echo wasm-module
+		return
+	fi
 	for tool in $TOOLS; do
 		if grep -E -q "(^|[|;&({]|then|do)[[:space:]]*$tool([[:space:]]|$)" "$1" &&
 		    ! command -v "$tool" >/dev/null 2>&1; then
