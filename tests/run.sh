@@ -68,5 +68,6 @@ suite sh tests/synopsis.sh
 slow sh tests/units.sh
 suite bin/test/sparse
 suite sh tests/unroll.sh
+slow sh tests/fuzzbuild.sh
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

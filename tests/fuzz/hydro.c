@@ -25,7 +25,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	o.stations = data[0] & 4 ? 3 : 0;
 	if (data[0] & 8) {
 		o.rho = 1.025;
-		if (parse_fields("volume,cb,wetted,displacement", &o, &err) != 0)
+		if (loft_opt_fields("volume,cb,wetted,displacement",
+		    field_names, o.field, MAXFIELDS, &o.nfield, &err) != 0)
 			abort();
 	}
 	run.w.digits = data[1] % 18;

@@ -25,7 +25,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if (size < 2)
 		return 0;
 	if (fields[data[0] % 3] != NULL &&
-	    parse_fields(fields[data[0] % 3], &o, &err) != 0)
+	    loft_opt_fields(fields[data[0] % 3], field_names, o.field,
+	    MAXFIELDS, &o.nfield, &err) != 0)
 		abort();
 	run.w.digits = data[1] % 18;
 	fuzz_records(&run, data + 2, size - 2);
