@@ -2431,33 +2431,14 @@ straight_runs(struct work *w, double *worst, size_t *at,
 	return 0;
 }
 
-/* Remove the knots the points do not ask for, once (when the tolerance
- * is first met), and fair the wiggles left, after each round that
- * meets it; then the checks both ways.  Returns 0, or an error. */
+/* The checks both ways (check_spans) of a round: the spans astray into
+ * *bad, counted in w->checks; where the check found loops, they are cut
+ * and the knots settled again, and *bad is the check of the curve then.
+ * Returns 0, or an error. */
 static int
-tidy(struct work *w, int *removed, double *worst, size_t *at, size_t *bad,
+check_round(struct work *w, double *worst, size_t *at, size_t *bad,
     struct loft_error *err)
 {
-	if (*worst <= w->tol && !*removed) {
-		*removed = 1;
-		if (w->m <= APPROX_REMOVE_MAX) {
-			remove_knots(w);
-			straighten(w);
-		}
-		if (fit_project(w, worst, at, err) != 0 ||
-		    settle(w, worst, at, err) != 0)
-			return LOFT_EGEOM;
-	}
-	if (*worst <= w->tol && w->m <= APPROX_REMOVE_MAX) {
-		if (fair_wiggles(w) != 0)
-			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-		if (fit_project(w, worst, at, err) != 0)
-			return LOFT_EGEOM;
-	}
-	if (w->checks >= APPROX_CHECK_ROUNDS) {
-		*bad = 0;
-		return 0;
-	}
 	if ((*bad = check_spans(w, *worst)) > 0)
 		w->checks++;
 	if (*bad == (size_t)-1)
@@ -2470,6 +2451,52 @@ tidy(struct work *w, int *removed, double *worst, size_t *at, size_t *bad,
 			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	}
 	return 0;
+}
+
+/*
+ * Remove the knots the points do not ask for, once (when the tolerance
+ * is first met); then the checks both ways (check_round), and where the
+ * curve passes them, the wiggles left faired and the checks again.  A
+ * curve astray is not faired: the next round splits its spans, or,
+ * past APPROX_CHECK_ROUNDS, a try from more spans most often takes its
+ * place.  Fairing curves about to change took most of the time on
+ * dense outlines with corners.  Returns 0, or an error.
+ */
+static int
+tidy(struct work *w, int *removed, double *worst, size_t *at, size_t *bad,
+    struct loft_error *err)
+{
+	size_t astray;
+	int rc;
+
+	if (*worst <= w->tol && !*removed) {
+		*removed = 1;
+		if (w->m <= APPROX_REMOVE_MAX) {
+			remove_knots(w);
+			straighten(w);
+		}
+		if (fit_project(w, worst, at, err) != 0 ||
+		    settle(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	*bad = 0;
+	if (w->checks < APPROX_CHECK_ROUNDS) {
+		if ((rc = check_round(w, worst, at, bad, err)) != 0 || *bad > 0)
+			return rc;
+	} else if ((astray = check_spans(w, *worst)) != 0) {
+		/* past the rounds of checks: not faired, not counted */
+		return astray == (size_t)-1 ? loft_fail(err, LOFT_ENOMEM, -1,
+		    "out of memory") : 0;
+	}
+	if (*worst <= w->tol && w->m <= APPROX_REMOVE_MAX) {
+		if (fair_wiggles(w) != 0)
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		if (fit_project(w, worst, at, err) != 0)
+			return LOFT_EGEOM;
+	}
+	if (w->checks >= APPROX_CHECK_ROUNDS)
+		return 0;
+	return check_round(w, worst, at, bad, err);
 }
 
 /* The error of a fit that ends with its largest distance worst (scaled)
