@@ -157,7 +157,7 @@ struct work {
 	unsigned char *stried;
 	double *sdist;
 	size_t sm0;
-	int checks;             /* rounds of splitting the checks asked */
+	int checks;             /* checks that found spans astray */
 	int nomem;              /* memory ran out, in a try too: the run
 	                         * fails (approx_run), never takes another
 	                         * turn quietly */
@@ -798,9 +798,11 @@ correct(struct work *w)
  * middle of their chord): nearer, the fit through them is ill-posed. */
 #define APPROX_APART 0.25
 
-/* Rounds of splitting at most that the checks both ways ask for: each
- * mends the spans astray; past these, a span still astray is one the
- * points' own noise draws, which more knots only follow closer. */
+/* Checks both ways that find spans astray, at most, in one try (a
+ * round counts two where its loops were cut and it fails again after
+ * fairing): each round after one mends the spans astray; past these, a
+ * span still astray is one the points' own noise draws, which more
+ * knots only follow closer. */
 #define APPROX_CHECK_ROUNDS 3
 
 /* A span so marked in spanmax is split wherever it lies (split). */
