@@ -3,7 +3,8 @@
 beside potrace tracing the same points rasterised.
 
     glyphs_noisy.py TRUTH WORKDIR [KNOTS]
-    glyphs_noisy.py --check K,K... TRUTH [--knots KNOTS] [--seed S] [OPTION...]
+    glyphs_noisy.py --check K,K... TRUTH [--knots KNOTS] [--seed S]
+                    [--points N] [OPTION...]
 
 TRUTH: the designer's outlines of tests/glyphs.py (200 points a
 segment); KNOTS: its knot records, whose corners= name the true
@@ -36,7 +37,8 @@ the spans splinefit -v says are astray (0 where it says none), the
 corners of the curve (its corners= joints), and the least angle its
 tangent turns by at one, in degrees (- where it has none); with
 --knots, also the true corners kept and how many there are, as above.
---seed draws the noise from seed S instead of the corpus's own, 23."""
+--seed draws the noise from seed S instead of the corpus's own, 23;
+--points samples each contour at N points instead of 400."""
 import math
 import os
 import random
@@ -289,13 +291,13 @@ def report(name, fails, loops, dist, nseg):
            pct(nseg, 0.9)))
 
 
-def noisy(k, t, rng):
-    """Contour k of the truth t sampled as the corpus is: (points,
-    sigma, the dense truth)."""
+def noisy(k, t, rng, npts=400):
+    """Contour k of the truth t sampled as the corpus is (at npts
+    points): (points, sigma, the dense truth)."""
     tt = np.r_[t, t[:1]]
     d = np.r_[0, np.cumsum(np.hypot(*np.diff(tt, axis=0).T))]
     sigma = [0.001, 0.0025, 0.005][k % 3] * np.ptp(t, axis=0).max()
-    u = np.linspace(0, d[-1], 400, endpoint=False)
+    u = np.linspace(0, d[-1], npts, endpoint=False)
     pts = np.array([[x + rng.gauss(0, sigma), y + rng.gauss(0, sigma)]
                     for x, y in zip(np.interp(u, d, tt[:, 0]),
                                     np.interp(u, d, tt[:, 1]))])
@@ -331,13 +333,13 @@ def splinefit(opt, pts, sigma):
                           capture_output=True, text=True)
 
 
-def check(which, truth, opt, heads=None, seed=23):
+def check(which, truth, opt, heads=None, seed=23, npts=400):
     """The --check lines for contours which, fitted with opt; with the
     knot records' heads (their corners), the true corners kept and
-    wanted too; the noise drawn from seed."""
+    wanted too; the noise drawn from seed, npts points a contour."""
     rng = random.Random(seed)
     for k, t in enumerate(truth):
-        pts, sigma, dense = noisy(k, t, rng)
+        pts, sigma, dense = noisy(k, t, rng, npts)
         if k not in which:
             continue
         fit = splinefit(["-v"] + opt, pts, sigma)
@@ -360,16 +362,18 @@ def check(which, truth, opt, heads=None, seed=23):
 
 def main():
     if sys.argv[1] == "--check":
-        opt, heads, seed = sys.argv[4:], None, 23
-        while opt[:1] in (["--knots"], ["--seed"]):
+        opt, heads, seed, npts = sys.argv[4:], None, 23, 400
+        while opt[:1] in (["--knots"], ["--seed"], ["--points"]):
             if opt[0] == "--knots":
                 heads = [h for h, _ in records(open(opt[1]).read())]
-            else:
+            elif opt[0] == "--seed":
                 seed = int(opt[1])
+            else:
+                npts = int(opt[1])
             opt = opt[2:]
         check([int(x) for x in sys.argv[2].split(",")],
               [r for _, r in records(open(sys.argv[3]).read())], opt, heads,
-              seed)
+              seed, npts)
         return
     truth = [r for _, r in records(open(sys.argv[1]).read())[:100]]
     work = sys.argv[2]
