@@ -429,17 +429,66 @@ start_point(const struct loft_approx_opts *o, const double *p, size_t n,
 	return a;
 }
 
+/* Into back[i] and ahead[i], how many points lie from point i back to
+ * the corner before it and on to the corner after it (of the ncorner
+ * corners, increasing), round the end when closed; n where there is
+ * none.  Both are 0 at a corner. */
+static void
+corner_gaps(const struct work *w, const size_t *corner, size_t ncorner,
+    size_t *back, size_t *ahead)
+{
+	size_t n = w->n, last = n, c = 0;
+
+	for (size_t i = 0; i < n; i++)
+		back[i] = ahead[i] = n;
+	if (ncorner == 0)
+		return;
+	if (w->closed)          /* the last corner, a lap back */
+		last = corner[ncorner - 1];
+	for (size_t i = 0; i < n; i++) {
+		if (c < ncorner && corner[c] == i)
+			last = corner[c++];
+		if (last < n)
+			back[i] = (i + n - last) % n;
+	}
+	last = w->closed ? corner[0] : n;
+	c = ncorner;
+	for (size_t i = n; i-- > 0;) {
+		if (c > 0 && corner[c - 1] == i)
+			last = corner[--c];
+		if (last < n)
+			ahead[i] = (last + n - i) % n;
+	}
+}
+
 /* The moving average of the points, and the length along it to each
- * point (s[n]: the whole, round the closing chord when closed). */
+ * point (s[n]: the whole, round the closing chord when closed).  Where
+ * two corners (of the ncorner, increasing) lie closer together than the
+ * window, the window of a point between them narrows to the nearer,
+ * and a corner's own point is its average: an average across two
+ * corners at once (a serif's) lies off the points between them, and
+ * the knots put on it there are held by none of them (on 1,600 noisy
+ * points round FreeSerif's h, H and U, the fits with the true corners
+ * found then strayed, and 40 of their 42 were given up for the fit
+ * without corners).  Across one corner of a longer run the average
+ * stays: the knots settle from it as before.  Returns 0, or -1 out of
+ * memory. */
 static int
-smooth(struct work *w)
+smooth(struct work *w, const size_t *corner, size_t ncorner)
 {
 	size_t n = w->n, hw = (size_t)(APPROX_SMOOTH * n);
 	int dim = w->dim;
 	double *pre = malloc((n + 1) * dim * sizeof *pre);
+	size_t *back = malloc(n * sizeof *back);
+	size_t *ahead = malloc(n * sizeof *ahead);
 
-	if (pre == NULL)
+	if (pre == NULL || back == NULL || ahead == NULL) {
+		free(pre);
+		free(back);
+		free(ahead);
 		return -1;
+	}
+	corner_gaps(w, corner, ncorner, back, ahead);
 	/* pre[i]: the sum of the first i points */
 	memset(pre, 0, dim * sizeof *pre);
 	for (size_t i = 0; i < n; i++)
@@ -455,6 +504,10 @@ smooth(struct work *w)
 		}
 		if (h > (n - 1) / 2)
 			h = (n - 1) / 2;
+		if (back[i] + ahead[i] < 2 * h) {       /* a short run */
+			h = back[i] < h ? back[i] : h;
+			h = ahead[i] < h ? ahead[i] : h;
+		}
 		for (int c = 0; c < dim; c++) {
 			/* points i - h .. i + h, round the end when closed */
 			double sum;
@@ -469,6 +522,8 @@ smooth(struct work *w)
 		}
 	}
 	free(pre);
+	free(back);
+	free(ahead);
 	w->s[0] = 0;
 	for (size_t i = 1; i <= n; i++)
 		w->s[i] = w->s[i - 1] + (i < n || w->closed ?
@@ -2555,7 +2610,7 @@ approx_rounds(struct work *w, const struct loft_approx_opts *o,
 	size_t at, bad = 0, knots;
 	int round, removed = 0, rc;
 
-	if (smooth(w) != 0)
+	if (smooth(w, corner, o->ncorner) != 0)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 	first_knots(w, corner, o->ncorner);
 	if (fit_project(w, &worst, &at, err) != 0)
