@@ -465,7 +465,7 @@ corner_gaps(const struct work *w, const size_t *corner, size_t ncorner,
  * point (s[n]: the whole, round the closing chord when closed).  Where
  * two corners (of the ncorner, increasing) lie closer together than the
  * window, the window of a point between them narrows to the nearer,
- * and a corner's own point is its average: an average across two
+ * and a corner's point is left as it is: an average across two
  * corners at once (a serif's) lies off the points between them, and
  * the knots put on it there are held by none of them (on 1,600 noisy
  * points round FreeSerif's h, H and U, the fits with the true corners

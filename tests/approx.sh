@@ -754,13 +754,14 @@ if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy, fontTools' 2>/dev/null &&
 	    END { exit !(n == 2 && !bad) }' "$T/gend" && ok ||
 	    no "tips past a stroke's end (contour, crosses, sigmas, astray, corners): $(cat "$T/gend")"
 	# contours 12, 46 and 63 (FreeSerif's h, H and U) at 1,600 points:
-	# the corners found were the true ones, but the fit with them
-	# strayed, since the first knots sat on a moving average taken across
-	# corners closer together than its window (a serif's), off the points
+	# the true corners were found, but the fit with them strayed, since
+	# the first knots sat on a moving average taken across two corners
+	# closer together than its window (a serif's), off the points
 	# between them; the fit without corners was written, keeping 0 of
 	# 14, 0 of 20 and 2 of 8 true corners, 4.3, 5.0 and 4.0 sigmas from
-	# the true outline.  The average now stops at a corner: 40 of the
-	# 42 kept at least, each curve within 4 sigmas, none crossing itself
+	# the true outline.  Between such corners the average now stops at
+	# the nearer: 40 of the 42 kept at least, each curve within 4
+	# sigmas, none crossing itself
 	"$PY" tests/bench/glyphs_noisy.py --check 12,46,63 "$T/g.truth" \
 	    --knots "$T/g.knots" --points 1600 >"$T/gdense" 2>&1
 	awk '{ n++; kept += $7; if ($2 != "0" || !($3 <= 4)) bad++ }
