@@ -449,7 +449,7 @@ corner_gaps(const struct work *w, const size_t *corner, size_t ncorner,
 		if (c < ncorner && corner[c] == i)
 			last = corner[c++];
 		if (last < n)
-			back[i] = (i + n - last) % n;
+			back[i] = i >= last ? i - last : i + n - last;
 	}
 	last = w->closed ? corner[0] : n;
 	c = ncorner;
@@ -457,7 +457,7 @@ corner_gaps(const struct work *w, const size_t *corner, size_t ncorner,
 		if (c > 0 && corner[c - 1] == i)
 			last = corner[--c];
 		if (last < n)
-			ahead[i] = (last + n - i) % n;
+			ahead[i] = last >= i ? last - i : last + n - i;
 	}
 }
 
