@@ -23,9 +23,9 @@
  * them can leave another corner that flat (one of FreeSerif's M turned
  * by 1.4 degrees), and the drop repeats until none is, while the fit
  * passes: where spans stray (most often a tolerance below the points'
- * noise), each refit costs as much as the first and mends nothing the
- * next can (400 points of a random walk at a tolerance of 1.6 times
- * their noise took 5 refits and 21 s, against 6 s with one). */
+ * noise), each refit costs as much as the first and seldom mends them
+ * (400 points of a random walk at a tolerance of 1.6 times their noise
+ * took 5 refits and 21 s; with one, 8 s). */
 #define APPROX_FLAT_TURN 0.1745
 
 struct opts {
