@@ -40,7 +40,11 @@
  * (unswell).  Every result is judged against the chord spline: no more
  * energy, no sharper bend (by the exact least radius; in the quick
  * descent where a segment slows), no crossing it has not; else the
- * chord spline is written.
+ * chord spline is written.  Last, a plane piece beside a straight run
+ * has the segments next to the run made again to meet it with
+ * curvature 0 (flat_ends), where that passes the same judgement: the
+ * family's end tangents are given, and its least energy meets a line
+ * G1 only.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -2011,6 +2015,232 @@ search(struct fair *f, struct best *b, double *x, double *h, double *v,
 	return more < 0 ? -1 : 0;
 }
 
+/* The signed curvature of the plane segment q (a row P_A P_B P'_A
+ * P'_B) at its end (0 start, 1 end); 0 where its tangent vanishes.
+ * P'' is 6c - 4 P'_A - 2 P'_B at the start, -6c + 2 P'_A + 4 P'_B at
+ * the end, c the chord. */
+static double
+end_curvature(const double *q, int end)
+{
+	const double *t = q + (end ? 6 : 4);
+	double d2[2], v = vnorm(t, 2);
+
+	for (int k = 0; k < 2; k++)
+		d2[k] = end ? -6 * (q[2 + k] - q[k]) + 2 * q[4 + k] + 4 *
+		    q[6 + k] : 6 * (q[2 + k] - q[k]) - 4 * q[4 + k] - 2 *
+		    q[6 + k];
+	return v > 0 ? (t[0] * d2[1] - t[1] * d2[0]) / (v * v * v) : 0;
+}
+
+static double
+cross2(const double *a, const double *b)
+{
+	return a[0] * b[1] - a[1] * b[0];
+}
+
+/* Newton's steps at most for a segment with both end curvatures given,
+ * and its residual, relative to the chord, at which it stops. */
+#define FLAT_NEWTON 30
+#define FLAT_SOLVED 1e-13
+
+/*
+ * Segment q of a plane curve, its end directions d0 and d1 kept, made
+ * to have the curvature k[e] at each end e, 0 where flat[e] (meeting a
+ * straight run there).  With Bezier points A, A + a d0, B - b d1, B and
+ * chord c the curvature is (2/3)(d0 x c - b d0 x d1) / a^2 at A and
+ * (2/3)(c x d1 - a d0 x d1) / b^2 at B: a flat end fixes the other
+ * end's arm, and that arm the first's where its curvature is given;
+ * where both are given, Newton's method from q's own arms solves the
+ * two.  Returns 1 where an arm would be shorter than 1 / LOFT__MAXMAG
+ * or longer than LOFT__MAXMAG thirds of the chord (not positive, or
+ * lopsided: a span from a run nearly along its chord would turn at
+ * once), or Newton fails, q untouched; else 0.
+ */
+static int
+flat_segment(double *q, const int *flat, const double *k)
+{
+	double c[2], d0[2], d1[2], w, a, b, len, x, y;
+	int it = 0;
+
+	vsub(c, q + 2, q, 2);
+	vcopy(d0, q + 4, 2);
+	vcopy(d1, q + 6, 2);
+	a = vunit(d0, 2) / 3;
+	b = vunit(d1, 2) / 3;
+	len = vnorm(c, 2);
+	if (!(a > 0) || !(b > 0) || !(len > 0) || (w = cross2(d0, d1)) == 0)
+		return 1;
+	x = cross2(d0, c);
+	y = cross2(c, d1);
+	if (flat[0] || flat[1]) {
+		a = flat[1] ? y / w : (y - 1.5 * k[1] * (x / w) * (x / w)) / w;
+		b = flat[0] ? x / w : (x - 1.5 * k[0] * a * a) / w;
+	}
+	for (; !flat[0] && !flat[1] && it < FLAT_NEWTON; it++) {
+		/* F = x - b w - 1.5 k0 a^2, G = y - a w - 1.5 k1 b^2 */
+		double f = x - b * w - 1.5 * k[0] * a * a;
+		double g = y - a * w - 1.5 * k[1] * b * b;
+		double fa = -3 * k[0] * a, gb = -3 * k[1] * b, det = fa * gb -
+		    w * w;
+
+		if (fabs(f) + fabs(g) <= FLAT_SOLVED * len)
+			break;
+		if (!(fabs(det) > 0))
+			return 1;
+		a -= (f * gb + w * g) / det;
+		b -= (fa * g + w * f) / det;
+	}
+	if (it == FLAT_NEWTON || !(3 * a * LOFT__MAXMAG >= len && 3 * b *
+	    LOFT__MAXMAG >= len && 3 * a <= LOFT__MAXMAG * len && 3 * b <=
+	    LOFT__MAXMAG * len))
+		return 1;
+	vscale(q + 4, 3 * a, d0, 2);
+	vscale(q + 6, 3 * b, d1, 2);
+	return 0;
+}
+
+/* The curvatures tried at the knot between two segments made anew
+ * (flat_pair): FLAT_STEPS + 1 fractions of the fit's, 0 to FLAT_MOST. */
+#define FLAT_STEPS 16
+#define FLAT_MOST 1.5
+
+/*
+ * Segments q and q + 8 of a plane curve made anew (flat_segment), the
+ * end at a straight run given by side (0: q's start, 1: the end of q +
+ * 8) flat, the far end of the pair with the curvature kfar (or flat
+ * where far_flat), and the knot between them with the fraction of its
+ * own curvature nearest 1 that both can take: for where the segment
+ * beside the run cannot meet its neighbour G2 alone, as beside a knot
+ * the fit rounds tightly, whose bend must ease.  1 where no fraction
+ * does (q untouched), else 0.
+ */
+static int
+flat_pair(double *q, int side, double kfar, int far_flat)
+{
+	double km = end_curvature(q, 1), best = HUGE_VAL, t[16], keep[16];
+
+	for (int i = 0; i <= FLAT_STEPS; i++) {
+		double k0[2], k1[2], frac = FLAT_MOST * i / FLAT_STEPS;
+		int f0[2] = { side == 0 || far_flat, 0 };
+		int f1[2] = { 0, side == 1 || far_flat };
+
+		k0[0] = side == 0 ? 0 : kfar;
+		k0[1] = k1[0] = km * frac;
+		k1[1] = side == 1 ? 0 : kfar;
+		memcpy(t, q, sizeof t);
+		if (fabs(frac - 1) >= best || flat_segment(t, f0, k0) != 0 ||
+		    flat_segment(t + 8, f1, k1) != 0)
+			continue;
+		best = fabs(frac - 1);
+		memcpy(keep, t, sizeof t);
+	}
+	if (!(best < HUGE_VAL))
+		return 1;
+	memcpy(q, keep, sizeof keep);
+	return 0;
+}
+
+/*
+ * The curve seg (f->nseg segments) met G2 at a straight run before its
+ * first segment where ends & 1, after its last where ends & 2, into t:
+ * each such end's segment made anew (flat_segment), its other end with
+ * its neighbour's curvature, or else with that neighbour too
+ * (flat_pair).  1 where not every such end could be, else 0.
+ */
+static int
+flat_try(const struct fair *f, const double *seg, int ends, double *t)
+{
+	size_t ns = f->nseg, last = 8 * (ns - 1);
+	int fl[2] = { ends & 1, (ends & 2) != 0 }, one[2] = { 1, 0 };
+	double k[2];
+
+	memcpy(t, seg, 8 * ns * sizeof *t);
+	k[0] = end_curvature(t, 0);
+	k[1] = end_curvature(t, 1);
+	if (ns == 1)
+		return flat_segment(t, fl, k);
+	if (ns == 2 && fl[0] && fl[1])          /* an arch */
+		return flat_pair(t, 0, 0, 1);
+	if (fl[0]) {
+		k[1] = end_curvature(t + 8, 0);
+		if (flat_segment(t, one, k) != 0 && (ns < 3 || flat_pair(t, 0,
+		    end_curvature(t + 16, 0), 0) != 0))
+			return 1;
+	}
+	if (fl[1]) {
+		one[0] = 0;
+		one[1] = 1;
+		k[0] = end_curvature(t + last - 8, 1);
+		if (flat_segment(t + last, one, k) != 0 && (ns < 3 ||
+		    flat_pair(t + last - 8, 1, end_curvature(t + last - 16, 1),
+		    0) != 0))
+			return 1;
+	}
+	return 0;
+}
+
+/* Whether a segment of t (f->nseg of them, open) made anew, not as in
+ * seg, swells farther from its chord than unswell lets the fit's
+ * (swell_allowed, FAIR_SWELL). */
+static int
+flat_swells(const struct fair *f, const struct best *b, const double *seg,
+    const double *t)
+{
+	for (size_t s = 0; s < f->nseg; s++)
+		if (memcmp(t + 8 * s, seg + 8 * s, 8 * sizeof *t) != 0 &&
+		    span_swell(t + 8 * s, 2) > swell_allowed(f, b, s) *
+		    FAIR_SWELL + 1e-9 * vdist(t + 8 * s + 2, t + 8 * s, 2))
+			return 1;
+	return 0;
+}
+
+/*
+ * The open plane curve seg (f->nseg segments, the fit's) met G2 at its
+ * ends beside straight runs (o->flat_start, o->flat_end), as Spiro's
+ * `[' `]' points meet theirs: both ends, else either, by flat_try,
+ * where the curve so made keeps the guarantees (no more energy than
+ * the chord spline, no sharper bend, no crossing it has not) and
+ * unswell's limit.  b->sseg, free by then, holds the tries.  0, or -1
+ * out of memory.
+ */
+static int
+flat_ends(struct fair *f, struct best *b, double *h, double *seg)
+{
+	size_t ns = f->nseg;
+	double *t = b->sseg, e, len, kmax;
+	int want = (f->o->flat_start ? 1 : 0) | (f->o->flat_end ? 2 : 0);
+	const int tries[3] = { 3, 1, 2 };
+
+	if (f->dim != 2 || f->o->closed || want == 0)
+		return 0;
+	for (int i = 0; i < 3; i++) {
+		int loops;
+
+		if ((tries[i] & want) != tries[i] || flat_try(f, seg, tries[i],
+		    t) != 0)
+			continue;
+		e = curve_energy(t, ns, 2, FAIR_CHECK, f->check, NULL, &kmax,
+		    NULL, &len);
+		if (chord_spline(f, b, h) != 0 || flat_swells(f, b, seg, t) ||
+		    !(e <= b->echord) || !(max_curvature(t, ns, 2) <= f->kcap) ||
+		    sharper(f, b, h, t, ns))
+			continue;
+		loops = loft_fit_crosses(t, ns, 0);
+		if (loops == 1) {       /* kept where the chord spline loops */
+			int c = chord_loops(f, b, h);
+
+			loops = c < 0 ? -1 : !c;
+		}
+		if (loops < 0)
+			return -1;
+		if (loops == 0) {
+			memcpy(seg, t, 8 * ns * sizeof *t);
+			return 0;
+		}
+	}
+	return 0;
+}
+
 int
 loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
     int dim, double *seg, struct loft_fit_info *info, struct loft_error *err)
@@ -2075,15 +2305,16 @@ loft__fit_fair(const struct loft_fit_opts *o, const double *p, size_t n,
 		if (b.found == 2) {
 			memcpy(seg, b.sseg, 4 * dim * b.nsseg * sizeof *seg);
 			info->nseg = b.nsseg;
-			info->converged = 1;
-			free(mem);
-			return 0;
+		} else {
+			for (size_t s = 0; s < nseg; s++)
+				h[s] = b.found ? exp(b.x[s]) : vdist(p + ((s + 1) %
+				    n) * dim, p + s * dim, dim);
+			rc = loft__cspline_h(o, p, n, dim, h, b.found ? b.x +
+			    nseg : NULL, seg, f.work, err);
 		}
-		for (size_t s = 0; s < nseg; s++)
-			h[s] = b.found ? exp(b.x[s]) : vdist(p + ((s + 1) % n) *
-			    dim, p + s * dim, dim);
-		rc = loft__cspline_h(o, p, n, dim, h, b.found ? b.x + nseg :
-		    NULL, seg, f.work, err);
+		if (rc == 0 && (b.found != 2 || b.nsseg == nseg) &&
+		    flat_ends(&f, &b, h, seg) < 0)
+			rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		info->converged = 1;
 	}
 	free(mem);

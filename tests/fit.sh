@@ -285,6 +285,25 @@ awk 'NR == 3 { ax = 6 * ($3 - $1) - 4 * $5 - 2 * $7
     no "the bracket does not meet its run G2: $(sed -n 3p "$T/br.cubic")"
 awk 'NR == 6 { exit !($7 == 0 && $8 > 0) }' "$T/br.cubic" && ok ||
     no "the span at 90 degrees: not G1: $(sed -n 6p "$T/br.cubic")"
+# Pieces of several spans between straight runs meet them G2 too where
+# the cubics beside the runs can: a racetrack, two straight sides and
+# two ends of three knots each, gentle where they leave the sides.  The
+# largest jump of the curvature across any knot (energy.awk's fourth
+# number, the runs' 0 included) is within rounding of none, at two
+# scales; loft's G1 joins before had it 0.10 at the first.  And the
+# energy stays within the chord spline's (-m chord: the guarantee).
+printf 'points straight=1,6\n0 0\n10 0\n14 1\n16 4\n14 7\n10 8\n0 8\n-4 7\n-6 4\n-4 1\n' \
+    >"$T/track.knots"
+for s in 1 1e-7; do
+	awk -v s=$s 'NR > 1 { $1 *= s; $2 *= s } 1' "$T/track.knots" |
+	    $B/splinefit | $E >"$T/track.e"
+	awk -v s=$s 'NR > 1 { $1 *= s; $2 *= s } 1' "$T/track.knots" |
+	    $B/splinefit -m chord | $E >>"$T/track.e"
+	awk 'NR == 1 { e = $1; k = $2; j = $4; t = $5 }
+	    END { exit !(j < 1e-9 * k && t < 1e-9 && e <= $1) }' \
+	    "$T/track.e" && ok ||
+	    no "racetrack at $s: not G2, or above the chord spline: $(cat "$T/track.e")"
+done
 # Nor where the run points away from the span's chord (135 degrees):
 # the corner's tangent is the run's mirrored in the chord, (-1, 0),
 # as the chord spline has it, never turned back.
