@@ -1575,6 +1575,20 @@ least_radius(const struct fair *f, const double *seg, size_t nseg)
 }
 
 /* Whether the nseg segments seg bend more sharply anywhere than the
+ * chord spline does, by the exact least radius of both (0 where the
+ * chord spline cannot be made). */
+static int
+sharper_exact(struct fair *f, struct best *b, double *h, const double *seg,
+    size_t nseg)
+{
+	if (chord_spline(f, b, h) != 0)
+		return 0;
+	if (b->rchord < 0)
+		b->rchord = least_radius(f, b->cseg, f->nseg);
+	return least_radius(f, seg, nseg) < b->rchord * (1 - FAIR_RADIUS_EPS);
+}
+
+/* Whether the nseg segments seg bend more sharply anywhere than the
  * chord spline does (the guarantee), by the exact least radius of
  * both: a descent may slip a cusp between the points of the sampled
  * caps, whose energy is then unbounded. */
@@ -1591,12 +1605,9 @@ sharper(struct fair *f, struct best *b, double *h, const double *seg,
 	for (size_t s = 0; !f->scalefree && s < nseg; s++)
 		least = fmin(least, segment_least_speed(seg + s * 4 * f->dim,
 		    f->dim));
-	if ((!f->scalefree && least >= FAIR_SLOW * FAIR_SLOW) ||
-	    chord_spline(f, b, h) != 0)
+	if (!f->scalefree && least >= FAIR_SLOW * FAIR_SLOW)
 		return 0;
-	if (b->rchord < 0)
-		b->rchord = least_radius(f, b->cseg, f->nseg);
-	return least_radius(f, seg, nseg) < b->rchord * (1 - FAIR_RADIUS_EPS);
+	return sharper_exact(f, b, h, seg, nseg);
 }
 
 /* Whether the chord spline crosses itself (plane curves; once); -1 out
@@ -2221,9 +2232,11 @@ flat_ends(struct fair *f, struct best *b, double *h, double *seg)
 			continue;
 		e = curve_energy(t, ns, 2, FAIR_CHECK, f->check, NULL, &kmax,
 		    NULL, &len);
+		/* by the exact least radius: the segments made again keep no
+		 * speed floor, and may nearly cusp between the samples */
 		if (chord_spline(f, b, h) != 0 || flat_swells(f, b, seg, t) ||
 		    !(e <= b->echord) || !(max_curvature(t, ns, 2) <= f->kcap) ||
-		    sharper(f, b, h, t, ns))
+		    sharper_exact(f, b, h, t, ns))
 			continue;
 		loops = loft_fit_crosses(t, ns, 0);
 		if (loops == 1) {       /* kept where the chord spline loops */
