@@ -2027,20 +2027,14 @@ search(struct fair *f, struct best *b, double *x, double *h, double *v,
 }
 
 /* The signed curvature of the plane segment q (a row P_A P_B P'_A
- * P'_B) at its end (0 start, 1 end); 0 where its tangent vanishes.
- * P'' is 6c - 4 P'_A - 2 P'_B at the start, -6c + 2 P'_A + 4 P'_B at
- * the end, c the chord. */
+ * P'_B) at its end (0 start, 1 end); 0 where its tangent vanishes. */
 static double
 end_curvature(const double *q, int end)
 {
-	const double *t = q + (end ? 6 : 4);
-	double d2[2], v = vnorm(t, 2);
+	double d1[2], d2[2], k;
 
-	for (int k = 0; k < 2; k++)
-		d2[k] = end ? -6 * (q[2 + k] - q[k]) + 2 * q[4 + k] + 4 *
-		    q[6 + k] : 6 * (q[2 + k] - q[k]) - 4 * q[4 + k] - 2 *
-		    q[6 + k];
-	return v > 0 ? (t[0] * d2[1] - t[1] * d2[0]) / (v * v * v) : 0;
+	loft_cubic_eval(q, 2, end, NULL, d1, d2);
+	return loft_curvature(d1, d2, 2, &k) == 0 ? k : 0;
 }
 
 static double
