@@ -1,9 +1,9 @@
 # energy.awk: for each cubic record (2-D rows P_A P_B P'_A P'_B) of the
 # input, one line: its bending energy, the integral of curvature squared
-# along it, by Simpson's rule on 400 intervals per segment; its largest
-# curvature on those points; its length; and the largest jump of the
-# curvature, and of the unit tangent, across a knot.  The reference of
-# tests/fit.sh: its own formulas, not the library's.
+# along it, by Simpson's rule on N intervals per segment (awk -v N=...,
+# else 400); its largest curvature on those points; its length; and the
+# largest jump of the curvature, and of the unit tangent, across a knot.
+# The reference of tests/fit.sh: its own formulas, not the library's.
 function seg(x0, y0, x1, y1, dx0, dy0, dx1, dy1,   ax, ay, bx, by, i, u, px, py, qx, qy, v2, c, w, e, k) {
 	ax = 3 * (x1 - x0) - 2 * dx0 - dx1; ay = 3 * (y1 - y0) - 2 * dy0 - dy1
 	bx = dx0 + dx1 - 2 * (x1 - x0); by = dy0 + dy1 - 2 * (y1 - y0)
@@ -36,7 +36,7 @@ function put(   i, j, kj, tj, d) {
 	}
 	printf "%.12g %.12g %.12g %.3g %.3g\n", E, kmax, len, kj, sqrt(tj)
 }
-BEGIN { N = 400 }
+BEGIN { if (N + 0 <= 0) N = 400 }
 /^cubic/ { if (n) put(); E = 0; kmax = 0; len = 0; ns = 0; n++; closed = $0 ~ /closed=1/; next }
 NF == 8 { E += seg($1, $2, $3, $4, $5, $6, $7, $8) }
 END { if (n) put() }
