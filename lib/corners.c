@@ -30,6 +30,7 @@
  * as on sparser points.
  */
 #include <stdlib.h>
+#include <string.h>
 
 #include "internal.h"
 
@@ -1374,4 +1375,66 @@ loft_points_noise(const double *p, size_t n, int dim, int closed)
 	free(q);
 	free(r);
 	return s;
+}
+
+/* The signed turn of the plane polyline o at point i (radians, left
+ * positive); 0 where a side is missing or has no length. */
+static double
+signed_turn(const struct outline *o, long i)
+{
+	const double *a = pt(o, i - 1), *b = pt(o, i), *c = pt(o, i + 1);
+	double u[2], v[2];
+
+	if (a == NULL || c == NULL)
+		return 0;
+	vsub(u, b, a, 2);
+	vsub(v, c, b, 2);
+	if (!(vunit(u, 2) > 0) || !(vunit(v, 2) > 0))
+		return 0;
+	return atan2(u[0] * v[1] - u[1] * v[0], vdot(u, v, 2));
+}
+
+/* The turns of the plane points p (n, scaled to unit exponent so that
+ * no product overflows) into t; 0 or -1 out of memory. */
+static int
+plane_turns(const double *p, size_t n, int closed, double *t)
+{
+	struct outline o = { NULL, n, 2, closed };
+	int e;
+
+	if (unit_exponent(p, n, 2, &e) != 0) {
+		memset(t, 0, n * sizeof *t);
+		return 0;
+	}
+	if ((o.p = scaled(p, n, 2, e)) == NULL)
+		return -1;
+	for (size_t i = 0; i < n; i++)
+		t[i] = signed_turn(&o, (long)i);
+	free((void *)o.p);
+	return 0;
+}
+
+size_t
+loft_sharp_points(const double *p, size_t n, int closed, double turn,
+    size_t *corner, size_t *flex)
+{
+	double *t, last = 0;
+	size_t nc = 0;
+
+	*flex = 0;
+	if (n < 3 || (t = malloc(n * sizeof *t)) == NULL)
+		return n < 3 ? 0 : (size_t)-1;
+	if (plane_turns(p, n, closed, t) != 0) {
+		free(t);
+		return (size_t)-1;
+	}
+	for (size_t i = 0; i < n; i++) {
+		if (t[i] != 0 && last != 0 && (t[i] > 0) != (last > 0))
+			(*flex)++;
+		last = t[i] != 0 ? t[i] : last;
+		if (fabs(t[i]) >= turn)
+			corner[nc++] = i;
+	}
+	free(t);
+	return nc;
 }

@@ -430,6 +430,20 @@ size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
     double tol, size_t *corner, double *at);
 
 /*
+ * The points of n plane points p (2 numbers each, in order along an
+ * outline; closed: the last joins the first) where the polyline through
+ * them turns by turn radians or more, their indices increasing into
+ * corner (room for n): the corners of points too sparse for
+ * loft_find_corners, which needs several points either side of a
+ * corner.  The number of times the polyline's turns change sign into
+ * *flex (an outline's points turn one way between its inflexions and
+ * reflex corners; noisy ones, the other way at about 2 points in 3).
+ * Returns the count, or (size_t)-1 out of memory.
+ */
+size_t loft_sharp_points(const double *p, size_t n, int closed, double turn,
+    size_t *corner, size_t *flex);
+
+/*
  * The noise of n points p (dimension dim, in order along an outline;
  * closed: the last joins the first): the standard deviation of their
  * scatter across it (in each direction across, in space), estimated
