@@ -1428,6 +1428,8 @@ loft_sharp_points(const double *p, size_t n, int closed, double turn,
 		free(t);
 		return (size_t)-1;
 	}
+	for (size_t i = n; closed && last == 0 && i-- > 0;)
+		last = t[i];    /* round the end */
 	for (size_t i = 0; i < n; i++) {
 		if (t[i] != 0 && last != 0 && (t[i] > 0) != (last > 0))
 			(*flex)++;

@@ -435,10 +435,11 @@ size_t loft_find_corners(const double *p, size_t n, int dim, int closed,
  * them turns by turn radians or more, their indices increasing into
  * corner (room for n): the corners of points too sparse for
  * loft_find_corners, which needs several points either side of a
- * corner.  The number of times the polyline's turns change sign into
- * *flex (an outline's points turn one way between its inflexions and
- * reflex corners; noisy ones, the other way at about 2 points in 3).
- * Returns the count, or (size_t)-1 out of memory.
+ * corner.  The number of times the polyline's turns change sign (round
+ * the end where closed) into *flex: an outline's points turn one way
+ * between its inflexions and reflex corners, noisy ones the other way
+ * at about 2 points in 3.  Returns the count, or (size_t)-1 out of
+ * memory.
  */
 size_t loft_sharp_points(const double *p, size_t n, int closed, double turn,
     size_t *corner, size_t *flex);

@@ -671,6 +671,14 @@ awk 'FNR == 1 { f++ }
 	    if (p in want) got++ }
 	exit !(m == w && got == w) }' "$T/hexa.pts" "$T/hexa.cubic" && ok ||
     no "sparse hexagon: want its corners at the points turning 40 degrees: $(head -1 "$T/hexa.cubic")"
+# the same in other units: the same corners
+for s in 1e-300 1e300; do
+	awk -v s=$s '{ printf "%.17g %.17g\n", $1 * s, $2 * s }' "$T/hexa.pts" |
+	    "$B/splinefit" -e "$(awk -v s=$s 'BEGIN { printf "%.17g", 0.004 * s }')" |
+	    head -1 >"$T/hexa.s"
+	[ "$(cat "$T/hexa.s")" = "$(head -1 "$T/hexa.cubic")" ] && ok ||
+	    no "sparse hexagon scaled by $s: $(cat "$T/hexa.s"), want $(head -1 "$T/hexa.cubic")"
+done
 
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then
