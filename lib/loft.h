@@ -328,10 +328,10 @@ int loft_fit(const struct loft_fit_opts *o, const double *p, size_t n, int dim,
  * chord, except under LOFT_MANNING; under LOFT_FAIR, in the plane, a
  * longer piece meets its runs so too where the cubics beside them can
  * without losing LOFT_FAIR's guarantees (see splinefit(1)); elsewhere
- * the curvature jumps from 0 to the curve's.  Corners go with them.  Under LOFT_FAIR (not
- * o->quick) in the plane, where the pieces cross one another, each is
- * fitted again with o->untangle, and that curve is written where it
- * does not cross itself.
+ * the curvature jumps from 0 to the curve's.  Corners go with them.
+ * Under LOFT_FAIR (not o->quick) in the plane, where the pieces cross
+ * one another, each is fitted again with o->untangle, and that curve is
+ * written where it does not cross itself.
  */
 
 /*
