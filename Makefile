@@ -194,7 +194,9 @@ compare: all
 	@sh tests/bench/compare.sh
 
 # make compare-approx: splinefit -e beside scipy's smoothing spline on 60
-# noisy outlines, the table of issue 14 (skipped without scipy)
+# noisy outlines, the table of issue 14 (skipped without scipy); then
+# beside potrace on noisy glyph contours of the corpus's faces, and of
+# four faces held out (tests/bench/glyphs_held.sh), issue 23's tables
 compare-approx: all bin/test/noisy
 	@if /usr/bin/python3 -c 'import scipy, numpy' 2>/dev/null; then \
 	    /usr/bin/python3 tests/bench/approx_scipy.py; else \
@@ -205,6 +207,7 @@ compare-approx: all bin/test/noisy
 	    tests/bench/glyphs_noisy.py bin/bench/g.truth bin/bench \
 	    bin/bench/g.knots; else \
 	    echo "compare-approx: glyphs skipped (no fontTools or fonts)"; fi
+	@sh tests/bench/glyphs_held.sh
 .PHONY: compare-approx
 
 demo: all
