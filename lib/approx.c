@@ -213,7 +213,7 @@ work_alloc(struct work *w, size_t n, int dim)
 	w->qbuf = malloc(n * dim * sizeof *w->qbuf);
 	w->sm = malloc(n * dim * sizeof *w->sm);
 	w->s = malloc((n + 1) * sizeof *w->s);
-	w->fj = malloc(n * sizeof *w->fj);
+	w->fj = malloc((n + 1) * sizeof *w->fj);   /* first_knots' too */
 	w->fu = malloc(n * sizeof *w->fu);
 	w->dist = malloc(n * sizeof *w->dist);
 	w->k = malloc(m * dim * sizeof *w->k);
@@ -567,7 +567,9 @@ add_knot(struct work *w, size_t i, int corner)
  * many as their share of w->start, two at least where there
  * are points enough (a closed curve needs three knots), or every point
  * where w->start is n or more.  The feet of
- * the points: their span, and u by length along the average.
+ * the points: their span, and u by length along the average.  The
+ * breaks between pieces go in w->fj first: n + 1 of them where every
+ * point of a closed outline is a corner (the last is the first again).
  */
 static void
 first_knots(struct work *w, const size_t *corner, size_t ncorner)

@@ -680,6 +680,30 @@ for s in 1e-300 1e300; do
 	    no "sparse hexagon scaled by $s: $(cat "$T/hexa.s"), want $(head -1 "$T/hexa.cubic")"
 done
 
+# ---- every point a corner: nine points round a closed outline, each
+# named in corners=.  Each piece between two corners is the chord, its
+# tangent vectors equal to it, from one point to the next.  The fit
+# wrote one piece's end past its scratch array there (a closed
+# outline's n corners and the first again), which check-san's
+# AddressSanitizer reported.
+awk 'BEGIN { printf "points closed=1 corners=1"
+	for (i = 2; i <= 9; i++) printf ",%d", i
+	printf "\n"
+	for (i = 0; i < 9; i++)
+		printf "%.6f %.6f\n", cos(6.283185307 * i / 9) * (1 + 0.1 * (i % 2)),
+		    sin(6.283185307 * i / 9) }' >"$T/allc.pts"
+"$B/splinefit" -e 0.01 "$T/allc.pts" >"$T/allc.cubic" 2>&1 &&
+    awk 'function d(a, b) { return a - b < 0 ? b - a : a - b }
+	NR == FNR { if (FNR > 1) { n++; x[n] = $1; y[n] = $2 }; next }
+	FNR == 1 || NF == 0 { next }
+	{ k++; j = k % n + 1
+	  if (d($1, x[k]) > 1e-9 || d($2, y[k]) > 1e-9 ||
+	      d($3, x[j]) > 1e-9 || d($4, y[j]) > 1e-9 ||
+	      d($5, $3 - $1) > 1e-9 || d($6, $4 - $2) > 1e-9 ||
+	      d($7, $3 - $1) > 1e-9 || d($8, $4 - $2) > 1e-9) bad++ }
+	END { exit !(k == 9 && !bad) }' "$T/allc.pts" "$T/allc.cubic" && ok ||
+    no "every point a corner: want the 9 chords: $(cat "$T/allc.cubic")"
+
 # ---- against scipy's smoothing spline, on the first 6 outlines ----------
 if [ -x "$PY" ] && "$PY" -c 'import scipy, numpy' 2>/dev/null; then
 	"$PY" tests/bench/approx_scipy.py -q -n 6 >"$T/scipy" 2>&1 && ok ||
