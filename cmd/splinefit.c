@@ -676,6 +676,23 @@ fit_inflexions(const struct opts *o, size_t nseg, int closed)
 	return loft_curve_inflexions(&c, &count, &err) == 0 ? count : -1;
 }
 
+/* The points of the plane record rec where its polyline turns by
+ * APPROX_SHARP_TURN or more (loft_sharp_points) into corner, the points
+ * themselves into at (room for rec->nrows each), and how often its
+ * turns change sign into *flex; returns how many, or (size_t)-1 out of
+ * memory. */
+static size_t
+sharp_corners(const struct loft_record *rec, int closed, size_t *corner,
+    double *at, size_t *flex)
+{
+	size_t k = loft_sharp_points(rec->num, rec->nrows, closed,
+	    APPROX_SHARP_TURN, corner, flex);
+
+	for (size_t c = 0; k != (size_t)-1 && c < k; c++)
+		memcpy(at + 2 * c, rec->num + 2 * corner[c], 2 * sizeof *at);
+	return k;
+}
+
 /*
  * -e in the plane, where the fits with and without the corners found
  * fail the tolerance: the fit with a corner at each point where the
@@ -703,17 +720,13 @@ approx_sharp(struct opts *o, const struct loft_record *rec,
 
 	if (rec->ncols != 2)
 		return 0;
-	k = loft_sharp_points(rec->num, rec->nrows, ao->closed,
-	    APPROX_SHARP_TURN, o->corner, &flex);
+	k = sharp_corners(rec, ao->closed, o->corner, o->cornerat, &flex);
 	if (k == (size_t)-1) {
 		*rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
 		return 0;
 	}
 	if (k == 0 || 2 * flex > rec->nrows)
 		return 0;
-	for (size_t c = 0; c < k; c++)
-		memcpy(o->cornerat + 2 * c, rec->num + 2 * o->corner[c],
-		    2 * sizeof *rec->num);
 	so.corner = o->corner;
 	so.corner_at = o->cornerat;
 	so.ncorner = k;
@@ -771,17 +784,13 @@ approx_sharp_astray(struct opts *o, const struct loft_record *rec,
 	double *at = malloc(2 * rec->nrows * sizeof *at);
 	int rc = 0;
 
-	if (corner == NULL || at == NULL || (k = loft_sharp_points(rec->num,
-	    rec->nrows, ao->closed, APPROX_SHARP_TURN, corner, &flex)) ==
+	if (corner == NULL || at == NULL ||
+	    (k = sharp_corners(rec, ao->closed, corner, at, &flex)) ==
 	    (size_t)-1)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	else if (k > 0) {
-		for (size_t c = 0; c < k; c++)
-			memcpy(at + 2 * c, rec->num + 2 * corner[c],
-			    2 * sizeof *at);
+	else if (k > 0)
 		rc = approx_refit(o, rec, ao, corner, at, k, info->astray - 1,
 		    info, nc, err);
-	}
 	free(corner);
 	free(at);
 	return rc;
