@@ -162,8 +162,13 @@ measure_surface(struct loft_run *run, const struct loft_record *rec,
 	v[n++] = m.developable;
 	for (int i = 0; i < n; i++)
 		if (!isfinite(v[i]))
-			return loft_fail(err, LOFT_EGEOM, -1, "the surface's "
-			    "numbers overflow: coefficients too large");
+			return loft_fail(err, LOFT_EGEOM, -1, isinf(m.area) ?
+			    "the surface's numbers overflow: coefficients too "
+			    "large" : "the surface's curvature overflows: "
+			    "coefficients too small");
+	if (fpclassify(m.area) == FP_SUBNORMAL)
+		return loft_fail(err, LOFT_EGEOM, -1, "the surface's area "
+		    "underflows: coefficients too small");
 	loft_put_row(&run->w, v, n);
 	loft_end_record(&run->w);
 	return 0;

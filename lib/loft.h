@@ -1293,6 +1293,8 @@ struct loft_surface {
 	    double *p, double *du, double *dv, double *duu, double *dvv);
 	void (*box)(const struct loft_surface *s, double *lo, double *hi);
 	void (*bezier)(const struct loft_surface *s, double *ctl);
+	const struct loft_surface *of;  /* a view of (loft_surface_scaled), */
+	int scale;                      /* 2^scale times its size; else NULL */
 };
 
 /* Whether rec's type is a surface type (`patch`, `bezier-surface`). */
@@ -1335,6 +1337,15 @@ void loft_surface_box(const struct loft_surface *s, double *lo, double *hi);
  * is loft_patch_bezier's.
  */
 void loft_surface_bezier(const struct loft_surface *s, double *ctl);
+
+/*
+ * Fill out as a view of s at 2^e times its size (its points, derivatives,
+ * box and net all times 2^e, exactly): a computation on a surface near
+ * unit size squares its lengths without overflow or underflow, whatever
+ * the units.  out points to s, which must outlive it.
+ */
+void loft_surface_scaled(const struct loft_surface *s, int e,
+    struct loft_surface *out);
 
 /* ------------------------------------------------------------------ */
 /* Grading outlines into shoe sizes (grade.c)                          */

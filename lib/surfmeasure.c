@@ -27,9 +27,33 @@ const double loft__gl5_w[5] = {
  */
 #define TWIST_STEP 1e-5
 
-int
-loft_surface_curvature(const struct loft_surface *s, double u, double v,
-    double *k, double *h, double *da)
+/* The power of two, 2^e, nearest the largest coordinate of the first
+ * derivatives a and b (3 each); 0 where both are 0. */
+static int
+scale_of(const double *a, const double *b)
+{
+	double most = 0;
+	int e;
+
+	for (int c = 0; c < 3; c++)
+		most = fmax(most, fmax(fabs(a[c]), fabs(b[c])));
+	if (!(most > 0) || !isfinite(most))
+		return 0;
+	(void)frexp(most, &e);
+	return e;
+}
+
+/*
+ * loft_surface_curvature of s scaled by 2^-e (*e chosen so that its
+ * first derivatives at (u, v) are near 1): *k = K 2^2e, *h = H 2^e,
+ * *da = |f_u x f_v| 2^-2e, exactly (the scaling is by a power of two).
+ * Unscaled, E G - F^2 goes as the fourth power of the size: past 1e77
+ * it overflowed and K read 0, below 1e-77 it underflowed and the point
+ * was passed over, so a doubly curved patch measured developable.
+ */
+static int
+curvature_scaled(const struct loft_surface *s, double u, double v,
+    double *k, double *h, double *da, int *e)
 {
 	double p[3] = { 0 }, xu[3] = { 0 }, xv[3] = { 0 }, xuu[3] = { 0 };
 	double xvv[3] = { 0 }, a[3] = { 0 }, b[3] = { 0 }, xuv[3], n[3];
@@ -39,8 +63,14 @@ loft_surface_curvature(const struct loft_surface *s, double u, double v,
 	loft_surface_eval2(s, u, v, p, xu, xv, xuu, xvv);
 	loft_surface_eval(s, u, v0, NULL, a, NULL);
 	loft_surface_eval(s, u, v1, NULL, b, NULL);
-	for (int c = 0; c < 3; c++)
-		xuv[c] = (b[c] - a[c]) / (v1 - v0);
+	*e = scale_of(xu, xv);
+	for (int c = 0; c < 3; c++) {
+		xuv[c] = ldexp((b[c] - a[c]) / (v1 - v0), -*e);
+		xu[c] = ldexp(xu[c], -*e);
+		xv[c] = ldexp(xv[c], -*e);
+		xuu[c] = ldexp(xuu[c], -*e);
+		xvv[c] = ldexp(xvv[c], -*e);
+	}
 	n[0] = xu[1] * xv[2] - xu[2] * xv[1];
 	n[1] = xu[2] * xv[0] - xu[0] * xv[2];
 	n[2] = xu[0] * xv[1] - xu[1] * xv[0];
@@ -60,6 +90,18 @@ loft_surface_curvature(const struct loft_surface *s, double u, double v,
 	*k = (L * N - M * M) / det;
 	*h = (E * N - 2 * F * M + G * L) / (2 * det);
 	return isfinite(*k) && isfinite(*h) ? 0 : LOFT_EGEOM;
+}
+
+int
+loft_surface_curvature(const struct loft_surface *s, double u, double v,
+    double *k, double *h, double *da)
+{
+	int e, rc = curvature_scaled(s, u, v, k, h, da, &e);
+
+	*k = ldexp(*k, -2 * e);
+	*h = ldexp(*h, -e);
+	*da = ldexp(*da, 2 * e);
+	return rc;
 }
 
 static void
@@ -91,15 +133,18 @@ loft_surface_numbers(const struct loft_surface *s, size_t ns, long cells,
 				double wt = loft__gl5_w[a % 5] *
 				    loft__gl5_w[b % 5] / ((double)cells * cells);
 				double k, h, da;
+				int e, rc = curvature_scaled(&s[i], u, v, &k,
+				    &h, &da, &e);
 
-				if (loft_surface_curvature(&s[i], u, v, &k, &h,
-				    &da) != 0) {
-					m->area += isfinite(da) ? wt * da : 0;
+				/* K dA does not depend on the scale */
+				m->area += isfinite(da) ? ldexp(wt * da, 2 * e) :
+				    0;
+				if (rc != 0)
 					continue;
-				}
-				m->area += wt * da;
 				m->kint += wt * da * k;
 				m->kabs += wt * da * fabs(k);
+				k = ldexp(k, -2 * e);
+				h = ldexp(h, -e);
 				extreme(&m->kmin, k, 1, i, u, v, first);
 				extreme(&m->kmax, k, 0, i, u, v, first);
 				extreme(&m->hmin, h, 1, i, u, v, first);

@@ -1029,12 +1029,90 @@ outline(struct loft_unroll *r, struct loft_error *err)
 	return rc;
 }
 
+/* r's lengths (the mesh in space and flat, the flat map's derivatives,
+ * the outline) times 2^e and its areas times 4^e: the sheet unrolled
+ * near unit size brought back to its own.  0, or LOFT_EGEOM (and err
+ * says so) where a number of r is then no double: a length or an area
+ * overflows, an area underflows (below DBL_MIN), or a curvature of
+ * r->num overflows. */
+static int
+rescale(struct loft_unroll *r, int e, struct loft_error *err)
+{
+	size_t nn = (size_t)(r->N + 1) * (r->N + 1) * r->npatch;
+	struct {
+		double *x;
+		size_t n;
+	} len[4] = { { r->mesh.v, 3 * r->mesh.nv }, { r->xy, 2 * r->mesh.nv },
+	    { r->jac, 4 * nn }, { r->seg, 8 * r->nseg } };
+
+	for (int k = 0; k < 4; k++)
+		for (size_t i = 0; i < len[k].n; i++)
+			len[k].x[i] = ldexp(len[k].x[i], e);
+	r->area3 = ldexp(r->area3, 2 * e);
+	r->area2 = ldexp(r->area2, 2 * e);
+	for (int k = 0; k < 4; k++)
+		for (size_t i = 0; i < len[k].n; i++)
+			if (!isfinite(len[k].x[i]))
+				return loft_fail(err, LOFT_EGEOM, -1, "the sheet "
+				    "overflows: coefficients too large");
+	if (isinf(r->area3) || isinf(r->area2))
+		return loft_fail(err, LOFT_EGEOM, -1, "the sheet's area "
+		    "overflows: coefficients too large");
+	if (fpclassify(r->area3) != FP_NORMAL ||
+	    fpclassify(r->area2) != FP_NORMAL)
+		return loft_fail(err, LOFT_EGEOM, -1, "the sheet's area "
+		    "underflows: coefficients too small");
+	if (!isfinite(r->num.kmin.value) || !isfinite(r->num.kmax.value) ||
+	    !isfinite(r->num.hmin.value) || !isfinite(r->num.hmax.value))
+		return loft_fail(err, LOFT_EGEOM, -1, "the sheet's curvature "
+		    "overflows: coefficients too small");
+	return 0;
+}
+
+/* The sheet of the ns surfaces s, which sheet_size says is size units
+ * across (> 0), unrolled at 2^-e times its size, near 1 (frexp), so
+ * that no product of its lengths overflows or underflows (E G - F^2
+ * goes as the fourth power): a sheet 1e-90 or 1e90 units across came
+ * out developed wrong, by its curvature read as 0. */
+static int
+unroll_scaled(const struct loft_unroll_opts *o, const struct loft_surface *s,
+    size_t ns, double size, struct loft_unroll *r, struct loft_error *err)
+{
+	struct loft_surface *ss = malloc(ns * sizeof *ss);
+	int e, rc;
+
+	if (ss == NULL)
+		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+	size = frexp(size, &e);
+	for (size_t i = 0; i < ns; i++)
+		loft_surface_scaled(&s[i], -e, &ss[i]);
+	r->N = o->steps > 0 ? o->steps : steps_for(ss, ns, o->tol > 0 ?
+	    ldexp(o->tol, -e) : LOFT_UNROLL_RELTOL * size);
+	if ((rc = make_mesh(r, ss, ns, size, err)) != 0) {
+		free(ss);
+		return rc;
+	}
+	r->exact = r->num.developable && !o->arap;
+	rc = develop(r, ss);
+	if (rc == 0 && !r->exact) {
+		rc = arap(r, o->rounds > 0 ? o->rounds : LOFT_UNROLL_ROUNDS);
+		grid_jacobians(r);
+	}
+	if (rc == 0)
+		rc = strains(r);
+	if (rc == 0)
+		rc = outline(r, err);
+	free(ss);
+	if (rc == LOFT_ENOMEM)
+		return loft_fail(err, rc, -1, "out of memory");
+	return rc == 0 ? rescale(r, e, err) : rc;
+}
+
 int
 loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
     size_t ns, struct loft_unroll *r, struct loft_error *err)
 {
 	double size;
-	int rc;
 
 	memset(r, 0, sizeof *r);
 	if (ns == 0 || !(o->tol >= 0) || !isfinite(o->tol))
@@ -1046,23 +1124,7 @@ loft_unroll(const struct loft_unroll_opts *o, const struct loft_surface *s,
 		    "surface is a point" : "the surface overflows: "
 		    "coefficients too large");
 	loft_surface_numbers(s, ns, ns > 16 ? 2 : 8, &r->num);
-	r->N = o->steps > 0 ? o->steps : steps_for(s, ns, o->tol > 0 ? o->tol :
-	    LOFT_UNROLL_RELTOL * size);
-	if ((rc = make_mesh(r, s, ns, size, err)) != 0)
-		return rc;
-	r->exact = r->num.developable && !o->arap;
-	rc = develop(r, s);
-	if (rc == 0 && !r->exact) {
-		rc = arap(r, o->rounds > 0 ? o->rounds : LOFT_UNROLL_ROUNDS);
-		grid_jacobians(r);
-	}
-	if (rc == 0)
-		rc = strains(r);
-	if (rc == 0)
-		rc = outline(r, err);
-	if (rc == LOFT_ENOMEM)
-		return loft_fail(err, rc, -1, "out of memory");
-	return rc;
+	return unroll_scaled(o, s, ns, size, r, err);
 }
 
 void

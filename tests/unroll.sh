@@ -213,6 +213,46 @@ b=$($B/unroll -v -n 8 "$T/small" 2>&1 >/dev/null | sed 's/.*largest \([^ ]*\) .*
 [ -n "$a" ] && [ "$a" = "$b" ] && ok ||
     no "the dome's largest strain $a, a millionth of it $b"
 
+# the dome 2^-300 and 2^300 times the size (about 1e-90 and 1e90): the
+# same numbers of measure that do not depend on the size (K dA, fields
+# 14 to 16: doubly curved), and the same pattern unrolled, 2^-300 and
+# 2^300 times as large, to the digits written: the products of four
+# lengths in the curvature under- and overflowed, and both read the dome
+# as developable
+m=$($B/measure "$T/dome" | awk 'NF == 16 { print $14, $15, $16 }')
+$B/unroll -n 8 "$T/dome" >"$T/flat"
+for e in -300 300; do
+	awk -v e=$e 'BEGIN { f = 2 ^ e } /^[0-9-]/ { printf "%.17g %.17g %.17g\n",
+	    $1 * f, $2 * f, $3 * f; next } { print }' "$T/dome" >"$T/scaled"
+	got=$($B/measure "$T/scaled" | awk 'NF == 16 { print $14, $15, $16 }')
+	[ -n "$m" ] && [ "$got" = "$m" ] && ok ||
+	    no "measure of the dome times 2^$e: K dA $got, want $m"
+	$B/unroll -n 8 "$T/scaled" | awk -v e=$e 'BEGIN { f = 2 ^ e }
+	    NR == FNR { x[FNR] = $0; next }
+	    { if (NF != split(x[FNR], a, " ")) bad = 1
+	      for (i = 1; i <= NF; i++) {
+		d = $i / f - a[i]
+		if ($i !~ /^[a-z]/ && d * d > 1e-24 * (a[i] * a[i] + 1))
+			bad = 1
+	      } }
+	    END { exit bad || FNR != NR - FNR || FNR < 2 }' "$T/flat" - &&
+	    ok || no "the dome times 2^$e unrolled: not the pattern times 2^$e"
+done
+# past what a double holds (2^-600 and 2^600, about 1e-180 and 1e180):
+# the area or the curvature is no double, which both say
+for e in -600 600; do
+	awk -v e=$e 'BEGIN { f = 2 ^ e } /^[0-9-]/ { printf "%.17g %.17g %.17g\n",
+	    $1 * f, $2 * f, $3 * f; next } { print }' "$T/dome" >"$T/scaled$e"
+done
+fails 1 ":1: the sheet's area underflows: coefficients too small" \
+    "$B/unroll -v $T/scaled-600"
+fails 1 ":1: the surface's curvature overflows: coefficients too small" \
+    "$B/measure $T/scaled-600"
+fails 1 ":1: the sheet's area overflows: coefficients too large" \
+    "$B/unroll -v $T/scaled600"
+fails 1 ":1: the surface's numbers overflow: coefficients too large" \
+    "$B/measure $T/scaled600"
+
 # -m: loftplot draws each edge in the colour unroll gave it
 $B/unroll -m -n 4 "$T/dome" >"$T/map"
 c=$(sed -n 's/^cubic .*colour=\([0-9a-f]*\).*/\1/p' "$T/map" | sort -u)
