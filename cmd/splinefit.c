@@ -131,6 +131,22 @@ grow_scratch(struct opts *o, size_t n, int dim, struct loft_error *err)
 	return 0;
 }
 
+/* Free what grow_scratch allocated. */
+static void
+free_scratch(struct opts *o)
+{
+	free(o->seg);
+	free(o->other);
+	free(o->knots);
+	free(o->keep);
+	free(o->into);
+	free(o->corner);
+	free(o->cornerat);
+	free(o->astray);
+	free(o->blame);
+	free(o->straight);
+}
+
 /*
  * The attribute name=i,j,...: 1-based numbers from 1 to max, in
  * increasing order, into list as 0-based; their count in *nc.  what
@@ -1040,16 +1056,7 @@ main(int argc, char *argv[])
 		loft_usage_error(usage_text, corners, "says whether -e finds "
 		    "corners in the points: use it with -e");
 	status = loft_run_files(&run, argc - optind, argv + optind);
-	free(o.seg);
-	free(o.other);
-	free(o.knots);
-	free(o.keep);
-	free(o.into);
-	free(o.corner);
-	free(o.cornerat);
-	free(o.astray);
-	free(o.blame);
-	free(o.straight);
+	free_scratch(&o);
 	return status;
 }
 #endif

@@ -54,11 +54,6 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		o.rounds = 3;
 	}
 	fuzz_records(&run, data + 2, size - 2);
-	free(o.seg);
-	free(o.other);
-	free(o.knots);
-	free(o.keep);
-	free(o.into);
-	free(o.corner);
+	free_scratch(&o);
 	return 0;
 }
