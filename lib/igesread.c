@@ -617,7 +617,7 @@ static const struct { const char *name; double mm; } name_mm[] = {
 static int
 global(const struct iges *g, int want, const char **s, size_t *n)
 {
-	const char *t = g->glob, *end = t + g->nglob;
+	const char *t = g->glob, *end = t != NULL ? t + g->nglob : t;
 
 	for (int f = 1; t < end; f++) {
 		const char *a, *b;

@@ -170,6 +170,12 @@ says "unit flag 3 names unit 'FURL'"
 igesunit "12,2HMM" >"$T/u-g.igs"
 unitcheck "IGES with flag 12" "$T/u-g.igs" 1
 says "unit flag '12' is no IGES unit"
+# no global section at all (a fuzzer's file): the numbers kept, a note
+# (the reader took an offset of the absent section's null pointer,
+# which check-san's UndefinedBehaviorSanitizer reports)
+grep -v 'G *[0-9]*$' "$T/u.igs" >"$T/u-nog.igs"
+unitcheck "IGES without a global section" "$T/u-nog.igs" 1
+says "no unit flag: coordinates kept as the file has them"
 
 # ---- STEP written by hand: conics, rational forms, trims ------------------
 
