@@ -911,12 +911,13 @@ trimmed(struct step *st, long id, long line)
 	long basis = ref_arg(st, l, 1);
 	double p[3], d[3], a = 0, b = 0, t0, t1;
 	const struct val *sense = arg(st, l, 4);
+	/* read before the basis is parsed, which may move st->v */
+	int fwd = sense == NULL || sense->kind != V_ENUM ||
+	    loft__word_is(sense->s, sense->len, "T");
 	struct loft__bsname nm = name_of(st, l, id);
-	int is_line = line_of(st, basis, p, d) == 0, fwd, rc = -1;
+	int is_line = line_of(st, basis, p, d) == 0, rc = -1;
 	struct frame f;
 
-	fwd = sense == NULL || sense->kind != V_ENUM ||
-	    loft__word_is(sense->s, sense->len, "T");
 	if (!is_line && conic(st, basis, &f, &a, &b) != 0)
 		loft__cadin_say(st->c, line, "#%ld: a trimmed curve whose "
 		    "basis is no line, circle or ellipse, passed over", id);
