@@ -1293,8 +1293,8 @@ struct loft_surface {
 	    double *p, double *du, double *dv, double *duu, double *dvv);
 	void (*box)(const struct loft_surface *s, double *lo, double *hi);
 	void (*bezier)(const struct loft_surface *s, double *ctl);
-	const struct loft_surface *of;  /* a view of (loft_surface_scaled), */
-	int scale;                      /* 2^scale times its size; else NULL */
+	const struct loft_surface *of;  /* loft_surface_scaled's: the one */
+	int scale;                      /* this shows at 2^scale its size */
 };
 
 /* Whether rec's type is a surface type (`patch`, `bezier-surface`). */

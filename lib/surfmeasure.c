@@ -27,8 +27,9 @@ const double loft__gl5_w[5] = {
  */
 #define TWIST_STEP 1e-5
 
-/* The power of two, 2^e, nearest the largest coordinate of the first
- * derivatives a and b (3 each); 0 where both are 0. */
+/* The exponent e of the largest coordinate of the first derivatives a
+ * and b (3 each), as frexp gives it (that coordinate is at least half
+ * of 2^e and below it); 0 where all are 0. */
 static int
 scale_of(const double *a, const double *b)
 {
