@@ -115,6 +115,15 @@ vscale(double *d, double s, const double *a, int dim)
 		d[k] = s * a[k];
 }
 
+/* x[0..n) times 2^e, exactly where no number over- or underflows (as
+ * ldexp); nothing where x is NULL */
+static inline void
+vpow2(double *x, size_t n, int e)
+{
+	for (size_t k = 0; x != NULL && k < n; k++)
+		x[k] = ldexp(x[k], e);
+}
+
 static inline void
 vcopy(double *d, const double *a, int dim)
 {

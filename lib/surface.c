@@ -268,22 +268,14 @@ loft_surface_from_bezier(const double *ctl, int m, int n,
 	s->bezier = t->bezier;
 }
 
-/* x (n numbers; NULL: none) times 2^e. */
-static void
-times_pow2(double *x, size_t n, int e)
-{
-	for (size_t i = 0; x != NULL && i < n; i++)
-		x[i] = ldexp(x[i], e);
-}
-
 static void
 eval_scaled(const struct loft_surface *s, double u, double v, double *p,
     double *du, double *dv)
 {
 	loft_surface_eval(s->of, u, v, p, du, dv);
-	times_pow2(p, s->dim, s->scale);
-	times_pow2(du, s->dim, s->scale);
-	times_pow2(dv, s->dim, s->scale);
+	vpow2(p, s->dim, s->scale);
+	vpow2(du, s->dim, s->scale);
+	vpow2(dv, s->dim, s->scale);
 }
 
 static void
@@ -291,26 +283,26 @@ eval2_scaled(const struct loft_surface *s, double u, double v, double *p,
     double *du, double *dv, double *duu, double *dvv)
 {
 	loft_surface_eval2(s->of, u, v, p, du, dv, duu, dvv);
-	times_pow2(p, s->dim, s->scale);
-	times_pow2(du, s->dim, s->scale);
-	times_pow2(dv, s->dim, s->scale);
-	times_pow2(duu, s->dim, s->scale);
-	times_pow2(dvv, s->dim, s->scale);
+	vpow2(p, s->dim, s->scale);
+	vpow2(du, s->dim, s->scale);
+	vpow2(dv, s->dim, s->scale);
+	vpow2(duu, s->dim, s->scale);
+	vpow2(dvv, s->dim, s->scale);
 }
 
 static void
 box_scaled(const struct loft_surface *s, double *lo, double *hi)
 {
 	loft_surface_box(s->of, lo, hi);
-	times_pow2(lo, s->dim, s->scale);
-	times_pow2(hi, s->dim, s->scale);
+	vpow2(lo, s->dim, s->scale);
+	vpow2(hi, s->dim, s->scale);
 }
 
 static void
 bezier_scaled(const struct loft_surface *s, double *ctl)
 {
 	loft_surface_bezier(s->of, ctl);
-	times_pow2(ctl, 3 * (size_t)(s->m + 1) * (s->n + 1), s->scale);
+	vpow2(ctl, 3 * (size_t)(s->m + 1) * (s->n + 1), s->scale);
 }
 
 void

@@ -64,14 +64,14 @@ curvature_scaled(const struct loft_surface *s, double u, double v,
 	loft_surface_eval2(s, u, v, p, xu, xv, xuu, xvv);
 	loft_surface_eval(s, u, v0, NULL, a, NULL);
 	loft_surface_eval(s, u, v1, NULL, b, NULL);
+	for (int c = 0; c < 3; c++)
+		xuv[c] = (b[c] - a[c]) / (v1 - v0);
 	*e = scale_of(xu, xv);
-	for (int c = 0; c < 3; c++) {
-		xuv[c] = ldexp((b[c] - a[c]) / (v1 - v0), -*e);
-		xu[c] = ldexp(xu[c], -*e);
-		xv[c] = ldexp(xv[c], -*e);
-		xuu[c] = ldexp(xuu[c], -*e);
-		xvv[c] = ldexp(xvv[c], -*e);
-	}
+	vpow2(xu, 3, -*e);
+	vpow2(xv, 3, -*e);
+	vpow2(xuu, 3, -*e);
+	vpow2(xvv, 3, -*e);
+	vpow2(xuv, 3, -*e);
 	n[0] = xu[1] * xv[2] - xu[2] * xv[1];
 	n[1] = xu[2] * xv[0] - xu[0] * xv[2];
 	n[2] = xu[0] * xv[1] - xu[1] * xv[0];

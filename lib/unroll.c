@@ -1046,8 +1046,7 @@ rescale(struct loft_unroll *r, int e, struct loft_error *err)
 	    { r->jac, 4 * nn }, { r->seg, 8 * r->nseg } };
 
 	for (int k = 0; k < 4; k++)
-		for (size_t i = 0; i < len[k].n; i++)
-			len[k].x[i] = ldexp(len[k].x[i], e);
+		vpow2(len[k].x, len[k].n, e);
 	r->area3 = ldexp(r->area3, 2 * e);
 	r->area2 = ldexp(r->area2, 2 * e);
 	for (int k = 0; k < 4; k++)
@@ -1080,15 +1079,15 @@ unroll_scaled(const struct loft_unroll_opts *o, const struct loft_surface *s,
 {
 	struct loft_surface *ss = malloc(ns * sizeof *ss);
 	int e, rc;
+	double unit = frexp(size, &e);  /* the size scaled: 0.5 to 1 */
 
 	if (ss == NULL)
 		return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	size = frexp(size, &e);
 	for (size_t i = 0; i < ns; i++)
 		loft_surface_scaled(&s[i], -e, &ss[i]);
 	r->N = o->steps > 0 ? o->steps : steps_for(ss, ns, o->tol > 0 ?
-	    ldexp(o->tol, -e) : LOFT_UNROLL_RELTOL * size);
-	if ((rc = make_mesh(r, ss, ns, size, err)) != 0) {
+	    ldexp(o->tol, -e) : LOFT_UNROLL_RELTOL * unit);
+	if ((rc = make_mesh(r, ss, ns, unit, err)) != 0) {
 		free(ss);
 		return rc;
 	}
