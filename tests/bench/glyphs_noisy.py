@@ -26,7 +26,11 @@ outline has): how many lie within 4 TOL of a true corner,
 how many where the true outline turns by CORNER or more within TOL
 either side (a bend that turns as a corner does at the scale of the
 tolerance), and the rest; and the same of potrace's corners (the joints
-of its path where the tangent turns by more than KINK).
+of its path where the tangent turns by more than KINK).  For splinefit
+also what reading the points backwards changes: the contours with a
+corner that has none within TOL in the other reading, such corners
+(counted from both readings), and the contours whose count of corners
+differs.
 
 With --check, only contours K (from 0) are fitted, by splinefit -e
 (and the OPTIONs), and a line is printed for each: K, whether the
@@ -236,12 +240,37 @@ def turn_within(t, p, reach):
     return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u @ v))
 
 
+def joints(head, rows):
+    """The points of a fit's corner= joints."""
+    m = re.search(r"corners=([0-9,]+)", head)
+    return np.array([rows[int(x) - 1][0:2] for x in m.group(1).split(",")]
+                    if m else np.zeros((0, 2)))
+
+
 def corners_of(head, rows, tol, truth, t):
     """corners_at for the fit's corner= joints."""
-    m = re.search(r"corners=([0-9,]+)", head)
-    return corners_at(np.array([rows[int(x) - 1][0:2]
-                                for x in m.group(1).split(",")]
-                               if m else np.zeros((0, 2))), tol, truth, t)
+    return corners_at(joints(head, rows), tol, truth, t)
+
+
+def unmatched(a, b, tol):
+    """How many of the points a have none of b within tol."""
+    return sum(len(b) == 0 or np.hypot(*(b - p).T).min() > tol for p in a)
+
+
+def reversal(pts, sigma, head, rows, tally):
+    """Fit the points pts read backwards and add to tally (contours
+    whose corners differ, corners read forwards, corners either way
+    with none within TOL in the other reading, contours whose count of
+    corners differs) what that changes."""
+    back = splinefit([], pts[::-1], sigma)
+    if back.returncode != 0:
+        return
+    a, b = joints(head, rows), joints(*records(back.stdout)[0])
+    u = unmatched(a, b, 4 * sigma) + unmatched(b, a, 4 * sigma)
+    tally[0] += u > 0
+    tally[1] += len(a)
+    tally[2] += u
+    tally[3] += len(a) != len(b)
 
 
 def corners_at(at, tol, truth, t):
@@ -384,6 +413,7 @@ def main():
     res = {"loft": [0, 0, [], []], "loft -C": [0, 0, [], []],
            "potrace": [0, 0, [], []]}
     found = {"loft": [0] * 5, "potrace": [0] * 5}
+    back = [0] * 4
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         tc = true_corners(heads[k], t)
@@ -401,6 +431,7 @@ def main():
             if not opt:
                 tally(found["loft"],
                       corners_of(head, rows, 4 * sigma, tc, t))
+                reversal(pts, sigma, head, rows, back)
         if have_potrace:
             r = res["potrace"]
             c, ns, at = potrace(pts, sigma, work)
@@ -417,6 +448,10 @@ def main():
     if have_potrace:
         report("potrace", *res["potrace"])
     report_corners("loft's", found["loft"])
+    print("  loft's corners with the points read backwards: other corners "
+          "on %d contours (of the %d corners read forwards and those read "
+          "backwards, %d have none within TOL in the other reading; the "
+          "count differs on %d)" % (back[0], back[1], back[2], back[3]))
     if have_potrace:
         report_corners("potrace's", found["potrace"])
 
