@@ -65,13 +65,14 @@
  * by this many times the noise's variance: the second corner's two
  * more unknowns absorb about two of it from noise alone, and the best
  * of the few dozen pairs tried, up to about nine.  Where more are
- * tried, the best of N reaches about 2 + 2 ln N (the tail of a
- * chi-square with two degrees of freedom), and the margin is that: 12
- * for the 150 or so a corner of dense points' averaged runs tries.
+ * tried (over 33), the best of N reaches about 2 + 2 ln N (the tail of
+ * a chi-square with two degrees of freedom), and the margin is that:
+ * 12 for the 150 or so a corner of dense points' averaged runs tries.
  * With nine there, 5 of 60 squares of 10,000 points (noise 0.3, -e
  * 1.2) got a chamfer of half a unit at a corner; now 1 does.  On the
- * noisy glyphs of make compare-approx, where fewer are tried, as many
- * true corners are kept and false ones found as before (638 and 63),
+ * noisy glyphs of make compare-approx (a few dozen pairs tried at
+ * most corners) as many true corners are kept and false ones found as
+ * before (638 and 63),
  * and 645 corners are written in all, against 650; on the held-out
  * faces of its second table 2 fewer false corners are found (56). */
 #define CORNER_SPLIT 9.0
