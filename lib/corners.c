@@ -15,7 +15,9 @@
  * the points themselves, sharpest first: the split of the points near
  * it into two lines that fits them best, or three lines (two corners)
  * where that fits them better by more than the noise explains; a turn
- * that a cubic curve fits as well is a smooth bend after all.
+ * that a cubic curve fits as well is a smooth bend after all, and so is
+ * one that two straight runs joined by an arc fit better than the
+ * corner, by more than the corner beats the cubic.
  * Other turns within the scale of a corner so settled are its echoes.
  * Each corner must turn by the sharp angle between the lines settled
  * either side of it.  A corner's knot goes where the lines either side
@@ -94,6 +96,30 @@
  * where a margin of 5 or 8 with the cubic keeps 631 or 626. */
 #define CORNER_DEGREE 3
 #define CORNER_SMOOTH 3.0
+
+/* A cubic cannot follow a straight run into a bend tighter than the
+ * scale and out into another run, which two lines fit better: so a
+ * corner (or two) must also gain on the cubic by more than CORNER_ROUND
+ * times what rounding the single corner gains on it, where the lines
+ * through the points near it but the few nearest it are rounded by an
+ * arc tangent to both (see rounds), or it is a bend.  An arc of radius
+ * 0 is the corner, so rounding gains a little from noise alone, which
+ * outweighs a gain on the cubic as small.  On the noisy glyphs of make
+ * compare-approx this drops 11 of the 63 false corners, and 3 of the
+ * 638 true ones kept; on its held-out faces 4 of 56 false and no true
+ * one, and the 90th percentile of the curves' distance from the true
+ * outline falls from 4.52 to 4.21 sigmas; on 800 contours of eight
+ * other faces, 50 of 308 false corners and 7 of 3,976 true.  (At 0.7,
+ * 7 false and 1 true on the first; at 1.5, 12 and 7.  Tested against
+ * the rounding alone, with the arc kept 1 to 3 noises off the corner,
+ * a third to a half of the true corners read as bends.)
+ * The radii tried are CORNER_ROUND_RADII, a factor of sqrt 2 apart
+ * down from the shorter line's extent; a turn over 2 CORNER_ROUND_HALF
+ * (160 degrees) is not rounded, whose arc would run far along the
+ * lines. */
+#define CORNER_ROUND 1.0
+#define CORNER_ROUND_RADII 24
+#define CORNER_ROUND_HALF 1.4
 
 /* A corner is placed among at most about this many points either side
  * of where its turn was found (every so many where the points are
@@ -525,6 +551,126 @@ search(const struct outline *o, long lo, long hi, long from, long to,
 	}
 }
 
+/* Where lines u and v come nearest each other (the middle of their
+ * nearest points) into x; 0 where they are too near parallel. */
+static int
+meet(const struct line *u, const struct line *v, int dim, double *x)
+{
+	double r[LOFT_MAXDIM], b = vdot(u->d, v->d, dim), den = 1 - b * b;
+	double e, f;
+
+	if (!(den > CORNER_MEET))
+		return 0;
+	vsub(r, u->c, v->c, dim);
+	e = vdot(u->d, r, dim);
+	f = vdot(v->d, r, dim);
+	/* u->c + s u->d and v->c + t v->d, with s and t that make the
+	 * gap between them square to both lines */
+	for (int i = 0; i < dim; i++)
+		x[i] = (u->c[i] + (b * f - e) / den * u->d[i] +
+		    v->c[i] + (f - b * e) / den * v->d[i]) / 2;
+	return 1;
+}
+
+/* Two rays from a vertex x, in along d1 and out along d2 (unit
+ * vectors), rounded by an arc tangent to both: the arc's plane (e1
+ * the bisector b, pointing in, and e2) and half the turn, h. */
+struct rounded {
+	double x[LOFT_MAXDIM], d1[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+	double b[LOFT_MAXDIM], e2[LOFT_MAXDIM], h;
+};
+
+/* The rays along lines u and v from where they meet into *f; 0 where
+ * they are near parallel, or turn by more than 2 CORNER_ROUND_HALF. */
+static int
+rounded_of(const struct line *u, const struct line *v, int dim,
+    struct rounded *f)
+{
+	if (!meet(u, v, dim, f->x) ||
+	    (f->h = angle(u->d, v->d, dim) / 2) > CORNER_ROUND_HALF)
+		return 0;
+	vcopy(f->d1, u->d, dim);
+	vcopy(f->d2, v->d, dim);
+	vsub(f->b, v->d, u->d, dim);
+	vcopy(f->e2, u->d, dim);
+	vaxpy(f->e2, 1, v->d, dim);
+	return vunit(f->b, dim) > 0 && vunit(f->e2, dim) > 0;
+}
+
+/* The squared distance of p from the rays f rounded at radius r: the
+ * arc's centre lies r / cos h along b from the vertex, and it meets
+ * the rays r tan h from it. */
+static double
+rounded_d2(const struct rounded *f, double r, const double *p, int dim)
+{
+	double q[LOFT_MAXDIM], v[LOFT_MAXDIM], t = r * tan(f->h), s, best;
+	double c1, c2, in;
+
+	vsub(q, p, f->x, dim);
+	s = -vdot(q, f->d1, dim);
+	vcopy(v, q, dim);
+	vaxpy(v, fmax(s, t), f->d1, dim);
+	best = vdot(v, v, dim);
+	s = vdot(q, f->d2, dim);
+	vcopy(v, q, dim);
+	vaxpy(v, -fmax(s, t), f->d2, dim);
+	best = fmin(best, vdot(v, v, dim));
+	vaxpy(q, -r / cos(f->h), f->b, dim);
+	c1 = vdot(q, f->b, dim);
+	c2 = vdot(q, f->e2, dim);
+	in = sqrt(c1 * c1 + c2 * c2);
+	if (r > 0 && in > 0 && -c1 >= in * cos(f->h))   /* within the arc */
+		best = fmin(best, (in - r) * (in - r) +
+		    fmax(vdot(q, q, dim) - in * in, 0));
+	return best;
+}
+
+/* The squared distances of points lo..hi of o from the rays f rounded
+ * at radius r. */
+static double
+rounded_ss(const struct outline *o, long lo, long hi,
+    const struct rounded *f, double r)
+{
+	double ss = 0;
+
+	for (long j = lo; j <= hi; j++)
+		ss += rounded_d2(f, r, pt(o, j), o->dim);
+	return ss;
+}
+
+/* Whether the corner at point a of o (the lines through points lo..a
+ * and a..hi meeting there) fits those points worse, by more than
+ * margin, than an arc tangent to two lines does (see CORNER_ROUND):
+ * the lines through them but the k nearest a either side, for each k
+ * from 0 that leaves two points a side, rounded at the radii whose
+ * arcs meet them within the shorter line's extent (CORNER_ROUND_RADII
+ * of them, a factor of sqrt 2 apart). */
+static int
+rounds(const struct outline *o, long lo, long a, long hi, double margin)
+{
+	struct line u, v;
+	struct rounded f;
+	double beat;
+
+	if (!fit_line(o, lo, a - lo + 1, &u) ||
+	    !fit_line(o, a, hi - a + 1, &v) || !rounded_of(&u, &v, o->dim, &f))
+		return 0;
+	beat = rounded_ss(o, lo, hi, &f, 0) - margin;
+	for (long k = 0; a - k - lo >= 2 && hi - a - k >= 2; k++) {
+		if (!fit_line(o, lo, a - k - lo + 1, &u) ||
+		    !fit_line(o, a + k, hi - a - k + 1, &v) ||
+		    !rounded_of(&u, &v, o->dim, &f))
+			continue;
+		for (int x = 0; x < CORNER_ROUND_RADII; x++) {
+			double t = fmin(u.ext, v.ext) * pow(0.5, x / 2.0);
+
+			if (rounded_ss(o, lo, hi, &f, t / tan(f.h)) < beat)
+				return 1;
+		}
+	}
+	return 0;
+}
+
 /* The margin by which two corners must fit the points better than one,
  * in the noise's variance, where that many pairs were tried (see
  * CORNER_SPLIT). */
@@ -548,7 +694,7 @@ settle(const struct outline *o, long i, long w, long m, double sigma,
 	struct split one = { HUGE_VAL, i, i }, two = { HUGE_VAL, i, i };
 	long lo = i - w - m, hi = i + w + m, step = w / CORNER_PLACES + 1;
 	long pairs = 0;
-	double split;
+	double split, best, cubic;
 
 	search(o, lo, hi, i - w, i + w, i + w, step, &one, &two, &pairs);
 	if (step > 1) {
@@ -561,8 +707,10 @@ settle(const struct outline *o, long i, long w, long m, double sigma,
 			    c2.b + step - 1, 1, &one, &two, &pairs);
 	}
 	split = split_margin(pairs) * sigma * sigma;
-	if (fmin(one.ss, two.ss + split) + CORNER_SMOOTH * sigma * sigma >
-	    cubic_ss(o, lo, hi))
+	best = fmin(one.ss, two.ss + split);
+	cubic = cubic_ss(o, lo, hi);
+	if (best + CORNER_SMOOTH * sigma * sigma > cubic || (best < HUGE_VAL &&
+	    rounds(o, lo, one.a, hi, CORNER_ROUND * (cubic - best))))
 		return 0;
 	if (two.ss + split < one.ss) {
 		*a = two.a;
@@ -572,27 +720,6 @@ settle(const struct outline *o, long i, long w, long m, double sigma,
 	*a = one.a;
 	*b = one.b;
 	return turns(o, lo, one.a, hi);
-}
-
-/* Where lines u and v come nearest each other (the middle of their
- * nearest points) into x; 0 where they are too near parallel. */
-static int
-meet(const struct line *u, const struct line *v, int dim, double *x)
-{
-	double r[LOFT_MAXDIM], b = vdot(u->d, v->d, dim), den = 1 - b * b;
-	double e, f;
-
-	if (!(den > CORNER_MEET))
-		return 0;
-	vsub(r, u->c, v->c, dim);
-	e = vdot(u->d, r, dim);
-	f = vdot(v->d, r, dim);
-	/* u->c + s u->d and v->c + t v->d, with s and t that make the
-	 * gap between them square to both lines */
-	for (int i = 0; i < dim; i++)
-		x[i] = (u->c[i] + (b * f - e) / den * u->d[i] +
-		    v->c[i] + (f - b * e) / den * v->d[i]) / 2;
-	return 1;
 }
 
 /* Where the lines through the m points up to point last and the m from

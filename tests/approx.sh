@@ -501,6 +501,67 @@ for seed in 1 3 4 5 6; do
 	    ok || no "thin ellipse $seed: want 2 corners at most: $(head -1 "$T/el.cubic")"
 done
 
+# house_pts R SEED: points 2 apart round the house 0 0, 100 0, 100 40,
+# 50 75, 0 40, its apex (a turn of 70 degrees) rounded by an arc of
+# radius R tangent to its sides (0: sharp), Gaussian noise of 0.2
+house_pts() {
+	awk -v R="$1" -v r="$2" 'BEGIN { srand(r); pi = atan2(0, -1)
+	    split("0 0 100 0 100 40 50 75 0 40", v, " ")
+	    for (i = 0; i < 5; i++) { X[i] = v[2 * i + 1]; Y[i] = v[2 * i + 2] }
+	    for (i = 0; i < 5; i++) {       # the path, the apex an arc
+		if (i != 3 || R == 0) { px[m] = X[i]; py[m++] = Y[i]; continue }
+		ux = X[3] - X[2]; uy = Y[3] - Y[2]; l = sqrt(ux * ux + uy * uy)
+		ux /= l; uy /= l; wx = X[4] - X[3]; wy = Y[4] - Y[3]
+		l = sqrt(wx * wx + wy * wy); wx /= l; wy /= l
+		th = atan2(ux * wy - uy * wx, ux * wx + uy * wy)
+		t = R * sin(th) / (1 + cos(th))
+		cx = X[3] - t * ux - uy * R; cy = Y[3] - t * uy + ux * R
+		a = atan2(Y[3] - t * uy - cy, X[3] - t * ux - cx)
+		for (k = 0; k <= 64; k++) {
+			px[m] = cx + R * cos(a + th * k / 64)
+			py[m++] = cy + R * sin(a + th * k / 64) } }
+	    px[m] = px[0]; py[m] = py[0]
+	    for (k = 0; k < m; k++) {
+		d[k] = sqrt((px[k + 1] - px[k]) ^ 2 + (py[k + 1] - py[k]) ^ 2)
+		per += d[k] }
+	    n = int(per / 2 + 0.5); k = 0
+	    for (i = 0; i < n; i++) { s = i * per / n
+		while (acc + d[k] < s) acc += d[k++]
+		f = (s - acc) / d[k]; q = 0.2 * sqrt(-2 * log(1 - rand()))
+		w = 2 * pi * rand()
+		printf "%.6f %.6f\n", px[k] + f * (px[k + 1] - px[k]) + q * cos(w),
+		    py[k] + f * (py[k + 1] - py[k]) + q * sin(w) } }'
+}
+# corners_at CUBIC "X Y ...": the curve's corners= name as many joints
+# as there are places, one within 1.6 (2 tol) of each
+corners_at() {
+	awk -v V="$2" 'BEGIN { nv = split(V, v, " ") / 2 }
+	    NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
+		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
+	    { j++; if (j in want) for (q = 0; q < nv; q++)
+		if (sqrt(($1 - v[2 * q + 1]) ^ 2 + ($2 - v[2 * q + 2]) ^ 2) <= 1.6)
+		    hit[q] = 1 }
+	    END { for (q in hit) h++; exit !(nc == nv && h == nv) }' "$1"
+}
+
+# ---- a tight bend between straight runs is no corner (issue 23): the
+# house's apex rounded at radius 10, five spacings of its points long,
+# -e 0.8.  The cubic cannot follow a run into the arc and out, and two
+# lines, or three, fit the points better; but the runs joined by an arc
+# fit them better still.  Before that test 7 of these 10 seeds had two
+# corners there (a chamfer); now none has, and the sharp apex keeps its
+# own.  (Seed 12 misses a corner of the sharp house, before and after.)
+for seed in 1 2 3 4 5 6 7 8 9 10; do
+	house_pts 10 $seed >"$T/house.pts"
+	"$B/splinefit" -e 0.8 "$T/house.pts" >"$T/house.cubic" 2>&1 &&
+	    corners_at "$T/house.cubic" "0 0 100 0 100 40 0 40" && ok ||
+	    no "rounded house $seed: want the 4 corners of its base only: $(head -1 "$T/house.cubic")"
+	house_pts 0 $seed >"$T/house.pts"
+	"$B/splinefit" -e 0.8 "$T/house.pts" >"$T/house.cubic" 2>&1 &&
+	    corners_at "$T/house.cubic" "0 0 100 0 100 40 0 40 50 75" && ok ||
+	    no "sharp house $seed: want its 5 corners: $(head -1 "$T/house.cubic")"
+done
+
 # rect_pts W H SPACING FIRST SEED: points round the rectangle 0 0 to W H
 # (from 0 0 along the x axis), SPACING apart along it, the first FIRST
 # from 0 0, with Gaussian noise of 0.05 (awk's generator from SEED)
