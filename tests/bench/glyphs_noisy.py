@@ -221,6 +221,11 @@ def true_corners(head, t):
     return out
 
 
+def perimeter(t):
+    """The length of the closed polyline t."""
+    return float(np.sum(np.hypot(*np.diff(np.r_[t, t[:1]], axis=0).T)))
+
+
 def turn_within(t, p, reach):
     """How far the outline t (a closed polyline) turns, in radians,
     between the points reach along it either side of its point nearest
@@ -247,9 +252,9 @@ def joints(head, rows):
                     if m else np.zeros((0, 2)))
 
 
-def corners_of(head, rows, tol, truth, t):
+def corners_of(head, rows, tol, truth, t, step=0):
     """corners_at for the fit's corner= joints."""
-    return corners_at(joints(head, rows), tol, truth, t)
+    return corners_at(joints(head, rows), tol, truth, t, step)
 
 
 def unmatched(a, b, tol):
@@ -273,11 +278,14 @@ def reversal(pts, sigma, head, rows, tally):
     tally[3] += len(a) != len(b)
 
 
-def corners_at(at, tol, truth, t):
-    """(kept, wanted, false, near_true, tight) of the corners at (points)
-    against the true corners (point, turn) of the outline t: the false
-    ones within 4 tol of a true corner, and those where the outline
-    turns by CORNER within tol either side."""
+def corners_at(at, tol, truth, t, step=0):
+    """(kept, wanted, false, near_true, tight, unresolved) of the corners
+    at (points) against the true corners (point, turn) of the outline t:
+    the false ones within 4 tol of a true corner, those where the
+    outline turns by CORNER within tol either side, and of all the false
+    ones those where it turns by CORNER within two spacings step of the
+    points (or tol, if longer) either side: a bend the points, that far
+    apart, cannot tell from a corner."""
     near = [len(at) and np.hypot(*(at - p).T).min() <= 2 * tol
             for p, _ in truth]
     kept = sum(n for n, (_, a) in zip(near, truth) if a >= CORNER)
@@ -288,7 +296,9 @@ def corners_at(at, tol, truth, t):
     near_true = sum(2 * tol < d <= 4 * tol for d in off)
     tight = sum(turn_within(t, p, tol) >= CORNER for p, d in zip(at, off)
                 if d > 4 * tol)
-    return kept, want, false, near_true, tight
+    unresolved = sum(turn_within(t, p, max(tol, 2 * step)) >= CORNER
+                     for p, d in zip(at, off) if d > 2 * tol)
+    return kept, want, false, near_true, tight, unresolved
 
 
 def tally(sums, counts):
@@ -297,13 +307,15 @@ def tally(sums, counts):
 
 
 def report_corners(name, c):
-    kept, want, false, near_true, tight = c
+    kept, want, false, near_true, tight, unresolved = c
     print("  %s corners: %d of %d true corners of %d degrees or more "
           "kept, %d false (%d of them within 4 TOL of a true corner, %d "
           "where the outline turns %d degrees or more within TOL either "
-          "side, %d on gentler bends)" %
+          "side, %d on gentler bends; of all %d, %d where it turns that "
+          "much within two spacings of the points, or TOL, either side)" %
           (name, kept, want, round(math.degrees(CORNER)), false, near_true,
-           tight, round(math.degrees(CORNER)), false - near_true - tight))
+           tight, round(math.degrees(CORNER)), false - near_true - tight,
+           false, unresolved))
 
 
 def pct(v, q):
@@ -412,11 +424,12 @@ def main():
     rng = random.Random(23)
     res = {"loft": [0, 0, [], []], "loft -C": [0, 0, [], []],
            "potrace": [0, 0, [], []]}
-    found = {"loft": [0] * 5, "potrace": [0] * 5}
+    found = {"loft": [0] * 6, "potrace": [0] * 6}
     back = [0] * 4
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng)
         tc = true_corners(heads[k], t)
+        step = perimeter(t) / len(pts)
         for name, opt in (("loft", []), ("loft -C", ["-C"])):
             fit = splinefit(opt, pts, sigma)
             r = res[name]
@@ -430,7 +443,7 @@ def main():
             r[3].append(len(rows))
             if not opt:
                 tally(found["loft"],
-                      corners_of(head, rows, 4 * sigma, tc, t))
+                      corners_of(head, rows, 4 * sigma, tc, t, step))
                 reversal(pts, sigma, head, rows, back)
         if have_potrace:
             r = res["potrace"]
@@ -438,7 +451,7 @@ def main():
             r[1] += crosses(c)
             r[2].append(hausdorff(c, dense) / sigma)
             r[3].append(ns)
-            tally(found["potrace"], corners_at(at, 4 * sigma, tc, t))
+            tally(found["potrace"], corners_at(at, 4 * sigma, tc, t, step))
     print("splinefit -e 4 sigma on %d noisy glyph contours (400 points, "
           "sigma 0.1-0.5%% of the size, no corners given)%s" %
           (len(truth), "" if have_potrace else
