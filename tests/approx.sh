@@ -545,7 +545,7 @@ corners_at() {
 }
 
 # ---- a tight bend between straight runs is no corner (issue 23): the
-# house's apex rounded at radius 10, five spacings of its points long,
+# house's apex rounded at radius 10, six spacings of its points long,
 # -e 0.8.  The cubic cannot follow a run into the arc and out, and two
 # lines, or three, fit the points better; but the runs joined by an arc
 # fit them better still.  Before that test 7 of these 10 seeds had two
