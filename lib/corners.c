@@ -73,10 +73,10 @@
  * With nine there, 5 of 60 squares of 10,000 points (noise 0.3, -e
  * 1.2) got a chamfer of half a unit at a corner; now 1 does.  On the
  * noisy glyphs of make compare-approx (a few dozen pairs tried at
- * most corners) as many true corners are kept and false ones found as
- * before (638 and 63), and 645 corners are written in all, against
- * 650; on the held-out faces of its second table 2 fewer false corners
- * are found (56). */
+ * most corners) as many true corners were kept and false ones found as
+ * before this margin came in (then 638 and 63), and 645 corners were
+ * written in all, against 650; on the held-out faces of its second
+ * table 2 fewer false corners were found (then 56). */
 #define CORNER_SPLIT 9.0
 
 /* A corner (or two) must fit the points near it better than the

@@ -358,20 +358,20 @@ twoway() {
 	    "$2" - >"$T/twoway" && ok ||
 	    no "two-way: a curve point $(cat "$T/twoway") (distance, room) from the points of $2"
 }
+# corners_at CUBIC R "X Y ...": the curve's corners= name as many joints
+# as there are places, one within R of each
+corners_at() {
+	awk -v R="$2" -v V="$3" 'BEGIN { nv = split(V, v, " ") / 2 }
+	    NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
+		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
+	    { j++; if (j in want) for (q = 0; q < nv; q++)
+		if (sqrt(($1 - v[2 * q + 1]) ^ 2 + ($2 - v[2 * q + 2]) ^ 2) <= R)
+		    hit[q] = 1 }
+	    END { for (q in hit) h++; exit !(nc == nv && h == nv) }' "$1"
+}
 # at_square CUBIC: each true corner of shape's square has a corner joint
 # of CUBIC within 2.4 (2 tol), and there is no other
-at_square() {
-	awk 'NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
-		for (k in c) if (c[k] != "") want[c[k] + 0] = 1; next }
-	    { j++; if (j in want) { found++
-		  d = 1e9
-		  for (q = 0; q < 4; q++) {
-			  cx = (q == 1 || q == 2) * 100; cy = (q >= 2) * 100
-			  e = sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2); if (e < d) d = e
-		  }
-		  if (d <= 2.4) near++ } }
-	    END { exit !(found == 4 && near == 4) }' "$1"
-}
+at_square() { corners_at "$1" 2.4 "0 0 100 0 100 100 0 100"; }
 for seed in 1 2 3; do
 	shape square 400 0.3 $seed >"$T/sq.pts"
 	"$B/splinefit" -e 1.2 "$T/sq.pts" >"$T/sq.cubic" 2>"$T/sq.err" &&
@@ -532,17 +532,6 @@ house_pts() {
 		printf "%.6f %.6f\n", px[k] + f * (px[k + 1] - px[k]) + q * cos(w),
 		    py[k] + f * (py[k + 1] - py[k]) + q * sin(w) } }'
 }
-# corners_at CUBIC "X Y ...": the curve's corners= name as many joints
-# as there are places, one within 1.6 (2 tol) of each
-corners_at() {
-	awk -v V="$2" 'BEGIN { nv = split(V, v, " ") / 2 }
-	    NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
-		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
-	    { j++; if (j in want) for (q = 0; q < nv; q++)
-		if (sqrt(($1 - v[2 * q + 1]) ^ 2 + ($2 - v[2 * q + 2]) ^ 2) <= 1.6)
-		    hit[q] = 1 }
-	    END { for (q in hit) h++; exit !(nc == nv && h == nv) }' "$1"
-}
 
 # ---- a tight bend between straight runs is no corner (issue 23): the
 # house's apex rounded at radius 10, six spacings of its points long,
@@ -554,11 +543,11 @@ corners_at() {
 for seed in 1 2 3 4 5 6 7 8 9 10; do
 	house_pts 10 $seed >"$T/house.pts"
 	"$B/splinefit" -e 0.8 "$T/house.pts" >"$T/house.cubic" 2>&1 &&
-	    corners_at "$T/house.cubic" "0 0 100 0 100 40 0 40" && ok ||
+	    corners_at "$T/house.cubic" 1.6 "0 0 100 0 100 40 0 40" && ok ||
 	    no "rounded house $seed: want the 4 corners of its base only: $(head -1 "$T/house.cubic")"
 	house_pts 0 $seed >"$T/house.pts"
 	"$B/splinefit" -e 0.8 "$T/house.pts" >"$T/house.cubic" 2>&1 &&
-	    corners_at "$T/house.cubic" "0 0 100 0 100 40 0 40 50 75" && ok ||
+	    corners_at "$T/house.cubic" 1.6 "0 0 100 0 100 40 0 40 50 75" && ok ||
 	    no "sharp house $seed: want its 5 corners: $(head -1 "$T/house.cubic")"
 done
 
@@ -578,16 +567,7 @@ rect_pts() {
 }
 # rect_corners CUBIC W H R: the curve's corners= name four joints and no
 # more, one within R of each corner of the rectangle 0 0 to W H
-rect_corners() {
-	awk -v W="$2" -v H="$3" -v R="$4" 'NR == 1 {
-		n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
-		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
-	    { j++; if (j in want) for (q = 0; q < 4; q++) {
-		cx = (q == 1 || q == 2) * W; cy = (q >= 2) * H
-		if (sqrt(($1 - cx) ^ 2 + ($2 - cy) ^ 2) <= R) hit[q] = 1 } }
-	    END { exit !(nc == 4 && (0 in hit) && (1 in hit) && (2 in hit) &&
-		(3 in hit)) }' "$1"
-}
+rect_corners() { corners_at "$1" "$4" "0 0 $2 0 $2 $3 0 $3"; }
 
 # rect_case NAME W H SPACING FIRST R: for seeds 1 to 3, splinefit -e 0.2
 # of rect_pts W H SPACING FIRST (into $T/NAME.pts and NAME.cubic) has

@@ -25,8 +25,11 @@ corners (a corner= joint farther than 2 TOL from every true corner the
 outline has): how many lie within 4 TOL of a true corner,
 how many where the true outline turns by CORNER or more within TOL
 either side (a bend that turns as a corner does at the scale of the
-tolerance), and the rest; and the same of potrace's corners (the joints
-of its path where the tangent turns by more than KINK).  For splinefit
+tolerance), and the rest, and of all the false ones, those where it
+turns by CORNER or more within two spacings of the points (or TOL, if
+longer) either side (a bend the points cannot tell from a corner); and
+the same of potrace's corners (the joints of its path where the tangent
+turns by more than KINK).  For splinefit
 also what reading the points backwards changes: the contours with a
 corner that has none within TOL in the other reading, such corners
 (counted from both readings), and the contours whose count of corners
