@@ -420,7 +420,8 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * the places for their knots: for a single corner where the lines
  * either side meet, if nearer its point than its neighbours, else the
  * point.  A turn is kept only where the lines fit the points near it
- * better than a quadratic curve does (else it is a smooth bend).
+ * better than a cubic curve does, and by more than an arc tangent to
+ * the two lines gains on the corner (else it is a smooth bend).
  * Returns their count, or (size_t)-1 out of memory.  A circle or a
  * gentle bend seldom gives one.  Points denser than the scale needs
  * are first averaged in runs, so the time grows with n, not with the
