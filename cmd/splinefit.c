@@ -536,34 +536,42 @@ blame(struct opts *o, size_t nseg, int dim, int closed, size_t nc)
 
 /*
  * -e: the fit with those of the nc corners splinefit found where drop()
- * says so (at their joints) left out, in place of the fit there
- * (approx_refit), where no more than most of its spans are astray.  A
- * corner that is no joint, or at an open curve's start, is kept.  No
- * fit is tried where fewer than fewest corners are left.  Returns 0,
- * or LOFT_ENOMEM.
+ * says so (at their joints) left out, or where pin is set kept with
+ * their knots at their points (not where the lines either side meet),
+ * in place of the fit there (approx_refit), where no more than most of
+ * its spans are astray.  A corner that is no joint, or at an open
+ * curve's start, is kept as it is.  No fit is tried where fewer than
+ * fewest corners are left, or where nothing changes.  Returns 0, or
+ * LOFT_ENOMEM.
  */
 static int
 approx_without(struct opts *o, const struct loft_record *rec,
     const struct loft_approx_opts *ao, int (*drop)(const struct opts *,
-    size_t, int, int, size_t), size_t fewest, size_t most,
+    size_t, int, int, size_t), int pin, size_t fewest, size_t most,
     struct loft_approx_info *info, size_t *nc, struct loft_error *err)
 {
 	int dim = rec->ncols, rc = 0;
-	size_t k = 0, *corner = malloc((*nc + 1) * sizeof *corner);
+	size_t k = 0, moved = 0, *corner = malloc((*nc + 1) * sizeof *corner);
 	double *at = malloc((*nc + 1) * dim * sizeof *at);
 
 	for (size_t c = 0; corner != NULL && at != NULL && c < *nc; c++) {
 		size_t j = joint_at(o, info->nseg, o->cornerat + c * dim, dim);
+		const double *x = o->cornerat + c * dim;
 
 		if (j < info->nseg && (j > 0 || ao->closed) &&
-		    drop(o, info->nseg, dim, ao->closed, j))
-			continue;
+		    drop(o, info->nseg, dim, ao->closed, j)) {
+			if (!pin)
+				continue;
+			x = rec->num + o->corner[c] * dim;
+			moved += memcmp(x, o->cornerat + c * dim,
+			    dim * sizeof *x) != 0;
+		}
 		corner[k] = o->corner[c];
-		memcpy(at + k++ * dim, o->cornerat + c * dim, dim * sizeof *at);
+		memcpy(at + k++ * dim, x, dim * sizeof *at);
 	}
 	if (corner == NULL || at == NULL)
 		rc = loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
-	else if (k < *nc && k >= fewest)
+	else if ((k < *nc || moved > 0) && k >= fewest)
 		rc = approx_refit(o, rec, ao, corner, at, k, most, info, nc,
 		    err);
 	free(corner);
@@ -584,11 +592,14 @@ approx_without(struct opts *o, const struct loft_record *rec,
  * -e, where the corners splinefit found leave a fit that strays from the
  * points or crosses itself (info->astray spans fail the check both
  * ways): the first that passes both checks, in its stead, of the fit
- * without those at the ends of the segments astray (approx_without),
- * the fit without those nearest each segment astray (where a segment
- * astray has none at its ends), and the fit without any (a false
- * corner among sparse noisy points can pin a knot the curve loops
- * about; the others are most often true).  Returns 0, or LOFT_ENOMEM.
+ * with the knots of those at the ends of the segments astray at their
+ * points (among sparse noisy points the lines either side of a true
+ * corner can meet off it, by more than the curve can follow), the fit
+ * without those corners (approx_without), the fit without those
+ * nearest each segment astray (where a segment astray has none at its
+ * ends), and the fit without any (a false corner among sparse noisy
+ * points can pin a knot the curve loops about; the others are most
+ * often true).  Returns 0, or LOFT_ENOMEM.
  */
 static int
 approx_smooth(struct opts *o, const struct loft_record *rec,
@@ -599,12 +610,18 @@ approx_smooth(struct opts *o, const struct loft_record *rec,
 
 	if (info->astray > APPROX_BLAME * n0)
 		return 0;
-	if (approx_without(o, rec, ao, astray_at, 1, 0, info, nc, err) != 0)
+	if (approx_without(o, rec, ao, astray_at, 1, 1, 0, info, nc,
+	    err) != 0)
+		return LOFT_ENOMEM;
+	if (info->astray == 0)
+		return 0;
+	if (approx_without(o, rec, ao, astray_at, 0, 1, 0, info, nc,
+	    err) != 0)
 		return LOFT_ENOMEM;
 	if (*nc < n0)
 		return 0;
 	if (blame(o, info->nseg, rec->ncols, ao->closed, n0) > 0) {
-		if (approx_without(o, rec, ao, blamed_at, 1, 0, info, nc,
+		if (approx_without(o, rec, ao, blamed_at, 0, 1, 0, info, nc,
 		    err) != 0)
 			return LOFT_ENOMEM;
 		if (*nc < n0)
@@ -769,7 +786,7 @@ drop_flat(struct opts *o, const struct loft_record *rec,
 {
 	for (size_t was = *nc + 1; *nc > 0 && *nc < was;) {
 		was = *nc;
-		if (approx_without(o, rec, ao, flat_at, 0, info->astray, info,
+		if (approx_without(o, rec, ao, flat_at, 0, 0, info->astray, info,
 		    nc, err) != 0)
 			return LOFT_ENOMEM;
 		if (info->astray > 0)    /* see APPROX_FLAT_TURN */

@@ -358,16 +358,22 @@ twoway() {
 	    "$2" - >"$T/twoway" && ok ||
 	    no "two-way: a curve point $(cat "$T/twoway") (distance, room) from the points of $2"
 }
-# corners_at CUBIC R "X Y ...": the curve's corners= name as many joints
-# as there are places, one within R of each
-corners_at() {
+# corner_hits CUBIC R "X Y ...": how many of the places have a joint of
+# the curve's corners= within R, and how many joints corners= names
+corner_hits() {
 	awk -v R="$2" -v V="$3" 'BEGIN { nv = split(V, v, " ") / 2 }
 	    NR == 1 { n = split($0, w, "corners="); split(w[2], c, /[ ,]/)
 		for (k in c) if (c[k] != "") { want[c[k] + 0] = 1; nc++ }; next }
 	    { j++; if (j in want) for (q = 0; q < nv; q++)
 		if (sqrt(($1 - v[2 * q + 1]) ^ 2 + ($2 - v[2 * q + 2]) ^ 2) <= R)
 		    hit[q] = 1 }
-	    END { for (q in hit) h++; exit !(nc == nv && h == nv) }' "$1"
+	    END { for (q in hit) h++; print h + 0, nc + 0 }' "$1"
+}
+# corners_at CUBIC R "X Y ...": the curve's corners= name as many joints
+# as there are places, one within R of each
+corners_at() {
+	set -- "$(corner_hits "$1" "$2" "$3")" "$(echo "$3" | awk '{ print NF / 2 }')"
+	[ "$1" = "$2 $2" ]
 }
 # at_square CUBIC: each true corner of shape's square has a corner joint
 # of CUBIC within 2.4 (2 tol), and there is no other
@@ -580,6 +586,27 @@ rect_case() {
 		    no "$1 $seed: want 4 corner knots within $6 of the rectangle's: $(head -1 "$T/$1.cubic")"
 	done
 }
+
+# ---- true corners among sparse noisy points (issue 23): a rectangle
+# 8 x 4.8, a point every 0.64 (3.2 TOL: 12 and 7 a side), noise 0.05,
+# -e 0.2, its first point a golden-ratio step along the first spacing
+# for seeds 1 to 100.  The lines through a side's few points, tilted by
+# the noise, can meet off the corner by more than the curve can follow
+# there, and the fit with the corner's knot there strays: the fit with
+# the knot at the corner's point is tried before the corner is dropped.
+# Each of the 400 corners has a corner joint within 2 TOL (before that
+# try, five seeds lost one: 395)
+seed=1 kept=0
+while [ "$seed" -le 100 ]; do
+	rect_pts 8 4.8 0.64 "$(awk -v s="$seed" \
+	    'BEGIN { print 0.64 * ((s * 0.618034) % 1) }')" "$seed" >"$T/pin.pts"
+	"$B/splinefit" -e 0.2 "$T/pin.pts" >"$T/pin.cubic" 2>&1
+	set -- $(corner_hits "$T/pin.cubic" 0.4 "0 0 8 0 8 4.8 0 4.8")
+	kept=$((kept + ${1:-0}))
+	seed=$((seed + 1))
+done
+[ "$kept" -eq 400 ] && ok ||
+    no "sparse rectangles: want all 400 corners kept, got $kept"
 
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
