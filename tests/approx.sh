@@ -587,26 +587,48 @@ rect_case() {
 	done
 }
 
+# rect_kept NAME W H SPACING: how many corners of rect_pts W H SPACING
+# (into $T/NAME.pts) splinefit -e 0.2 keeps (corner_hits within 2 TOL)
+# over seeds 1 to 100, the first point a golden-ratio step along the
+# first spacing for each
+rect_kept() {
+	seed=1 kept=0
+	while [ "$seed" -le 100 ]; do
+		rect_pts "$2" "$3" "$4" "$(awk -v s="$seed" -v sp="$4" \
+		    'BEGIN { print sp * ((s * 0.618034) % 1) }')" "$seed" \
+		    >"$T/$1.pts"
+		"$B/splinefit" -e 0.2 "$T/$1.pts" >"$T/$1.cubic" 2>&1
+		set -- "$1" "$2" "$3" "$4" $(corner_hits "$T/$1.cubic" 0.4 \
+		    "0 0 $2 0 $2 $3 0 $3")
+		kept=$((kept + ${5:-0}))
+		seed=$((seed + 1))
+	done
+	echo "$kept"
+}
+
 # ---- true corners among sparse noisy points (issue 23): a rectangle
 # 8 x 4.8, a point every 0.64 (3.2 TOL: 12 and 7 a side), noise 0.05,
-# -e 0.2, its first point a golden-ratio step along the first spacing
-# for seeds 1 to 100.  The lines through a side's few points, tilted by
-# the noise, can meet off the corner by more than the curve can follow
-# there, and the fit with the corner's knot there strays: the fit with
-# the knot at the corner's point is tried before the corner is dropped.
-# Each of the 400 corners has a corner joint within 2 TOL (before that
-# try, five seeds lost one: 395)
-seed=1 kept=0
-while [ "$seed" -le 100 ]; do
-	rect_pts 8 4.8 0.64 "$(awk -v s="$seed" \
-	    'BEGIN { print 0.64 * ((s * 0.618034) % 1) }')" "$seed" >"$T/pin.pts"
-	"$B/splinefit" -e 0.2 "$T/pin.pts" >"$T/pin.cubic" 2>&1
-	set -- $(corner_hits "$T/pin.cubic" 0.4 "0 0 8 0 8 4.8 0 4.8")
-	kept=$((kept + ${1:-0}))
-	seed=$((seed + 1))
-done
+# -e 0.2, seeds 1 to 100 (rect_kept).  The lines through a side's few
+# points, tilted by the noise, can meet off the corner by more than the
+# curve can follow there, and the fit with the corner's knot there
+# strays: the fit with the knot at the corner's point is tried before
+# the corner is dropped.  Each of the 400 corners has a corner joint
+# within 2 TOL (before that try, five seeds lost one: 395)
+kept=$(rect_kept pin 8 4.8 0.64)
 [ "$kept" -eq 400 ] && ok ||
     no "sparse rectangles: want all 400 corners kept, got $kept"
+
+# ---- the feet of stems (issue 23): a rectangle 1.16 x 9.8, its ends
+# 5.8 TOL across (1.9 times the scale of 3 TOL the corners are judged
+# over, as the foot of DejaVu Sans's d), a point every 0.082, noise
+# 0.05, -e 0.2, seeds 1 to 100 (rect_kept).  Each end turns twice
+# within twice the scale, which the turn over half the scale tells from
+# a bend; its lines, half as long, are within the noise's reach, and
+# that turn was taken as none: 352 of the 400 corners were kept (88%).
+# At least 95% (issue 23's target) must be.
+kept=$(rect_kept stem 1.16 9.8 0.082)
+[ "$kept" -ge 380 ] && ok ||
+    no "stems: want 380 of 400 corners kept at least, got $kept"
 
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
