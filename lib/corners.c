@@ -709,9 +709,9 @@ split_margin(long pairs)
  * best (each line m points at least).  Returns 1 (one corner, *a) or 2
  * (corners *a and *b), or 0 where a cubic curve fits those points
  * as well, to within CORNER_SMOOTH (a smooth bend); where it returns
- * 1 or 2, how well the best split of one corner or two fits the points
- * into *fit (the mean square of their distances from its lines, in the
- * noise's variance).  Where w exceeds CORNER_PLACES, every so many
+ * 1 or 2 and fit is not NULL, how well the best split of one corner or
+ * two fits the points into *fit (the mean square of their distances
+ * from its lines, in the noise's variance).  Where w exceeds CORNER_PLACES, every so many
  * points are tried, then every point near the best. */
 static int
 settle(const struct outline *o, long i, long w, long m, double sigma,
@@ -738,7 +738,9 @@ settle(const struct outline *o, long i, long w, long m, double sigma,
 	if (best + CORNER_SMOOTH * sigma * sigma > cubic || (best < HUGE_VAL &&
 	    rounds(o, lo, one.a, hi, CORNER_ROUND * (cubic - best))))
 		return 0;
-	*fit = fmin(one.ss, two.ss) / (double)(hi - lo + 1) / (sigma * sigma);
+	if (fit != NULL)
+		*fit = fmin(one.ss, two.ss) / (double)(hi - lo + 1) /
+		    (sigma * sigma);
 	if (two.ss + split < one.ss) {
 		*a = two.a;
 		*b = two.b;
@@ -1277,13 +1279,13 @@ settle_hidden(const struct outline *o, const size_t *cand, size_t ncand,
 	for (size_t x = 0; x < ncand; x++) {
 		long i = (long)cand[x], m = reach(o, i, 1, CORNER_FINER * len);
 		long c[2];
-		double at[2][LOFT_MAXDIM], fit;
+		double at[2][LOFT_MAXDIM];
 		int k, q = 0;
 
 		if (m < 2)
 			m = 2;
 		if (s->taken[i] || !s->hide[i] || turn[i] < CORNER_HIDDEN ||
-		    (k = settle(o, i, m, m, sigma, &c[0], &c[1], &fit)) == 0)
+		    (k = settle(o, i, m, m, sigma, &c[0], &c[1], NULL)) == 0)
 			continue;
 		k = place_all(o, k, c, m, sigma, at);
 		if (fresh(o, c, k, s->taken, &q) == 1 &&

@@ -418,8 +418,10 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * the end of a serif) that fits them best.  Their indices, increasing,
  * into corner (room for n), and where at is not NULL (room for n * dim)
  * the places for their knots: for a single corner where the lines
- * either side meet, if nearer its point than its neighbours, else the
- * point.  A turn is kept only where the lines fit the points near it
+ * either side meet, if the path from its point through there to a
+ * neighbour is not much longer than the points' spacing, else the
+ * point, or a neighbour where a corner pinned there fits the points
+ * better.  A turn is kept only where the lines fit the points near it
  * better than a cubic curve does, and by more than an arc tangent to
  * the two lines gains on the corner (else it is a smooth bend).
  * Returns their count, or (size_t)-1 out of memory.  A circle or a
