@@ -557,20 +557,30 @@ for seed in 1 2 3 4 5 6 7 8 9 10; do
 	    no "sharp house $seed: want its 5 corners: $(head -1 "$T/house.cubic")"
 done
 
-# rect_pts W H SPACING FIRST SEED: points round the rectangle 0 0 to W H
-# (from 0 0 along the x axis), SPACING apart along it, the first FIRST
-# from 0 0, with Gaussian noise of 0.05 (awk's generator from SEED)
-rect_pts() {
-	awk -v W="$1" -v H="$2" -v sp="$3" -v first="$4" -v r="$5" 'BEGIN {
-	    srand(r); pi = atan2(0, -1); per = 2 * (W + H)
+# poly_pts "X Y ..." SPACING FIRST SEED: points round the closed
+# polygon of those corners (from the first towards the second), SPACING
+# apart along it, the first FIRST from the first corner, with Gaussian
+# noise of 0.05 (awk's generator from SEED)
+poly_pts() {
+	awk -v V="$1" -v sp="$2" -v first="$3" -v r="$4" 'BEGIN {
+	    srand(r); pi = atan2(0, -1); nv = split(V, v, " ") / 2; per = 0
+	    for (q = 0; q < nv; q++) {
+		x0[q] = v[2 * q + 1]; y0[q] = v[2 * q + 2]
+		dx[q] = v[(2 * q + 2) % (2 * nv) + 1] - x0[q]
+		dy[q] = v[(2 * q + 3) % (2 * nv) + 1] - y0[q]
+		l[q] = sqrt(dx[q] ^ 2 + dy[q] ^ 2); start[q] = per; per += l[q]
+	    }
+	    q = 0
 	    for (s = first; s < per - 1e-9; s += sp) {
-		if (s < W) { x = s; y = 0 }
-		else if (s < W + H) { x = W; y = s - W }
-		else if (s < 2 * W + H) { x = 2 * W + H - s; y = H }
-		else { x = 0; y = per - s }
-		m = 0.05 * sqrt(-2 * log(1 - rand())); v = 2 * pi * rand()
-		printf "%.6f %.6f\n", x + m * cos(v), y + m * sin(v) } }'
+		while (q < nv - 1 && s >= start[q] + l[q]) q++
+		f = (s - start[q]) / l[q]
+		m = 0.05 * sqrt(-2 * log(1 - rand())); a = 2 * pi * rand()
+		printf "%.6f %.6f\n", x0[q] + f * dx[q] + m * cos(a),
+		    y0[q] + f * dy[q] + m * sin(a) } }'
 }
+# rect_pts W H SPACING FIRST SEED: poly_pts round the rectangle 0 0 to
+# W H, from 0 0 along the x axis
+rect_pts() { poly_pts "0 0 $1 0 $1 $2 0 $2" "$3" "$4" "$5"; }
 # rect_corners CUBIC W H R: the curve's corners= name four joints and no
 # more, one within R of each corner of the rectangle 0 0 to W H
 rect_corners() { corners_at "$1" "$4" "0 0 $2 0 $2 $3 0 $3"; }
@@ -587,24 +597,25 @@ rect_case() {
 	done
 }
 
-# rect_kept NAME W H SPACING: how many corners of rect_pts W H SPACING
-# (into $T/NAME.pts) splinefit -e 0.2 keeps (corner_hits within 2 TOL)
-# over seeds 1 to 100, the first point a golden-ratio step along the
-# first spacing for each
-rect_kept() {
+# poly_kept NAME "X Y ..." SPACING: how many corners of poly_pts of
+# that polygon (into $T/NAME.pts) splinefit -e 0.2 keeps (corner_hits
+# within 2 TOL) over seeds 1 to 100, the first point a golden-ratio
+# step along the first spacing for each
+poly_kept() {
 	seed=1 kept=0
 	while [ "$seed" -le 100 ]; do
-		rect_pts "$2" "$3" "$4" "$(awk -v s="$seed" -v sp="$4" \
+		poly_pts "$2" "$3" "$(awk -v s="$seed" -v sp="$3" \
 		    'BEGIN { print sp * ((s * 0.618034) % 1) }')" "$seed" \
 		    >"$T/$1.pts"
 		"$B/splinefit" -e 0.2 "$T/$1.pts" >"$T/$1.cubic" 2>&1
-		set -- "$1" "$2" "$3" "$4" $(corner_hits "$T/$1.cubic" 0.4 \
-		    "0 0 $2 0 $2 $3 0 $3")
-		kept=$((kept + ${5:-0}))
+		set -- "$1" "$2" "$3" $(corner_hits "$T/$1.cubic" 0.4 "$2")
+		kept=$((kept + ${4:-0}))
 		seed=$((seed + 1))
 	done
 	echo "$kept"
 }
+# rect_kept NAME W H SPACING: poly_kept of the rectangle 0 0 to W H
+rect_kept() { poly_kept "$1" "0 0 $2 0 $2 $3 0 $3" "$4"; }
 
 # ---- true corners among sparse noisy points (issue 23): a rectangle
 # 8 x 4.8, a point every 0.64 (3.2 TOL: 12 and 7 a side), noise 0.05,
@@ -642,6 +653,7 @@ kept=$(rect_kept stem 1.16 9.8 0.082)
 kept=$(rect_kept slabend 40 1.44 0.8)
 [ "$kept" -ge 380 ] && ok ||
     no "sparse slab ends: want 380 of 400 corners kept at least, got $kept"
+
 
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
