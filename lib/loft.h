@@ -423,8 +423,11 @@ size_t loft_straight_spans(const double *seg, size_t nseg, int dim, int closed,
  * point, or a neighbour where a corner pinned there fits the points
  * better.  A turn is kept only where the lines fit the points near it
  * better than a cubic curve does, and by more than an arc tangent to
- * the two lines gains on the corner (else it is a smooth bend).
- * Returns their count, or (size_t)-1 out of memory.  A circle or a
+ * the two lines gains on the corner (else it is a smooth bend).  Once
+ * all are placed, the turns are measured again with no line reaching
+ * past a corner found, and those the sharper turns beside it hid are
+ * placed in the same way, kept only where they gain much more on the
+ * cubic.  Returns their count, or (size_t)-1 out of memory.  A circle or a
  * gentle bend seldom gives one.  Points denser than the scale needs
  * are first averaged in runs, so the time grows with n, not with the
  * points' density.

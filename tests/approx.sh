@@ -654,6 +654,18 @@ kept=$(rect_kept slabend 40 1.44 0.8)
 [ "$kept" -ge 380 ] && ok ||
     no "sparse slab ends: want 380 of 400 corners kept at least, got $kept"
 
+# ---- a corner beside the end of an arm (issue 23): a stem 4 x 10 with
+# an arm 7.2 x 2.4 out of its top to the left, a point every 0.8 (4 TOL:
+# nine spacings along the arm's underside, three across its end), noise
+# 0.05, -e 0.2, seeds 1 to 100 (poly_kept).  The windows that reach the
+# arm's end turn by nearly 180 degrees, more than the corner where its
+# underside meets the stem, within half the scale of it: that corner
+# was never a candidate, and 556 of the 600 corners were kept (92.7%).
+# The turns are measured again with no window reaching past a corner
+# found.  At least 95% (issue 23's target) must be kept.
+kept=$(poly_kept arm "0 0 0 10 -7.2 10 -7.2 12.4 4 12.4 4 0" 0.8)
+[ "$kept" -ge 570 ] && ok ||
+    no "arm beside a stem: want 570 of 600 corners kept at least, got $kept"
 
 # ---- two corners closer than the scale (issue 23): a slab 100 x 2.5, its
 # ends shorter than the six point spacings the corners are judged over
