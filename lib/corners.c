@@ -1470,8 +1470,9 @@ short_of(const struct outline *o, long i, long m, const unsigned char *corner)
 }
 
 /* Settle the corners that those in s shadowed (see CORNER_SHADOWED) at
- * the scale len into s; corner, turn, half, cand and t: scratch, room
- * for o->n each. */
+ * the scale len into s: none where s has none (a smooth outline costs
+ * no second look); corner, turn, half, cand and t: scratch, room for
+ * o->n each. */
 static void
 settle_shadowed(const struct outline *o, double len, double sigma,
     unsigned char *corner, double *turn, long *half, size_t *cand,
@@ -1479,6 +1480,8 @@ settle_shadowed(const struct outline *o, double len, double sigma,
 {
 	size_t nc;
 
+	if (s->nc == 0)
+		return;
 	memset(corner, 0, o->n);
 	for (size_t x = 0; x < s->nc; x++)
 		corner[s->f[x].i] = 1;
