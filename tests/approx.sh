@@ -673,12 +673,13 @@ kept=$(poly_kept arm "0 0 0 10 -7.2 10 -7.2 12.4 4 12.4 4 0" 0.8)
 # whose end, 1 high, meets a bracket curving away from it (an arc of
 # radius 4 over 60 degrees), a point every 0.8 (4 TOL: one or two on
 # the end), noise 0.05, -e 0.2, seeds 1 to 100 (poly_kept), the two
-# corners of the end counted.  The lines of the end's split, four
-# points a side, run along the bracket, which they fit badly, and their
-# best split put the corners a point off or read the end as one: 107
-# of the 200 were kept.  A split that fits badly is settled again with
-# sides half as long, and taken where it fits twice as well: 142 are.
-# The rest are still read as one corner, the tip of the end.
+# corners of the end counted.  The lines of the end's split, half the
+# scale long (three spacings), run along the bracket, which they fit
+# badly, and their best split put the corners a point off or read the
+# end as one: 107 of the 200 were kept.  A split that fits badly is
+# settled again with sides half as long, and taken where it fits twice
+# as well: 142 are.  The rest are still read as one corner, the tip of
+# the end.
 serif=$(awk 'BEGIN { pi = atan2(0, -1); s = "0 1 8 1 8 0"
     for (k = 1; k <= 40; k++)
 	s = s " " (8 - 4 * sin(pi / 3 * k / 40)) " " \
