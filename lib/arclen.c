@@ -195,7 +195,7 @@ loft_curve_arc(const struct loft_curve *c, double u0, double u1)
 	u0 = fmax(u0, 0);
 	u1 = fmin(u1, top);
 	for (size_t i = (size_t)u0; i < c->npieces && (double)i < u1; i++) {
-		loft__piece(c, i, &pc);
+		loft__piece(c, i, 0, &pc);
 		s += piece_arc(&pc, fmax(u0 - (double)i, 0),
 		    fmin(u1 - (double)i, 1), NULL);
 	}
@@ -227,7 +227,7 @@ walk_piece(struct walk *w, const struct loft_curve *c, size_t i)
 {
 	int depth = 0;
 
-	loft__piece(c, i, &w->pc);
+	loft__piece(c, i, 0, &w->pc);
 	w->len = piece_arc(&w->pc, 0, 1, &depth);
 	w->fine = ldexp(1, -depth);
 }

@@ -210,7 +210,8 @@ to_power(const double *c, int n, double *a)
 }
 
 void
-loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc)
+loft__piece(const struct loft_curve *c, size_t i, int e,
+    struct loft__piece *pc)
 {
 	double ctl[LOFT_BEZIER_MAXPTS * LOFT_MAXDIM];
 	int n = loft_curve_bezier(c, i, ctl), dim = c->dim;
@@ -218,8 +219,10 @@ loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc)
 	pc->n = n;
 	pc->dim = dim;
 	for (int k = 0; k < dim; k++) {
+		/* scaled before the differences, which would overflow
+		 * first for control values near the largest double */
 		for (int j = 0; j <= n; j++)
-			pc->b[k][j] = ctl[j * dim + k];
+			pc->b[k][j] = ldexp(ctl[j * dim + k], -e);
 		/* the derivative of a degree-m expansion: m (c_(j+1) - c_j) */
 		for (int j = 0; j <= n; j++)
 			pc->d1[k][j] = pc->d2[k][j] = pc->d3[k][j] = 0;
@@ -296,25 +299,4 @@ loft__curve_extent(const struct loft_curve *c)
 	for (int k = 0; k < c->dim; k++)
 		lo[k] = hi[k] - lo[k];
 	return vnorm(lo, c->dim);       /* no square overflows (issue 28) */
-}
-
-void
-loft__piece_scale(struct loft__piece *pc, int e)
-{
-	int n = pc->n;
-
-	for (int k = 0; k < pc->dim; k++) {
-		for (int j = 0; j <= n; j++) {
-			pc->b[k][j] = ldexp(pc->b[k][j], e);
-			pc->d1[k][j] = ldexp(pc->d1[k][j], e);
-			pc->d2[k][j] = ldexp(pc->d2[k][j], e);
-			pc->d3[k][j] = ldexp(pc->d3[k][j], e);
-		}
-		if (n <= POWER_DEG) {
-			for (int j = 0; j < n; j++)
-				pc->p1[k][j] = ldexp(pc->p1[k][j], e);
-			for (int j = 0; j <= LOFT__DEG(pc, 2); j++)
-				pc->p2[k][j] = ldexp(pc->p2[k][j], e);
-		}
-	}
 }

@@ -410,14 +410,13 @@ struct loft__piece {
 };
 /* The degree of the j-th derivative's coefficients in a piece. */
 #define LOFT__DEG(pc, j) ((pc)->n > (j) ? (pc)->n - (j) : 0)
-/* Piece i of c. */
-void loft__piece(const struct loft_curve *c, size_t i, struct loft__piece *pc);
+/* Piece i of c, every coefficient times 2^-e: exact, but for overflow
+ * and subnormals; a piece of any size brought near 1 (issue 28). */
+void loft__piece(const struct loft_curve *c, size_t i, int e,
+    struct loft__piece *pc);
 /* Point, first and second derivatives at u (any may be NULL). */
 void loft__piece_eval(const struct loft__piece *pc, double u, double *p,
     double *d1, double *d2);
-/* Every coefficient of pc times 2^e: exact, but for overflow and
- * subnormals; a piece of any size brought near 1 (issue 28). */
-void loft__piece_scale(struct loft__piece *pc, int e);
 /* The diagonal of the box around all control points of c: its size. */
 double loft__curve_extent(const struct loft_curve *c);
 

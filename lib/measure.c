@@ -59,8 +59,7 @@ curve_exp(const struct loft_curve *c)
 static void
 piece_at(const struct loft_curve *c, size_t i, int e, struct loft__piece *pc)
 {
-	loft__piece(c, i, pc);
-	loft__piece_scale(pc, -e);
+	loft__piece(c, i, e, pc);
 }
 
 void

@@ -1054,6 +1054,11 @@ sample_cases() {
 	bad "-s giving too many points" 1 "more than 10000000 points"
 	opts -t 0.01
 	bad "-t below 1e-9 of the size" 1 "is below 1e-09 of the size"
+	# found by make fuzz: the box of a curve whose control values near
+	# the largest double missed them, and -t flattened it for seconds
+	printf 'cubic\n0 0 1 0 1.7976931348623157e308 2 0 .2\n' >"$T/case"
+	bad "-t on a curve near the largest double" 1 \
+	    "is below 1e-09 of the size 2.66325e+307"
 
 	# a record of BIG segments along the x axis, one point each
 	opts -n 1 -p 9
