@@ -1112,6 +1112,97 @@ fold_spans(struct crossing *c)
 	}
 }
 
+/* A knot the curve passes backwards: its tangent there points against
+ * the way the points run past it by more than the angle whose cosine
+ * is -APPROX_HOOK.  The way is from the point half a tolerance back
+ * from the last point on the span before the knot to the one half a
+ * tolerance on from the first on the span after (the nearest spans
+ * with points; where the feet run backwards there, from before the
+ * first of those two points to after the last), where those lie a
+ * tolerance apart: the points' own U-turn turns that way with the
+ * curve.  The curve runs on past such a knot and turns back, a hook,
+ * which strays less than the spacing past the points and crosses
+ * nothing, so neither check sees it.  (Once faint corners were dropped
+ * (corners.c), the noisy contour 110 of tests/approx.sh's glyphs, a
+ * Linux Libertine r, hooked at the foot of its stem, 6.5 sigmas from
+ * the true outline, two knots there in the wrong order along the
+ * points; contour 8, FreeSerif's f, had a cusp, a radius of 0.002
+ * tolerances.) */
+#define APPROX_HOOK 0.25
+
+/* The point of w from point i (of the points as shifted) on in the
+ * direction dir (1 or -1) at least len from it, or the last there is
+ * (an open outline's end, or half way round a closed one). */
+static size_t
+point_beyond(const struct work *w, size_t i, int dir, double len)
+{
+	const double *p = w->q + i * w->dim;
+	size_t j = i;
+
+	for (size_t k = 0; k < w->n / 2; k++) {
+		double d[LOFT_MAXDIM];
+
+		if (!w->closed && (dir < 0 ? j == 0 : j + 1 == w->n))
+			break;
+		j = dir < 0 ? (j + w->n - 1) % w->n : (j + 1) % w->n;
+		vsub(d, w->q + j * w->dim, p, w->dim);
+		if (vnorm(d, w->dim) >= len)
+			break;
+	}
+	return j;
+}
+
+/* Mark each free knot the curve passes backwards (see APPROX_HOOK) to
+ * cut; returns how many, or (size_t)-1 out of memory. */
+static size_t
+hook_knots(struct work *w)
+{
+	size_t ns = nseg_of(w), bad = 0, none = (size_t)-1, *last;
+	size_t *first = malloc(2 * ns * sizeof *first);
+	int dim = w->dim;
+
+	if (first == NULL)
+		return none;
+	last = first + ns;
+	for (size_t j = 0; j < ns; j++)
+		first[j] = none;
+	for (size_t i = 0; i < w->n; i++) {
+		if (first[w->fj[i]] == none)
+			first[w->fj[i]] = i;
+		last[w->fj[i]] = i;
+	}
+	for (size_t j = !w->closed; j < ns; j++) {
+		size_t a = (j + ns - 1) % ns, b = j, lo, hi;
+		double x[LOFT_MAXDIM], t[LOFT_MAXDIM], d2[LOFT_MAXDIM];
+		double d[LOFT_MAXDIM];
+
+		for (size_t k = 1; first[a] == none && k < ns &&
+		    (w->closed || a > 0); k++)
+			a = (a + ns - 1) % ns;  /* the nearest with points */
+		for (size_t k = 1; first[b] == none && k < ns &&
+		    (w->closed || b + 1 < ns); k++)
+			b = (b + 1) % ns;
+		if (w->fixed[j] || first[a] == none || first[b] == none)
+			continue;
+		lo = last[a];
+		hi = first[b];
+		if ((hi + w->n - lo) % w->n > w->n / 2) {
+			lo = first[b];  /* feet out of order: round them */
+			hi = last[a];
+		}
+		span_eval(w, j, 0, x, t, d2);
+		vsub(d, w->q + point_beyond(w, hi, 1, w->tol / 2) * dim,
+		    w->q + point_beyond(w, lo, -1, w->tol / 2) * dim, dim);
+		if (!(vnorm(d, dim) >= w->tol) || !(vdot(t, d, dim) <
+		    -APPROX_HOOK * vnorm(t, dim) * vnorm(d, dim)))
+			continue;
+		w->cut[j] = 1;
+		bad++;
+	}
+	free(first);
+	return bad;
+}
+
 /* Mark the spans of the plane curve that cross; returns how many,
  * or (size_t)-1 out of memory. */
 static size_t
@@ -2490,6 +2581,63 @@ straight_runs(struct work *w, double *worst, size_t *at,
 	return 0;
 }
 
+/* Cut knot j of w and settle the rest again; kept where every point
+ * is still within the tolerance, the curve passes both checks and
+ * passes fewer than hooks knots backwards (see APPROX_HOOK), else the
+ * curve is as it was.  Returns whether it was kept. */
+static int
+unhook_one(struct work *w, size_t j, size_t hooks, double *worst,
+    size_t *at)
+{
+	double was = *worst;
+	size_t wat = *at;
+	struct loft_error err;
+
+	save_state(w);
+	memset(w->cut, 0, w->m);
+	w->cut[j] = 1;
+	if (cut_loops(w) == 1 && fit_project(w, worst, at, &err) == 0 &&
+	    settle(w, worst, at, &err) == 0 && *worst <= w->tol &&
+	    check_spans(w, *worst) == 0 && (memset(w->cut, 0, w->m),
+	    hook_knots(w) < hooks))
+		return 1;
+	restore_state(w);       /* the curve as it was */
+	*worst = was;
+	*at = wat;
+	return 0;
+}
+
+/* While the curve passes knots backwards (see APPROX_HOOK), the first
+ * of them whose cut leaves it passing fewer (unhook_one) cut.  (Cut
+ * all at once, the knot of the hook at the foot of that r and the one
+ * before it left its curve astray.)  Returns 0, or an error. */
+static int
+unhook(struct work *w, double *worst, size_t *at, struct loft_error *err)
+{
+	unsigned char *mark = NULL, *more = NULL;
+	size_t hooks;
+	int cut;
+
+	do {
+		cut = 0;
+		memset(w->cut, 0, w->m);
+		if ((hooks = hook_knots(w)) == (size_t)-1 || (hooks > 0 &&
+		    (more = realloc(mark, w->m)) == NULL)) {
+			free(mark);
+			return loft_fail(err, LOFT_ENOMEM, -1, "out of memory");
+		}
+		if (hooks > 0) {
+			mark = more;
+			memcpy(mark, w->cut, w->m);
+		}
+		for (size_t j = 0, m = w->m; hooks > 0 && j < m && !cut; j++)
+			cut = mark[j] && unhook_one(w, j, hooks, worst, at);
+	} while (cut && !w->nomem);
+	free(mark);
+	return w->nomem ? loft_fail(err, LOFT_ENOMEM, -1, "out of memory") :
+	    0;
+}
+
 /* The checks both ways (check_spans) of a round: the spans astray into
  * *bad, counted in w->checks; where the check found loops, they are cut
  * and the knots settled again, and *bad is the check of the curve then.
@@ -2640,8 +2788,12 @@ approx_rounds(struct work *w, const struct loft_approx_opts *o,
 			at = from;
 		}
 	}
-	if (worst <= w->tol && (rc = straight_runs(w, &worst, &at, err)) != 0)
-		return rc;
+	if (worst <= w->tol) {
+		if ((rc = unhook(w, &worst, &at, err)) != 0 ||
+		    (rc = straight_runs(w, &worst, &at, err)) != 0)
+			return rc;
+		knots = w->m;   /* fewer where hooks were cut */
+	}
 	info->nknots = knots;
 	info->nseg = w->closed ? knots : knots - 1;
 	info->dist = worst;

@@ -43,7 +43,9 @@ sigma apart, for that distance to be the curve's, not its samples'),
 the spans splinefit -v says are astray (0 where it says none), the
 corners of the curve (its corners= joints), and the least angle its
 tangent turns by at one, in degrees (- where it has none); with
---knots, also the true corners kept and how many there are, as above.
+--knots, also the true corners kept and how many there are, as above;
+last, the least radius of curvature of the curve, in TOLs (0 at a
+cusp).
 --seed draws the noise from seed S instead of the corpus's own, 23;
 --points samples each contour at N points instead of 400."""
 import math
@@ -359,6 +361,27 @@ def joint_turn(rows, j):
     return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u @ v))
 
 
+def least_radius(rows, per=256):
+    """The least radius of curvature of a cubic record's Hermite rows,
+    sampled per times a segment, its ends included (a cusp, where the
+    curve stops and turns back, has none: 0)."""
+    u = np.linspace(0, 1, per + 1)[:, None]
+    least = math.inf
+    for r in rows:
+        p0, p1, d0, d1 = r[0:2], r[2:4], r[4:6], r[6:8]
+        # first and second derivatives of the Hermite form in u
+        v = (6 * u**2 - 6 * u) * p0 + (-6 * u**2 + 6 * u) * p1 + \
+            (3 * u**2 - 4 * u + 1) * d0 + (3 * u**2 - 2 * u) * d1
+        a = (12 * u - 6) * p0 + (-12 * u + 6) * p1 + \
+            (6 * u - 4) * d0 + (6 * u - 2) * d1
+        speed = np.hypot(v[:, 0], v[:, 1])
+        cross = np.abs(v[:, 0] * a[:, 1] - v[:, 1] * a[:, 0])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rad = np.where(cross > 0, speed ** 3 / cross, math.inf)
+        least = min(least, float(np.nanmin(rad)))
+    return least
+
+
 def fine(rows, sigma):
     """Samples of a cubic record a quarter sigma apart at most: with
     PER a segment, the truth's distance to a long segment would be its
@@ -401,7 +424,8 @@ def check(which, truth, opt, heads=None, seed=23, npts=400):
               "%.1f" % min(math.degrees(joint_turn(rows, j)) for j in joints)
               if joints else "-",
               *(corners_of(head, rows, 4 * sigma, true_corners(heads[k], t),
-                           t)[:2] if heads else ()))
+                           t)[:2] if heads else ()),
+              "%.4g" % (least_radius(rows) / (4 * sigma)))
 
 
 def main():
