@@ -377,7 +377,8 @@ def least_radius(rows, per=256):
         speed = np.hypot(v[:, 0], v[:, 1])
         cross = np.abs(v[:, 0] * a[:, 1] - v[:, 1] * a[:, 0])
         with np.errstate(divide="ignore", invalid="ignore"):
-            rad = np.where(cross > 0, speed ** 3 / cross, math.inf)
+            rad = np.where(speed == 0, 0.0,
+                           np.where(cross > 0, speed ** 3 / cross, math.inf))
         least = min(least, float(np.nanmin(rad)))
     return least
 
