@@ -44,8 +44,8 @@ the spans splinefit -v says are astray (0 where it says none), the
 corners of the curve (its corners= joints), and the least angle its
 tangent turns by at one, in degrees (- where it has none); with
 --knots, also the true corners kept, how many there are and the false
-corners, as above; last, the least radius of curvature of the curve, in TOLs (0 at a
-cusp).
+corners, as above; last, the least radius of curvature of the curve,
+in TOLs (0 at a cusp).
 --seed draws the noise from seed S instead of the corpus's own, 23;
 --points samples each contour at N points instead of 400."""
 import math
@@ -404,7 +404,8 @@ def splinefit(opt, pts, sigma):
 def check(which, truth, opt, heads=None, seed=23, npts=400):
     """The --check lines for contours which, fitted with opt; with the
     knot records' heads (their corners), the true corners kept and
-    wanted and the false ones too; the noise drawn from seed, npts points a contour."""
+    wanted and the false ones too; the noise drawn from seed, npts
+    points a contour."""
     rng = random.Random(seed)
     for k, t in enumerate(truth):
         pts, sigma, dense = noisy(k, t, rng, npts)
